@@ -1,0 +1,16 @@
+#pragma once
+// Subcommands of `spt`. Each registers its options and returns the action to run;
+// the action returns the process exit code (see docs/cli.md).
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace spt::cli {
+
+using Action = std::function<int()>;
+
+/// `spt convert`: meshes to .spt files, in parallel.
+Action add_convert_command(CLI::App& app);
+/// `spt info`: what a .spt file holds, and whether it is valid.
+Action add_info_command(CLI::App& app);
+
+} // namespace spt::cli

@@ -1,0 +1,172 @@
+// spt convert IN... [-o OUT.spt | --out-dir DIR] [options]
+#include "commands.hpp"
+#include "process_pool.hpp"
+#include "spt/convert.hpp"
+#include "spt/error.hpp"
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+namespace spt::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ConvertArgs {
+    std::vector<std::string> inputs;
+    std::string output, out_dir, bounds = "tight", strategy = "volume", tree_name = "default";
+    uint32_t leaf_size = 8;
+    double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
+    int jobs = 0;
+    bool force = false, quiet = false;
+};
+
+std::string fmt(double v, int prec = 2) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(prec) << v;
+    return s.str();
+}
+
+// Converts one file; runs in a worker process. Prints one summary line and the report.
+int convert_one(const std::string& in, const std::string& out, const ConvertArgs& a) {
+    const auto t0 = std::chrono::steady_clock::now();
+    ImportedMesh m = import_mesh(in);
+    ConvertOptions opt;
+    opt.tree_name = a.tree_name;
+    opt.build.leaf_size = a.leaf_size;
+    opt.build.strategy = a.strategy == "median" ? SplitStrategy::Median : SplitStrategy::Volume;
+    opt.build.bounds = a.bounds == "paper" ? BoundsMethod::Paper : BoundsMethod::Tight;
+    opt.build.radius.fixed = float(a.radius);
+    opt.build.radius.scale = float(a.radius_scale);
+    if (a.tolerance > 0) opt.tolerance = a.tolerance;
+    ConvertStats st;
+    const SptDocument doc = make_document(m.mesh, opt, &st);
+    save_spt(doc, out);
+    const SamplingTree& t = doc.trees.front();
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const auto& r = m.report;
+    std::cerr << in << " -> " << out << ": " << r.vertices << " vertices, " << r.faces << " faces; " << doc.samples.size()
+              << " samples (" << st.vertex_samples << " vertex, " << st.face_samples << " face); tree '" << t.name()
+              << "': " << t.node_count() << " nodes, " << t.active_nodes().size() << " active, depth " << t.depth()
+              << "; " << fmt(secs) << " s\n";
+    for (const auto& f : r.fixes) std::cerr << "  fixed: " << f << "\n";
+    for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
+    if (opt.tolerance)
+        std::cerr << "  tolerance " << a.tolerance << ": " << st.tolerance_rounds << " round(s), worst predicted gap "
+                  << st.worst_predicted_gap << "\n";
+    return 0;
+}
+
+std::string output_for(const std::string& in, const ConvertArgs& a) {
+    if (!a.output.empty()) return a.output;
+    const fs::path stem = fs::path(in).stem();
+    if (!a.out_dir.empty()) return (fs::path(a.out_dir) / stem).string() + ".spt";
+    return (fs::path(in).parent_path() / stem).string() + ".spt";
+}
+
+void draw_progress(size_t done, size_t total, size_t failed) {
+    const int width = 30;
+    const int filled = total ? int(width * done / total) : width;
+    std::cerr << "\r[" << std::string(size_t(filled), '#') << std::string(size_t(width - filled), '.') << "] " << done
+              << "/" << total << " files, " << failed << " failed" << std::flush;
+}
+
+int run_convert(const ConvertArgs& a) {
+    if (!a.output.empty() && a.inputs.size() != 1)
+        throw Error(ErrorKind::Usage, "-o names one output file; with " + std::to_string(a.inputs.size()) +
+                                          " inputs use --out-dir DIR");
+    if (!a.out_dir.empty()) {
+        std::error_code ec;
+        fs::create_directories(a.out_dir, ec);
+        if (!fs::is_directory(a.out_dir))
+            throw Error(ErrorKind::CannotWrite, a.out_dir + ": cannot create the output directory");
+    }
+    std::vector<std::string> outputs;
+    std::map<std::string, std::string> claimed;
+    for (const auto& in : a.inputs) {
+        outputs.push_back(output_for(in, a));
+        const std::string key = fs::weakly_canonical(outputs.back()).string();
+        if (claimed.count(key))
+            throw Error(ErrorKind::Usage, in + " and " + claimed[key] + " would both be written to " + outputs.back());
+        claimed[key] = in;
+    }
+    const int jobs = a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    const bool tty = ::isatty(2) && !a.quiet;
+    const auto t0 = std::chrono::steady_clock::now();
+    size_t converted = 0, failed = 0;
+    int worst = 0;
+    // Each worker may use at most 3/4 of the memory, shared among the workers.
+    const size_t phys = size_t(::sysconf(_SC_PHYS_PAGES)) * size_t(::sysconf(_SC_PAGE_SIZE));
+    const size_t limit = std::max<size_t>(size_t(1) << 30, phys / 4 * 3 / size_t(jobs));
+    std::vector<std::string> failures;
+    auto work = [&](size_t i) -> int {
+        const std::string& out = outputs[i];
+        if (!a.force && fs::exists(out)) {
+            std::cerr << a.inputs[i] << ": " << out << " exists; use --force to overwrite\n";
+            return 3;
+        }
+        try {
+            return convert_one(a.inputs[i], out, a);
+        } catch (const Error& e) {
+            std::cerr << e.what() << "\n";
+            return int(e.kind());
+        }
+    };
+    auto done = [&](size_t i, const JobOutcome& o) {
+        if (o.exit_code == 0) ++converted;
+        else ++failed, worst = std::max(worst, o.exit_code);
+        std::string msg = o.messages;
+        if (!o.abnormal.empty()) msg += a.inputs[i] + ": " + o.abnormal + "\n";
+        if (o.exit_code != 0) {
+            std::string first = msg.substr(0, msg.find('\n'));
+            failures.push_back(first);
+        }
+        if (tty) std::cerr << "\r\033[K";
+        if (!a.quiet || o.exit_code != 0) std::cerr << (o.exit_code ? "FAILED " : "") << msg;
+        if (tty) draw_progress(converted + failed, a.inputs.size(), failed);
+    };
+    if (tty) draw_progress(0, a.inputs.size(), 0);
+    run_in_processes(a.inputs.size(), jobs, a.timeout, limit, work, done);
+    if (tty) std::cerr << "\n";
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::cerr << "converted " << converted << ", failed " << failed << ", " << fmt(secs) << " s (" << jobs
+              << " job" << (jobs > 1 ? "s" : "") << ")\n";
+    return worst;
+}
+
+} // namespace
+
+Action add_convert_command(CLI::App& app) {
+    auto a = std::make_shared<ConvertArgs>();
+    CLI::App* c = app.add_subcommand("convert", "Convert meshes to .spt sampling-tree files (in parallel)");
+    c->add_option("inputs", a->inputs, "Mesh files (any format assimp reads)")->required();
+    auto* o = c->add_option("-o,--output", a->output, "Output .spt file (one input only)");
+    c->add_option("--out-dir", a->out_dir, "Directory for outputs (DIR/<name>.spt)")->excludes(o);
+    c->add_option("--leaf-size", a->leaf_size, "Split until an active node holds at most N samples")
+        ->check(CLI::Range(1u, 1u << 20));
+    c->add_option("--radius", a->radius, "Sampling-sphere radius for every node, model units (default: from spacing)")
+        ->check(CLI::PositiveNumber);
+    c->add_option("--radius-scale", a->radius_scale, "Default radius = scale x median sample spacing of the node")
+        ->check(CLI::PositiveNumber);
+    c->add_option("--tolerance", a->tolerance, "Add face samples so no surface gap is deeper than EPS (model units)")
+        ->check(CLI::PositiveNumber);
+    c->add_option("--bounds", a->bounds, "Bounding spheres: tight (contain every sampling sphere) or paper")
+        ->check(CLI::IsMember({"tight", "paper"}));
+    c->add_option("--strategy", a->strategy, "Automatic split: volume (min. children's sphere volume) or median")
+        ->check(CLI::IsMember({"volume", "median"}));
+    c->add_option("--tree-name", a->tree_name, "Name of the tree in the file");
+    c->add_option("-j,--jobs", a->jobs, "Files converted at once (default: all cores)")->check(CLI::Range(1, 1024));
+    c->add_option("--timeout", a->timeout, "Give up on one file after this many seconds (0: never)")
+        ->check(CLI::NonNegativeNumber);
+    c->add_flag("-f,--force", a->force, "Overwrite existing outputs");
+    c->add_flag("-q,--quiet", a->quiet, "Print only failures and the summary");
+    return [a] { return run_convert(*a); };
+}
+
+} // namespace spt::cli

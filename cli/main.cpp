@@ -1,0 +1,46 @@
+// spt: command-line front end. Messages go to stderr; results to stdout or files.
+// Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write (docs/cli.md).
+#include "commands.hpp"
+#include "spt/error.hpp"
+#include <iostream>
+#include <map>
+
+int main(int argc, char** argv) {
+    CLI::App app{"spt: collision detection with sampling trees"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "spt 0.1.0");
+    std::map<CLI::App*, spt::cli::Action> actions;
+    auto add = [&](spt::cli::Action (*make)(CLI::App&)) {
+        const size_t before = app.get_subcommands({}).size();
+        spt::cli::Action a = make(app);
+        actions[app.get_subcommands({})[before]] = std::move(a);
+    };
+    add(spt::cli::add_convert_command);
+    add(spt::cli::add_info_command);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "spt: " << e.what() << "\n(run 'spt --help' or 'spt COMMAND --help')\n";
+        return 1;
+    }
+    try {
+        for (auto& [sub, action] : actions)
+            if (sub->parsed()) return action();
+    } catch (const spt::Error& e) {
+        std::cerr << "spt: error: " << e.what() << "\n";
+        return int(e.kind());
+    } catch (const std::bad_alloc&) {
+        std::cerr << "spt: error: out of memory\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "spt: error: " << e.what() << "\n";
+        return 2;
+    }
+    return 1;
+}

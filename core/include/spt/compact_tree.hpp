@@ -1,0 +1,58 @@
+#pragma once
+/// The query layout of a sampling tree: nodes in depth-first order in one array
+/// (left child follows its parent, the right child is an index), sampling spheres
+/// of each active node as a contiguous range of structure-of-arrays columns, so a
+/// query streams 8 spheres at a time. Size is linear in the samples whatever the
+/// tree's shape. Object frame, float32 model units.
+#include "spt/sampling_tree.hpp"
+#include <cstdint>
+#include <vector>
+
+namespace spt {
+
+/// One node of the query layout (32 bytes).
+struct CompactNode {
+    float center[3];   ///< bounding-sphere centre
+    float bv_radius;   ///< bounding-sphere radius
+    float ss_radius;   ///< sampling-sphere radius of the node's spheres
+    uint32_t first;    ///< inner node: index of the right child; active node: first sphere
+    uint32_t count;    ///< number of spheres; 0 for an inner node
+    uint32_t tree_node; ///< index of the node in SamplingTree::nodes() order
+    /// True for an active node (a leaf with spheres).
+    bool is_active() const { return count != 0; }
+};
+static_assert(sizeof(CompactNode) == 32, "CompactNode must stay 32 bytes");
+
+/// Contiguous, SIMD-friendly copy of a tree for queries; immutable once built.
+class CompactTree {
+public:
+    CompactTree() = default;
+    /// Lays out `tree` over `samples`; sphere centres are p - r*n with the node's radius.
+    CompactTree(const SamplingTree& tree, const SampleSet& samples);
+
+    /// Nodes, root first, depth-first.
+    const std::vector<CompactNode>& nodes() const { return nodes_; }
+    /// Sphere centre columns; each padded by 8 so 8-wide loads never read past the end.
+    const float* x() const { return x_.data(); }
+    const float* y() const { return y_.data(); }
+    const float* z() const { return z_.data(); }
+    /// Sample normals as snorm8 columns (value/127).
+    const int8_t* nx() const { return nx_.data(); }
+    const int8_t* ny() const { return ny_.data(); }
+    const int8_t* nz() const { return nz_.data(); }
+    /// Sample index (into the SampleSet) of each sphere.
+    const uint32_t* sample_index() const { return sample_index_.data(); }
+    /// Number of spheres.
+    size_t sphere_count() const { return sphere_count_; }
+    /// Bytes held by the layout.
+    size_t memory_bytes() const;
+
+private:
+    std::vector<CompactNode> nodes_;
+    std::vector<float> x_, y_, z_;
+    std::vector<int8_t> nx_, ny_, nz_;
+    std::vector<uint32_t> sample_index_;
+    size_t sphere_count_ = 0;
+};
+
+} // namespace spt

@@ -1,0 +1,29 @@
+#pragma once
+/// Errors raised by the spt library. Every error names what failed and why;
+/// the command-line tools map the kind to a documented exit code.
+#include <stdexcept>
+#include <string>
+
+namespace spt {
+
+/// What kind of failure an Error is; values are the command-line exit codes.
+enum class ErrorKind : int { Usage = 1, BadInput = 2, CannotWrite = 3 };
+
+/// Exception carrying a kind and a message that names the file and the problem.
+class Error : public std::runtime_error {
+public:
+    /// Makes an error of `kind` with a complete, user-facing message.
+    Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+    /// The kind of failure; also the process exit code for command-line tools.
+    ErrorKind kind() const { return kind_; }
+
+private:
+    ErrorKind kind_;
+};
+
+/// Throws Error(BadInput) with "path: message".
+[[noreturn]] inline void throw_bad_input(const std::string& path, const std::string& message) {
+    throw Error(ErrorKind::BadInput, path.empty() ? message : path + ": " + message);
+}
+
+} // namespace spt

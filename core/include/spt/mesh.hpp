@@ -1,0 +1,73 @@
+#pragma once
+/// Triangle meshes as spt uses them: welded, indexed, consistently wound,
+/// with angle-weighted vertex normals. Units are the model's own; the frame
+/// is the file's root frame with every node transform applied.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace spt {
+
+using Triangle = std::array<uint32_t, 3>;
+
+/// An indexed triangle mesh in its own (object) frame.
+struct TriangleMesh {
+    std::string name;                       ///< file name the mesh came from (no directory)
+    std::vector<Eigen::Vector3d> positions; ///< welded vertex positions, model units
+    std::vector<Triangle> triangles;        ///< counter-clockwise seen from outside, after fixes
+    std::vector<Eigen::Vector3d> normals;   ///< unit outward vertex normals; zero where !normal_valid
+    std::vector<uint8_t> normal_valid;      ///< 1 where the vertex has a computable normal
+    std::vector<uint32_t> welded_index;     ///< for each vertex as the file had it, its welded vertex
+
+    /// Axis-aligned bounds of the vertex positions (min, max); zero box if empty.
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> bounds() const;
+    /// Length of the bounding-box diagonal, model units.
+    double diagonal() const;
+    /// Stable 64-bit hash of positions (as float32) and triangles; identifies the mesh in .spt files.
+    uint64_t content_hash() const;
+};
+
+/// What import found and fixed. Counts refer to the welded mesh.
+struct ImportReport {
+    size_t file_vertices = 0;         ///< vertices before welding (all meshes of the file)
+    size_t vertices = 0;              ///< after welding
+    size_t faces = 0;                 ///< triangles kept
+    size_t welded = 0;                ///< file_vertices - vertices
+    size_t degenerate_faces = 0;      ///< zero-area or repeated-index faces (kept, ignored for normals)
+    size_t skipped_primitives = 0;    ///< points and lines dropped by import
+    size_t boundary_edges = 0;        ///< edges used by one face
+    size_t nonmanifold_edges = 0;     ///< edges used by three or more faces
+    size_t components = 0;            ///< face-connected components
+    bool closed = false;              ///< no boundary and no non-manifold edges
+    size_t flipped_faces = 0;         ///< faces re-wound to agree with their neighbours
+    size_t inverted_components = 0;   ///< closed components turned right side out
+    size_t vertices_without_normal = 0; ///< left out of sampling
+    std::vector<std::string> fixes;   ///< one sentence per fix applied
+    std::vector<std::string> warnings; ///< one sentence per problem left in place
+};
+
+/// A mesh and the report of how it was read.
+struct ImportedMesh {
+    TriangleMesh mesh;
+    ImportReport report;
+};
+
+/// Options for import_mesh.
+struct ImportOptions {
+    double weld_tolerance = 1e-6; ///< weld distance, as a fraction of the bounding-box diagonal
+    bool fix_orientation = true;  ///< re-wind inconsistent faces, turn inside-out closed parts around
+};
+
+/// Reads every mesh of a file assimp understands, applies node transforms, welds,
+/// fixes orientation and computes normals. Throws Error(BadInput) naming the file.
+ImportedMesh import_mesh(const std::string& path, const ImportOptions& options = {});
+
+/// Welds, checks topology, fixes orientation and computes normals of raw triangles
+/// (as import_mesh does after reading). `name` is used in messages.
+ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positions,
+                          std::vector<Triangle> triangles, const ImportOptions& options = {});
+
+} // namespace spt

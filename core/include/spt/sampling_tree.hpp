@@ -1,0 +1,105 @@
+#pragma once
+/// The sampling tree (paper §3-3, §3-4-1): a binary tree over the samples of a mesh.
+/// Every node has a bounding sphere; only active nodes (the leaves) hold sample
+/// indices and have their sampling spheres tested. All geometry is in the mesh's
+/// object frame, model units.
+#include "spt/node_id.hpp"
+#include "spt/samples.hpp"
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace spt {
+
+/// One node, with the fields of the paper's CNode.
+struct TreeNode {
+    NodeId id = root_id();
+    Eigen::Vector3f center = Eigen::Vector3f::Zero(); ///< bounding-sphere centre
+    float bv_radius = 0;   ///< bounding-sphere radius
+    float ss_radius = 0;   ///< sampling-sphere radius (for an inner node: the largest below it)
+    bool active = true;    ///< a leaf whose sampling spheres are tested
+    std::vector<uint32_t> samples; ///< sorted sample indices; empty unless active
+};
+
+/// How a node's bounding sphere is made.
+enum class BoundsMethod {
+    Tight, ///< contains every sampling sphere below the node (default, conservative)
+    Paper, ///< centre of the node's sample box, radius half its longest side (paper §3-4-1)
+};
+
+/// How a node's sampling-sphere radius is chosen.
+struct RadiusRule {
+    float fixed = 0;     ///< > 0: every node uses this radius (model units)
+    float scale = 1.0f;  ///< otherwise: scale x median sample spacing of the node
+};
+
+/// Why a split or merge was refused.
+struct EditResult {
+    bool ok = true;
+    std::string reason; ///< empty when ok
+    explicit operator bool() const { return ok; }
+};
+
+/// A named sampling tree over a SampleSet that the caller keeps alive alongside.
+class SamplingTree {
+public:
+    /// A tree whose root holds every one of `sample_count` samples.
+    SamplingTree(std::string name, uint32_t sample_count);
+    /// A tree from explicit nodes (e.g. a loaded file); call validate() before use.
+    SamplingTree(std::string name, std::vector<TreeNode> nodes);
+
+    /// The tree's name, unique within a file.
+    const std::string& name() const { return name_; }
+    /// Renames the tree.
+    void set_name(std::string name) { name_ = std::move(name); }
+
+    /// Node by id, or nullptr.
+    const TreeNode* find(NodeId id) const;
+    /// All nodes in increasing id order.
+    std::vector<const TreeNode*> nodes() const;
+    /// Active nodes in increasing id order.
+    std::vector<const TreeNode*> active_nodes() const;
+    /// Number of nodes.
+    size_t node_count() const { return nodes_.size(); }
+    /// Deepest node depth (root is 0).
+    int depth() const;
+
+    /// Paper's split: left = node ∩ selection, right = node − left. The node must be
+    /// active; both parts must be non-empty. Children get radii by `rule` and every
+    /// bounding sphere on the path to the root is refreshed.
+    EditResult split(NodeId node, const std::vector<uint32_t>& selection, const SampleSet& samples,
+                     const RadiusRule& rule = {}, BoundsMethod bounds = BoundsMethod::Tight);
+    /// Inverse of split: the node becomes active again with every sample below it.
+    EditResult merge(NodeId node, const SampleSet& samples, const RadiusRule& rule = {},
+                     BoundsMethod bounds = BoundsMethod::Tight);
+
+    /// Sets every active node's radius by `rule` (inner nodes: largest below).
+    void assign_radii(const SampleSet& samples, const RadiusRule& rule);
+    /// Recomputes every bounding sphere, leaves first.
+    void compute_bounds(const SampleSet& samples, BoundsMethod method);
+
+    /// Checks structure against `sample_count`: ids form a tree, every sample is in
+    /// exactly one active node, values are finite and radii positive. Empty when valid.
+    std::string validate(uint32_t sample_count) const;
+
+    /// Mutable node access for builders and loaders.
+    TreeNode* find_mutable(NodeId id);
+    /// Inserts or replaces a node (builders and loaders).
+    void put(TreeNode node);
+
+private:
+    void refresh_path(NodeId from, const SampleSet& samples, BoundsMethod method);
+    void remove_subtree(NodeId id);
+    std::string name_;
+    std::map<NodeId, TreeNode> nodes_;
+};
+
+/// Radius that `rule` gives a node holding `members`.
+float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples, const RadiusRule& rule);
+
+/// Bounding sphere of the sampling spheres of `members` under `method`.
+void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const SampleSet& samples,
+                   BoundsMethod method);
+
+} // namespace spt

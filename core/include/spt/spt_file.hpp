@@ -1,0 +1,47 @@
+#pragma once
+/// The .spt file: samples of one mesh and any number of named sampling trees over
+/// them. Format in docs/spt-format.md.
+#include "spt/sampling_tree.hpp"
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace spt {
+
+/// Identity of the mesh a document was made from.
+struct MeshInfo {
+    std::string name;          ///< source file name
+    uint32_t vertex_count = 0; ///< welded vertex count
+    uint32_t triangle_count = 0;
+    uint64_t hash = 0;         ///< TriangleMesh::content_hash()
+    double diagonal = 0;       ///< bounding-box diagonal, model units
+};
+
+/// Everything a .spt file holds.
+struct SptDocument {
+    MeshInfo mesh;
+    SampleSet samples;
+    std::vector<SamplingTree> trees;
+
+    /// Tree by name, or nullptr.
+    const SamplingTree* tree(const std::string& name) const;
+    /// Problems with the document as a whole (duplicate names, invalid trees); empty if valid.
+    std::string validate() const;
+};
+
+/// Current format version written by save_spt.
+constexpr uint32_t kSptVersion = 1;
+
+/// Serialises a document to bytes (little-endian, checksummed).
+std::vector<uint8_t> encode_spt(const SptDocument& doc);
+/// Parses and validates bytes; throws Error(BadInput) "path: byte N: problem".
+SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& path = "");
+/// Writes atomically (temporary file, then rename). Throws Error(CannotWrite).
+void save_spt(const SptDocument& doc, const std::string& path);
+/// Reads and validates a file. Throws Error(BadInput) naming the file and byte offset.
+SptDocument load_spt(const std::string& path);
+
+/// Checks that `mesh` is the mesh `info` describes; empty if it is, else the mismatch.
+std::string check_mesh_matches(const MeshInfo& info, const TriangleMesh& mesh);
+
+} // namespace spt

@@ -1,0 +1,13 @@
+#pragma once
+// Bounding spheres over a contiguous run of sampling spheres.
+#include "miniball.hpp"
+#include "spt/sampling_tree.hpp"
+
+namespace spt::detail {
+
+/// Sets node.center/bv_radius from n sampling spheres (centres c, radii r, surface points p).
+/// `hint` (may be empty) is a ball known to contain them all, e.g. the children's merged ball.
+void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const Eigen::Vector3f* p, size_t n,
+               const Ball& hint, BoundsMethod method);
+
+} // namespace spt::detail

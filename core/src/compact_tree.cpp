@@ -1,0 +1,68 @@
+#include "spt/compact_tree.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt {
+namespace {
+
+int8_t to_snorm8(float v) { return int8_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 127.0f)); }
+
+} // namespace
+
+CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) {
+    const auto all = tree.nodes();
+    auto index_of = [&](NodeId id) {
+        auto it = std::lower_bound(all.begin(), all.end(), id, [](const TreeNode* n, NodeId v) { return n->id < v; });
+        return uint32_t(it - all.begin());
+    };
+    size_t total = 0;
+    for (const TreeNode* n : all) total += n->samples.size();
+    const size_t padded = total + 8;
+    x_.assign(padded, 0), y_.assign(padded, 0), z_.assign(padded, 0);
+    nx_.assign(padded, 0), ny_.assign(padded, 0), nz_.assign(padded, 0);
+    sample_index_.assign(total, 0);
+    nodes_.reserve(all.size());
+    // Explicit stack: a one-sided tree can be 62 levels deep, recursion is fine, but
+    // iteration keeps the right-child fix-up in one place.
+    std::vector<std::pair<NodeId, int64_t>> stack{{root_id(), -1}}; // (node, parent slot awaiting right index)
+    size_t sphere = 0;
+    while (!stack.empty()) {
+        auto [id, patch] = stack.back();
+        stack.pop_back();
+        const TreeNode* n = tree.find(id);
+        if (!n) continue;
+        if (patch >= 0) nodes_[size_t(patch)].first = uint32_t(nodes_.size());
+        CompactNode c{};
+        c.center[0] = n->center.x(), c.center[1] = n->center.y(), c.center[2] = n->center.z();
+        c.bv_radius = n->bv_radius;
+        c.ss_radius = n->ss_radius;
+        c.tree_node = index_of(id);
+        const size_t slot = nodes_.size();
+        if (n->active) {
+            c.first = uint32_t(sphere);
+            c.count = uint32_t(n->samples.size());
+            for (uint32_t s : n->samples) {
+                const Eigen::Vector3f ctr = sphere_center(samples.points[s], samples.normals[s], n->ss_radius);
+                x_[sphere] = ctr.x(), y_[sphere] = ctr.y(), z_[sphere] = ctr.z();
+                nx_[sphere] = to_snorm8(samples.normals[s].x());
+                ny_[sphere] = to_snorm8(samples.normals[s].y());
+                nz_[sphere] = to_snorm8(samples.normals[s].z());
+                sample_index_[sphere] = s;
+                ++sphere;
+            }
+            nodes_.push_back(c);
+        } else {
+            nodes_.push_back(c);
+            stack.push_back({right_child(id), int64_t(slot)});
+            stack.push_back({left_child(id), -1});
+        }
+    }
+    sphere_count_ = sphere;
+}
+
+size_t CompactTree::memory_bytes() const {
+    return nodes_.capacity() * sizeof(CompactNode) + (x_.capacity() + y_.capacity() + z_.capacity()) * sizeof(float) +
+           (nx_.capacity() + ny_.capacity() + nz_.capacity()) + sample_index_.capacity() * sizeof(uint32_t);
+}
+
+} // namespace spt

@@ -1,0 +1,19 @@
+#pragma once
+// Smallest enclosing sphere of a few points (Welzl), for leaves whose spheres share a radius.
+#include <Eigen/Core>
+#include <vector>
+
+namespace spt::detail {
+
+struct Ball {
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    double radius = -1; // empty
+};
+
+/// Exact smallest ball containing `points`; expected linear time, deterministic order.
+Ball smallest_ball(std::vector<Eigen::Vector3d> points);
+
+/// Smallest ball containing two balls.
+Ball merge_balls(const Ball& a, const Ball& b);
+
+} // namespace spt::detail
