@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 #include <thread>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace spt::cli {
@@ -31,6 +32,13 @@ std::string fmt(double v, int prec = 2) {
     std::ostringstream s;
     s << std::fixed << std::setprecision(prec) << v;
     return s.str();
+}
+
+// Peak resident memory of this process so far; a worker converts one file, so it is that file's.
+long peak_mib() {
+    rusage u{};
+    ::getrusage(RUSAGE_SELF, &u);
+    return u.ru_maxrss / 1024;
 }
 
 // Converts one file; runs in a worker process. Prints one summary line and the report.
@@ -54,12 +62,16 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     std::cerr << in << " -> " << out << ": " << r.vertices << " vertices, " << r.faces << " faces; " << doc.samples.size()
               << " samples (" << st.vertex_samples << " vertex, " << st.face_samples << " face); tree '" << t.name()
               << "': " << t.node_count() << " nodes, " << t.active_nodes().size() << " active, depth " << t.depth()
-              << "; " << fmt(secs) << " s\n";
+              << "; " << fmt(secs) << " s, peak memory " << peak_mib() << " MiB\n";
     for (const auto& f : r.fixes) std::cerr << "  fixed: " << f << "\n";
     for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
-    if (opt.tolerance)
-        std::cerr << "  tolerance " << a.tolerance << ": " << st.tolerance_rounds << " round(s), worst predicted gap "
-                  << st.worst_predicted_gap << "\n";
+    const double diag = m.mesh.diagonal();
+    if (opt.tolerance && !std::isfinite(st.worst_predicted_gap))
+        std::cerr << "  warning: the tree gave some face samples smaller spheres than assumed; gaps may exceed "
+                  << a.tolerance << "\n";
+    if (!opt.tolerance && st.worst_predicted_gap > 0.01 * diag)
+        std::cerr << "  warning: vertex samples leave the surface uncovered up to " << st.worst_predicted_gap << " ("
+                  << fmt(100 * st.worst_predicted_gap / diag) << "% of the diagonal); --tolerance EPS adds face samples\n";
     return 0;
 }
 

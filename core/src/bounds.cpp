@@ -5,8 +5,17 @@
 namespace spt::detail {
 namespace {
 
-// Largest |centre - c_i| + r_i: the radius a ball around `centre` needs.
-double enclosing_radius(const Eigen::Vector3d& centre, const Eigen::Vector3f* c, const float* r, size_t n) {
+// Largest |centre - c_i| + r_i: the radius a ball around `centre` needs. With equal radii
+// (every leaf, most inner nodes) one square root per run is enough.
+double enclosing_radius(const Eigen::Vector3d& centre, const Eigen::Vector3f* c, const float* r, size_t n,
+                        bool equal_radii) {
+    if (equal_radii) {
+        // Differences in double: in float they err by the coordinates' magnitude, which can
+        // far exceed a small node's radius.
+        double d2 = 0;
+        for (size_t i = 0; i < n; ++i) d2 = std::max(d2, (c[i].cast<double>() - centre).squaredNorm());
+        return std::sqrt(d2) + r[0];
+    }
     double best = 0;
     for (size_t i = 0; i < n; ++i) best = std::max(best, (c[i].cast<double>() - centre).norm() + r[i]);
     return best;
@@ -29,28 +38,32 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
         return;
     }
     // Tight: try a few centres, each with the exact radius that encloses every sphere.
+    // Centres are rounded to float first, so the radius measured is the stored centre's.
     std::vector<Eigen::Vector3d> candidates;
-    Eigen::Vector3d lo = c[0].cast<double>(), hi = lo;
-    for (size_t i = 1; i < n; ++i) lo = lo.cwiseMin(c[i].cast<double>()), hi = hi.cwiseMax(c[i].cast<double>());
-    candidates.push_back((lo + hi) / 2);
-    if (hint.radius >= 0) candidates.push_back(hint.center);
+    auto add = [&](const Eigen::Vector3d& x) {
+        // Scalar casts: GCC 12 with Eigen 3.4 was seen folding x.cast<float>().cast<double>()
+        // into x at -O2, which left the stored centre off the measured one.
+        volatile float fx = float(x.x()), fy = float(x.y()), fz = float(x.z());
+        candidates.emplace_back(double(fx), double(fy), double(fz));
+    };
+    Eigen::Vector3f lo = c[0], hi = c[0];
+    for (size_t i = 1; i < n; ++i) lo = lo.cwiseMin(c[i]), hi = hi.cwiseMax(c[i]);
+    add(((lo + hi) / 2).cast<double>());
+    if (hint.radius >= 0) add(hint.center);
     const bool equal_radii = std::all_of(r, r + n, [&](float x) { return x == r[0]; });
-    if (n <= 64 && equal_radii) {
+    if (n <= 32 && equal_radii) {
         // Equal radii: the smallest ball of the centres grown by r is the smallest enclosing ball.
         std::vector<Eigen::Vector3d> pts(n);
         for (size_t i = 0; i < n; ++i) pts[i] = c[i].cast<double>();
-        candidates.push_back(smallest_ball(std::move(pts)).center);
+        add(smallest_ball(std::move(pts)).center);
     }
-    double best_r = INFINITY;
-    Eigen::Vector3d best_c = candidates[0];
+    double rad = INFINITY;
     for (const auto& cand : candidates) {
-        const double rad = enclosing_radius(cand, c, r, n);
-        if (rad < best_r) best_r = rad, best_c = cand;
+        const double cr = enclosing_radius(cand, c, r, n, equal_radii);
+        if (cr < rad) rad = cr, node.center = Eigen::Vector3f(float(cand.x()), float(cand.y()), float(cand.z()));
     }
-    node.center = best_c.cast<float>();
-    // Rounding to float may move the centre: measure again in float and round up.
-    double rad = 0;
-    for (size_t i = 0; i < n; ++i) rad = std::max(rad, double((c[i] - node.center).norm()) + r[i]);
+    // Measure once more from the stored centre: the bound must hold for what is stored.
+    rad = enclosing_radius(Eigen::Vector3d(node.center.x(), node.center.y(), node.center.z()), c, r, n, equal_radii);
     node.bv_radius = std::nextafter(float(rad * (1 + 1e-6)), INFINITY);
 }
 

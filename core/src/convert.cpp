@@ -16,18 +16,27 @@ MeshInfo info_of(const TriangleMesh& mesh) {
             mesh.diagonal()};
 }
 
-double mean_edge(const TriangleMesh& m, uint32_t f) {
-    const auto& t = m.triangles[f];
-    const auto &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
-    return ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0;
-}
-
-// Radius each face sample's leaf actually uses.
-std::vector<float> leaf_radius_of_samples(const SamplingTree& tree, size_t n) {
+// Radius each sample's active node actually uses.
+std::vector<float> radius_in_use(const SamplingTree& tree, size_t n) {
     std::vector<float> r(n, 0);
     for (const TreeNode* node : tree.active_nodes())
         for (uint32_t s : node->samples) r[s] = node->ss_radius;
     return r;
+}
+
+// Largest uncovered depth that vertex samples alone leave on a face: every point of a face
+// is within (longest edge)/sqrt(3) of a corner, whose sphere lies flat under it.
+double vertex_only_gap(const TriangleMesh& mesh, const SampleSet& s, const std::vector<float>& radius) {
+    std::vector<float> at_vertex(mesh.positions.size(), 0);
+    for (size_t i = 0; i < s.size(); ++i) at_vertex[s.source_index(i)] = radius[i];
+    double worst = 0;
+    for (const auto& t : mesh.triangles) {
+        const auto &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+        const double rho = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / std::sqrt(3.0);
+        const double r = std::min({at_vertex[t[0]], at_vertex[t[1]], at_vertex[t[2]]});
+        worst = std::max(worst, std::sqrt(rho * rho + r * r) - r);
+    }
+    return worst;
 }
 
 } // namespace
@@ -35,8 +44,16 @@ std::vector<float> leaf_radius_of_samples(const SamplingTree& tree, size_t n) {
 SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats) {
     ConvertStats local;
     ConvertStats& st = stats ? *stats : local;
+    if (options.tolerance && (!(*options.tolerance > 0) || !std::isfinite(*options.tolerance)))
+        throw Error(ErrorKind::Usage, "--tolerance must be a positive length");
+    const double protrusion =
+        options.protrusion ? *options.protrusion
+                           : (options.tolerance ? *options.tolerance : kDefaultProtrusion * mesh.diagonal());
+    if (!(protrusion > 0) || !std::isfinite(protrusion)) throw Error(ErrorKind::Usage, "protrusion must be positive");
+
     auto t0 = Clock::now();
-    const SampleSet vertex_samples = sample_vertices(mesh);
+    const RadiusLimiter limiter(mesh, protrusion);
+    const SampleSet vertex_samples = sample_vertices(mesh, limiter);
     if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
     st.vertex_samples = vertex_samples.size();
     const RadiusRule& rule = options.build.radius;
@@ -49,53 +66,29 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
         t0 = Clock::now();
         doc.trees.push_back(build_tree(options.tree_name, doc.samples, options.build));
         st.build_seconds = seconds_since(t0);
+        st.worst_predicted_gap = vertex_only_gap(mesh, doc.samples, radius_in_use(doc.trees[0], doc.samples.size()));
         return doc;
     }
 
+    // The builder keeps active nodes radius-coherent, so a node's radius is at least
+    // 1/kRadiusClassRatio of each member's own radius: faces are sampled for that radius.
     const double eps = *options.tolerance;
-    if (!(eps > 0) || !std::isfinite(eps)) throw Error(ErrorKind::Usage, "--tolerance must be a positive length");
-    const size_t nt = mesh.triangles.size();
-    std::vector<uint32_t> all(nt);
-    std::vector<double> gap(nt);
-    for (uint32_t f = 0; f < nt; ++f) {
-        all[f] = f;
-        // First guess of the radius a face will get: what the rule gives its own spacing.
-        const double r = rule.fixed > 0 ? rule.fixed : rule.scale * mean_edge(mesh, f);
-        gap[f] = max_face_sample_gap(r, eps);
-    }
-    // A node's radius depends on which samples share it, so check the radii the tree
-    // really gave and densify the faces that got a smaller one; a few rounds settle it.
-    constexpr int kMaxRounds = 6;
-    SamplingTree tree(options.tree_name, 0u);
-    for (int round = 1;; ++round) {
-        SampleSet s = vertex_samples;
-        add_face_samples(s, mesh, all, gap);
-        st.sample_seconds += seconds_since(t0);
-        t0 = Clock::now();
-        tree = build_tree(options.tree_name, s, options.build);
-        st.build_seconds += seconds_since(t0);
-        t0 = Clock::now();
-        st.tolerance_rounds = round;
-        const std::vector<float> radius = leaf_radius_of_samples(tree, s.size());
-        std::vector<double> used(nt, INFINITY);
-        for (size_t i = 0; i < s.size(); ++i)
-            if (s.is_face_sample(i)) used[s.source_index(i)] = std::min<double>(used[s.source_index(i)], radius[i]);
-        bool changed = false;
-        st.worst_predicted_gap = 0;
-        for (uint32_t f = 0; f < nt; ++f) {
-            if (!std::isfinite(used[f])) continue; // degenerate face: no samples
-            const double need = max_face_sample_gap(used[f], eps);
-            if (gap[f] > need * (1 + 1e-9)) {
-                gap[f] = need * 0.95;
-                changed = true;
-            }
-            st.worst_predicted_gap =
-                std::max(st.worst_predicted_gap, std::sqrt(gap[f] * gap[f] + used[f] * used[f]) - used[f]);
-        }
-        doc.samples = std::move(s);
-        if (!changed || round == kMaxRounds) break;
-    }
-    st.vertex_samples = vertex_samples.size();
+    SampleSet s = vertex_samples;
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+        add_face_samples(s, limiter, f, eps, rule, 1.0f / kRadiusClassRatio);
+    st.sample_seconds = seconds_since(t0);
+    t0 = Clock::now();
+    BuildOptions coherent = options.build;
+    coherent.radius_coherent = true;
+    SamplingTree tree = build_tree(options.tree_name, s, coherent);
+    st.build_seconds = seconds_since(t0);
+    // Check the assumption against the radii the tree gave.
+    const std::vector<float> used = radius_in_use(tree, s.size());
+    bool holds = true;
+    for (size_t i = vertex_samples.size(); i < s.size(); ++i)
+        holds = holds && used[i] >= rule.for_sample(s.spacing[i], s.max_radius[i]) / kRadiusClassRatio * (1 - 1e-6f);
+    st.worst_predicted_gap = holds ? eps : INFINITY;
+    doc.samples = std::move(s);
     st.face_samples = doc.samples.size() - vertex_samples.size();
     doc.trees.push_back(std::move(tree));
     return doc;

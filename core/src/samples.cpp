@@ -1,6 +1,9 @@
 #include "spt/samples.hpp"
+#include "triangle_bvh.hpp"
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <map>
 
 namespace spt {
 namespace {
@@ -38,14 +41,71 @@ Eigen::Vector3f decode_normal(uint32_t code) {
     return n.normalized();
 }
 
-void SampleSet::add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t source, float s) {
+uint16_t encode_length(float v, bool round_down) {
+    if (!(v >= 0)) v = 0;
+    if (std::isinf(v)) return 0x7f80;
+    uint32_t bits;
+    std::memcpy(&bits, &v, 4);
+    if (!round_down) bits += 0x7fff + ((bits >> 16) & 1); // round half to even
+    return uint16_t(std::min<uint32_t>(bits >> 16, 0x7f80));
+}
+
+float decode_length(uint16_t code) {
+    const uint32_t bits = uint32_t(code) << 16;
+    float v;
+    std::memcpy(&v, &bits, 4);
+    return v;
+}
+
+void SampleSet::add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t source, float s, float r_max) {
     points.push_back(p);
     normals.push_back(decode_normal(encode_normal(n)));
     sources.push_back(source);
-    spacing.push_back(s);
+    spacing.push_back(decode_length(encode_length(s, false)));
+    max_radius.push_back(decode_length(encode_length(r_max, true)));
 }
 
-SampleSet sample_vertices(const TriangleMesh& mesh) {
+RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
+    : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion) {}
+
+RadiusLimiter::~RadiusLimiter() = default;
+
+bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r) const {
+    if (r <= protrusion_) return false;
+    const Eigen::Vector3d c = p - r * n;
+    Eigen::Vector3d q;
+    double d2;
+    uint32_t tri = 0;
+    // The tangent point p is at distance r; anything nearer says how far the sphere pokes out.
+    if (!bvh_->closest(c, r * r * (1 + 1e-9), q, d2, &tri)) return false;
+    if (std::sqrt(d2) < r - protrusion_) return true;
+    // A centre that has passed through a thin part lies outside the body: the sphere hangs
+    // out however far the nearest surface is. The sign comes from the vertex normals
+    // interpolated at the nearest point (the pseudo-normal at edges and corners).
+    const auto& t = mesh_.triangles[tri];
+    const Eigen::Vector3d a = mesh_.positions[t[0]], b = mesh_.positions[t[1]], cc = mesh_.positions[t[2]];
+    const Eigen::Vector3d fn = (b - a).cross(cc - a);
+    const double area2 = fn.squaredNorm();
+    if (!(area2 > 0)) return false;
+    const double wa = (b - q).cross(cc - q).dot(fn) / area2, wb = (cc - q).cross(a - q).dot(fn) / area2;
+    const Eigen::Vector3d nq = wa * mesh_.normals[t[0]] + wb * mesh_.normals[t[1]] + (1 - wa - wb) * mesh_.normals[t[2]];
+    return (c - q).dot(nq) > 1e-9 * r && (q - p).norm() > protrusion_;
+}
+
+float RadiusLimiter::limit(const Eigen::Vector3f& pf, const Eigen::Vector3f& nf, float r_max) const {
+    const Eigen::Vector3d p = pf.cast<double>(), n = nf.cast<double>();
+    // Protrusion grows with r (a centre that passes through a thin part counts as outside),
+    // so the largest allowed radius is found by bisection.
+    if (!protrudes(p, n, r_max)) return r_max;
+    double lo = std::min<double>(protrusion_, r_max), hi = r_max;
+    for (int i = 0; i < 20 && hi > lo * 1.01; ++i) {
+        const double mid = (lo + hi) / 2;
+        (protrudes(p, n, mid) ? hi : lo) = mid;
+    }
+    return float(lo);
+}
+
+SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter) {
     const size_t n = mesh.positions.size();
     std::vector<double> edge_sum(n, 0);
     std::vector<uint32_t> edge_count(n, 0);
@@ -58,10 +118,14 @@ SampleSet sample_vertices(const TriangleMesh& mesh) {
             ++edge_count[a], ++edge_count[b];
         }
     SampleSet s;
-    s.points.reserve(n), s.normals.reserve(n), s.sources.reserve(n), s.spacing.reserve(n);
+    for (auto* v : {&s.spacing, &s.max_radius}) v->reserve(n);
+    s.points.reserve(n), s.normals.reserve(n), s.sources.reserve(n);
     for (uint32_t v = 0; v < n; ++v) {
         if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
-        s.add(mesh.positions[v].cast<float>(), mesh.normals[v].cast<float>(), v, float(edge_sum[v] / edge_count[v]));
+        const float spacing = float(edge_sum[v] / edge_count[v]);
+        const Eigen::Vector3f p = mesh.positions[v].cast<float>();
+        const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
+        s.add(p, nrm, v, spacing, limiter.limit(p, nrm, kRadiusSearchScale * spacing));
     }
     return s;
 }
@@ -71,30 +135,75 @@ double max_face_sample_gap(double radius, double eps) {
     return std::sqrt(eps * eps + 2.0 * radius * eps);
 }
 
-void add_face_samples(SampleSet& samples, const TriangleMesh& mesh, const std::vector<uint32_t>& triangles,
-                      const std::vector<double>& max_gap) {
-    for (size_t i = 0; i < triangles.size(); ++i) {
-        const uint32_t f = triangles[i];
-        const auto& t = mesh.triangles[f];
-        const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
-        const Eigen::Vector3d fn = (b - a).cross(c - a);
-        if (!(fn.norm() > 0)) continue;
-        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-        // Any point of a triangle is within longest_edge/sqrt(3) of a corner; a grid of m
-        // divisions shrinks every sub-triangle by m.
-        const double h = std::max(max_gap[i], 1e-12);
-        const double m_real = std::ceil(longest / (std::sqrt(3.0) * h));
-        const int m = int(std::clamp(m_real, 1.0, 4096.0));
-        const Eigen::Vector3f normal = fn.normalized().cast<float>();
-        // Spacing stands for the mesh's own resolution (it sets default radii), not the grid's.
-        const float spacing = float(((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0);
-        for (int i1 = 0; i1 <= m; ++i1)
-            for (int i2 = 0; i1 + i2 <= m; ++i2) {
-                const double u = double(i1) / m, v = double(i2) / m;
-                const Eigen::Vector3d p = a + u * (b - a) + v * (c - a);
-                samples.add(p.cast<float>(), normal, f | kFaceSampleBit, spacing);
-            }
+namespace {
+
+// Adaptive sampling of one triangle on a dyadic barycentric grid: a sub-triangle is fine
+// when every point of it is close enough to one of its corners for that corner's sphere.
+struct FaceSampler {
+    static constexpr int kLevels = 20; // finest grid: 2^-20 of the triangle
+    static constexpr int64_t kGrid = int64_t(1) << kLevels;
+    SampleSet& out;
+    const RadiusLimiter& limiter;
+    uint32_t face;
+    Eigen::Vector3d a, b, c;
+    Eigen::Vector3f normal;
+    float spacing;
+    RadiusRule rule;
+    float factor;
+    double eps;
+    std::map<std::pair<int64_t, int64_t>, float> radius_at; // assumed radius of each corner sample
+
+    Eigen::Vector3d point(int64_t i, int64_t j) const {
+        return a + (double(i) / kGrid) * (b - a) + (double(j) / kGrid) * (c - a);
     }
+    float corner(int64_t i, int64_t j) {
+        auto it = radius_at.find({i, j});
+        if (it != radius_at.end()) return it->second;
+        const Eigen::Vector3f p = point(i, j).cast<float>();
+        const float cap = limiter.limit(p, normal, kRadiusSearchScale * spacing);
+        out.add(p, normal, face | kFaceSampleBit, spacing, cap);
+        const float r = factor * rule.for_sample(spacing, out.max_radius.back());
+        radius_at[{i, j}] = r;
+        return r;
+    }
+    // Longest-edge bisection follows the triangle's shape, so a long thin face is refined
+    // along its length only.
+    void refine(std::array<std::pair<int64_t, int64_t>, 3> v, int level) {
+        float r = INFINITY;
+        for (auto [i, j] : v) r = std::min(r, corner(i, j));
+        const Eigen::Vector3d p[3] = {point(v[0].first, v[0].second), point(v[1].first, v[1].second),
+                                      point(v[2].first, v[2].second)};
+        int k = 0; // edge k runs from v[k] to v[k+1]
+        double longest = 0;
+        for (int e = 0; e < 3; ++e) {
+            const double len = (p[(e + 1) % 3] - p[e]).norm();
+            if (len > longest) longest = len, k = e;
+        }
+        // Every point of a triangle is within (longest edge)/sqrt(3) of a corner.
+        const double rho = longest / std::sqrt(3.0);
+        if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
+        const auto a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
+        if (((a.first + b.first) | (a.second + b.second)) & 1) return; // finest grid reached
+        const std::pair<int64_t, int64_t> m{(a.first + b.first) / 2, (a.second + b.second) / 2};
+        refine({a, m, c}, level + 1);
+        refine({m, b, c}, level + 1);
+    }
+};
+
+} // namespace
+
+void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
+                      const RadiusRule& rule, float radius_factor) {
+    const TriangleMesh& mesh = limiter.mesh();
+    const auto& t = mesh.triangles[face];
+    const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    const Eigen::Vector3d fn = (b - a).cross(c - a);
+    if (!(fn.norm() > 0)) return;
+    // Spacing stands for the mesh's own resolution (it sets default radii), not the grid's.
+    const float spacing = float(((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0);
+    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), spacing, rule, radius_factor, eps, {}};
+    const int64_t g = FaceSampler::kGrid;
+    fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
 }
 
 } // namespace spt

@@ -52,10 +52,16 @@ int SamplingTree::depth() const {
 float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples, const RadiusRule& rule) {
     if (rule.fixed > 0) return rule.fixed;
     if (members.empty()) return 0;
+    // The median spacing makes neighbouring spheres overlap; the smallest allowed radius
+    // keeps every sphere of the node from poking out of the mesh.
     std::vector<float> s(members.size());
-    for (size_t i = 0; i < members.size(); ++i) s[i] = samples.spacing[members[i]];
-    std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
-    const float r = rule.scale * s[s.size() / 2];
+    float cap = INFINITY;
+    for (size_t i = 0; i < members.size(); ++i) {
+        s[i] = samples.spacing[members[i]];
+        if (!samples.max_radius.empty()) cap = std::min(cap, samples.max_radius[members[i]]);
+    }
+    std::nth_element(s.begin(), s.begin() + long(s.size() / 2), s.end());
+    const float r = std::min(rule.scale * s[s.size() / 2], cap);
     return r > 0 ? r : 1e-6f;
 }
 

@@ -66,7 +66,8 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc) {
         w.put(s.points[i].x()), w.put(s.points[i].y()), w.put(s.points[i].z());
         w.put(encode_normal(s.normals[i]));
         w.put(s.sources[i]);
-        w.put(s.spacing[i]);
+        w.put(encode_length(s.spacing[i], false));
+        w.put(encode_length(s.max_radius[i], true));
     }
     w.put(uint32_t(doc.trees.size()));
     for (const auto& tree : doc.trees) {
@@ -138,7 +139,8 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
     const auto count = r.get<uint32_t>("sample count");
     r.need(uint64_t(count) * kSampleBytes, std::to_string(count) + " samples");
     SampleSet& s = doc.samples;
-    s.points.resize(count), s.normals.resize(count), s.sources.resize(count), s.spacing.resize(count);
+    s.points.resize(count), s.normals.resize(count), s.sources.resize(count);
+    s.spacing.resize(count), s.max_radius.resize(count);
     for (uint32_t i = 0; i < count; ++i) {
         at = r.offset();
         const float x = r.get<float>("sample"), y = r.get<float>("sample"), z = r.get<float>("sample");
@@ -153,9 +155,10 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
             r.fail(at, "sample " + std::to_string(i) + " refers to " + (face ? "triangle " : "vertex ") + std::to_string(src) +
                            " beyond the mesh");
         at = r.offset();
-        s.spacing[i] = r.get<float>("sample spacing");
-        if (!std::isfinite(s.spacing[i]) || s.spacing[i] < 0)
-            r.fail(at, "sample " + std::to_string(i) + " has an invalid spacing");
+        s.spacing[i] = decode_length(r.get<uint16_t>("sample spacing"));
+        s.max_radius[i] = decode_length(r.get<uint16_t>("sample radius limit"));
+        if (!std::isfinite(s.spacing[i]) || s.spacing[i] < 0 || std::isnan(s.max_radius[i]) || s.max_radius[i] < 0)
+            r.fail(at, "sample " + std::to_string(i) + " has an invalid spacing or radius limit");
     }
 
     const auto tree_count = r.get<uint32_t>("tree count");

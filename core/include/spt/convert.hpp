@@ -11,15 +11,21 @@ namespace spt {
 struct ConvertOptions {
     BuildOptions build;              ///< tree shape, radius rule, bounds
     std::optional<double> tolerance; ///< model units; adds face samples so no gap is deeper
+    /// How far a sampling sphere may poke out of the mesh, model units. Default: the
+    /// tolerance if set, else kDefaultProtrusion x the mesh diagonal.
+    std::optional<double> protrusion;
     std::string tree_name = "default";
 };
+
+/// Default protrusion allowance as a fraction of the mesh diagonal: half of the 1% band
+/// in which the accuracy targets are set.
+constexpr double kDefaultProtrusion = 0.005;
 
 /// What make_document did beyond the document itself.
 struct ConvertStats {
     size_t vertex_samples = 0;
     size_t face_samples = 0;
-    int tolerance_rounds = 0;        ///< sampling rounds needed to meet the tolerance
-    double worst_predicted_gap = 0;  ///< largest flat-face gap the final radii allow (tolerance mode)
+    double worst_predicted_gap = 0;  ///< largest uncovered depth the final radii allow on a face, model units
     double sample_seconds = 0;
     double build_seconds = 0;
 };

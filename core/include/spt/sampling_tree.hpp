@@ -28,12 +28,6 @@ enum class BoundsMethod {
     Paper, ///< centre of the node's sample box, radius half its longest side (paper §3-4-1)
 };
 
-/// How a node's sampling-sphere radius is chosen.
-struct RadiusRule {
-    float fixed = 0;     ///< > 0: every node uses this radius (model units)
-    float scale = 1.0f;  ///< otherwise: scale x median sample spacing of the node
-};
-
 /// Why a split or merge was refused.
 struct EditResult {
     bool ok = true;

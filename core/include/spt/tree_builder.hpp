@@ -7,7 +7,7 @@ namespace spt {
 /// How the builder chooses a split.
 enum class SplitStrategy {
     Median, ///< median of the longest axis of the node's sample box
-    Volume, ///< binned plane that minimises the children's bounding-sphere volumes
+    Volume, ///< binned plane minimising the children's sphere volumes weighted by sample count (median near leaves)
 };
 
 /// Options for build_tree.
@@ -16,9 +16,13 @@ struct BuildOptions {
     SplitStrategy strategy = SplitStrategy::Volume;
     RadiusRule radius;                    ///< sampling-sphere radius rule
     BoundsMethod bounds = BoundsMethod::Tight;
+    /// Keep each active node's samples within one radius class (kRadiusClassRatio), so the
+    /// node radius is at least 1/ratio of every member's own: what tolerance sampling assumes.
+    bool radius_coherent = false;
 };
 
-/// Builds a tree over all samples; deterministic for equal input.
+/// Builds a tree over all samples; deterministic for equal input. Active nodes hold at most
+/// leaf_size samples (and one radius class if radius_coherent).
 SamplingTree build_tree(std::string name, const SampleSet& samples, const BuildOptions& options = {});
 
 } // namespace spt

@@ -1,0 +1,61 @@
+// Tree building after import, for meshes of 10k, 100k and 1M vertices (tori), one core.
+// Prints a Markdown table; docs/benchmarks.md quotes it with this command.
+#include "meshgen.hpp"
+#include "spt/compact_tree.hpp"
+#include "spt/convert.hpp"
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class F> double best_seconds(int reps, F&& f) {
+    double best = 1e30;
+    for (int i = 0; i < reps; ++i) {
+        const auto t0 = Clock::now();
+        f();
+        best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+    return best;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<int> sides = {100, 316, 1000}; // nu = nv: 10k, ~100k, 1M vertices
+    if (argc > 1 && std::strcmp(argv[1], "--quick") == 0) sides = {100, 316};
+    std::printf("| vertices | samples | strategy | sample (s) | build tree (s) | query layout (s) | "
+                "layout B/sample | .spt B/sample | depth |\n");
+    std::printf("|---:|---:|---|---:|---:|---:|---:|---:|---:|\n");
+    for (int side : sides) {
+        const auto raw = spt::meshgen::torus(1.0, 0.35, side, side);
+        const spt::ImportedMesh m = spt::meshgen::prepare(raw, "torus");
+        for (auto strategy : {spt::SplitStrategy::Volume, spt::SplitStrategy::Median}) {
+            spt::SampleSet samples;
+            const double t_sample = best_seconds(3, [&] {
+                const spt::RadiusLimiter limiter(m.mesh, spt::kDefaultProtrusion * m.mesh.diagonal());
+                samples = spt::sample_vertices(m.mesh, limiter);
+            });
+            spt::BuildOptions opt;
+            opt.strategy = strategy;
+            spt::SamplingTree tree("t", 0u);
+            const double t_build = best_seconds(3, [&] { tree = spt::build_tree("t", samples, opt); });
+            spt::CompactTree compact;
+            const double t_layout = best_seconds(3, [&] { compact = spt::CompactTree(tree, samples); });
+            spt::SptDocument doc;
+            doc.samples = samples;
+            doc.trees.push_back(tree);
+            const size_t file_bytes = spt::encode_spt(doc).size();
+            const double n = double(samples.size());
+            std::printf("| %zu | %zu | %s | %.3f | %.3f | %.3f | %.1f | %.1f | %d |\n", m.mesh.positions.size(),
+                        samples.size(), strategy == spt::SplitStrategy::Volume ? "volume" : "median", t_sample,
+                        t_build, t_layout, double(compact.memory_bytes()) / n, double(file_bytes) / n, tree.depth());
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,186 @@
+#include "meshgen.hpp"
+#include "spt/error.hpp"
+#include "spt/mesh.hpp"
+#include "test_support.hpp"
+#include <fstream>
+#include <gtest/gtest.h>
+
+using namespace spt;
+using spt::test::TempDir;
+
+namespace {
+
+double volume(const TriangleMesh& m) {
+    double v = 0;
+    for (const auto& t : m.triangles)
+        v += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6;
+    return v;
+}
+
+} // namespace
+
+TEST(MeshImport, UnindexedStlIsWeldedByPosition) {
+    TempDir dir("stl");
+    meshgen::write_stl(meshgen::box(1, 2, 3, 1), dir.file("box.stl"));
+    const ImportedMesh m = import_mesh(dir.file("box.stl"));
+    EXPECT_EQ(m.report.file_vertices, 36u); // 12 triangles x 3 corners
+    EXPECT_EQ(m.report.vertices, 8u);
+    EXPECT_EQ(m.report.welded, 28u);
+    EXPECT_EQ(m.mesh.welded_index.size(), 36u);
+    EXPECT_TRUE(m.report.closed);
+    EXPECT_EQ(m.report.components, 1u);
+    EXPECT_NEAR(volume(m.mesh), 6.0, 1e-6);
+}
+
+TEST(MeshImport, EveryWrittenFormatGivesTheSameMesh) {
+    TempDir dir("formats");
+    const auto raw = meshgen::torus(1.0, 0.3, 24, 12);
+    meshgen::write_obj(raw, dir.file("t.obj"));
+    meshgen::write_stl(raw, dir.file("t.stl"));
+    meshgen::write_ply(raw, dir.file("t.ply"));
+    {
+        std::ofstream off(dir.file("t.off"));
+        off << "OFF\n" << raw.positions.size() << " " << raw.triangles.size() << " 0\n";
+        for (const auto& p : raw.positions) off << p.x() << " " << p.y() << " " << p.z() << "\n";
+        for (const auto& t : raw.triangles) off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    }
+    for (const char* name : {"t.obj", "t.stl", "t.ply", "t.off"}) {
+        SCOPED_TRACE(name);
+        const ImportedMesh m = import_mesh(dir.file(name));
+        EXPECT_EQ(m.mesh.positions.size(), raw.positions.size());
+        EXPECT_EQ(m.mesh.triangles.size(), raw.triangles.size());
+        EXPECT_TRUE(m.report.closed);
+        EXPECT_EQ(m.report.flipped_faces, 0u);
+        EXPECT_GT(volume(m.mesh), 0);
+    }
+}
+
+TEST(MeshImport, NodeTransformsOfEveryMeshAreApplied) {
+    // A glTF scene with one triangle mesh used by two nodes at different translations.
+    TempDir dir("gltf");
+    const float tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const uint16_t idx[3] = {0, 1, 2};
+    {
+        std::ofstream bin(dir.file("tri.bin"), std::ios::binary);
+        bin.write(reinterpret_cast<const char*>(tri), sizeof tri);
+        bin.write(reinterpret_cast<const char*>(idx), sizeof idx);
+    }
+    std::ofstream(dir.file("two.gltf")) << R"({
+ "asset": {"version": "2.0"},
+ "scene": 0, "scenes": [{"nodes": [0, 1]}],
+ "nodes": [{"mesh": 0, "translation": [10, 0, 0]}, {"mesh": 0, "translation": [0, 5, 0]}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+ "buffers": [{"uri": "tri.bin", "byteLength": 42}],
+ "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+ "accessors": [
+  {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+  {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]
+})";
+    const ImportedMesh m = import_mesh(dir.file("two.gltf"));
+    ASSERT_EQ(m.mesh.triangles.size(), 2u);
+    ASSERT_EQ(m.mesh.positions.size(), 6u);
+    auto [lo, hi] = m.mesh.bounds();
+    EXPECT_NEAR(lo.x(), 0, 1e-9);
+    EXPECT_NEAR(hi.x(), 11, 1e-9);
+    EXPECT_NEAR(hi.y(), 6, 1e-9);
+    EXPECT_EQ(m.report.components, 2u);
+    EXPECT_FALSE(m.report.closed);
+}
+
+TEST(MeshPrepare, BoxCornerNormalIsAngleWeighted) {
+    // A corner touches three quarter-faces; angle weighting gives the diagonal whatever
+    // the triangulation, where area or count weighting would not.
+    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 1), "box");
+    for (size_t v = 0; v < m.mesh.positions.size(); ++v) {
+        const Eigen::Vector3d expected = m.mesh.positions[v].normalized();
+        EXPECT_LT((m.mesh.normals[v] - expected).norm(), 1e-12) << "vertex " << v;
+    }
+}
+
+TEST(MeshPrepare, InconsistentWindingIsFixed) {
+    auto raw = meshgen::box(1, 1, 1, 2);
+    for (size_t f = 0; f < raw.triangles.size(); f += 3) std::swap(raw.triangles[f][1], raw.triangles[f][2]);
+    const ImportedMesh m = meshgen::prepare(raw, "box");
+    EXPECT_EQ(m.report.flipped_faces, (raw.triangles.size() + 2) / 3);
+    EXPECT_EQ(m.report.inverted_components, 0u);
+    EXPECT_NEAR(volume(m.mesh), 1.0, 1e-9);
+    EXPECT_FALSE(m.report.fixes.empty());
+}
+
+TEST(MeshPrepare, InsideOutClosedMeshIsTurnedAround) {
+    auto raw = meshgen::icosphere(1.0, 2);
+    for (auto& t : raw.triangles) std::swap(t[1], t[2]);
+    const ImportedMesh m = meshgen::prepare(raw, "sphere");
+    EXPECT_EQ(m.report.inverted_components, 1u);
+    EXPECT_GT(volume(m.mesh), 0);
+    for (size_t v = 0; v < m.mesh.positions.size(); ++v) EXPECT_GT(m.mesh.normals[v].dot(m.mesh.positions[v]), 0.9);
+}
+
+TEST(MeshPrepare, OpenMeshLoadsWithWarning) {
+    auto raw = meshgen::box(1, 1, 1, 1);
+    raw.triangles.pop_back();
+    const ImportedMesh m = meshgen::prepare(raw, "open");
+    EXPECT_EQ(m.report.boundary_edges, 3u);
+    EXPECT_FALSE(m.report.closed);
+    EXPECT_FALSE(m.report.warnings.empty());
+}
+
+TEST(MeshPrepare, NonManifoldEdgeIsReported) {
+    meshgen::RawMesh raw;
+    raw.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+    raw.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+    const ImportedMesh m = meshgen::prepare(raw, "fin");
+    EXPECT_EQ(m.report.nonmanifold_edges, 1u);
+}
+
+TEST(MeshPrepare, DegenerateFacesAreIgnoredForNormals) {
+    auto raw = meshgen::box(1, 1, 1, 1);
+    raw.positions.push_back(raw.positions[0]);           // duplicate of vertex 0, welded onto it
+    raw.triangles.push_back({0, 1, uint32_t(raw.positions.size() - 1)}); // collapses after welding
+    raw.positions.push_back((raw.positions[0] + raw.positions[1]) / 2);   // on the edge 0-1
+    raw.triangles.push_back({0, 1, uint32_t(raw.positions.size() - 1)}); // zero area
+    const ImportedMesh m = meshgen::prepare(raw, "degenerate");
+    EXPECT_EQ(m.report.degenerate_faces, 2u);
+    for (size_t v = 0; v < m.mesh.positions.size(); ++v) EXPECT_TRUE(m.mesh.normals[v].allFinite());
+}
+
+TEST(MeshPrepare, VertexWithoutNormalIsReportedNotNaN) {
+    auto raw = meshgen::box(1, 1, 1, 1);
+    raw.positions.push_back({5, 5, 5}); // used by no face
+    const ImportedMesh m = meshgen::prepare(raw, "stray");
+    EXPECT_EQ(m.report.vertices_without_normal, 1u);
+    EXPECT_FALSE(m.mesh.normal_valid.back());
+    EXPECT_TRUE(m.mesh.normals.back().isZero());
+}
+
+TEST(MeshPrepare, NonFiniteCoordinateIsBadInput) {
+    auto raw = meshgen::box(1, 1, 1, 1);
+    raw.positions[3].y() = std::numeric_limits<double>::quiet_NaN();
+    try {
+        meshgen::prepare(raw, "nan.obj");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+        EXPECT_NE(std::string(e.what()).find("nan.obj"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("vertex 3"), std::string::npos);
+    }
+}
+
+TEST(MeshImport, MissingFileNamesThePath) {
+    try {
+        import_mesh("/nonexistent/thing.obj");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/thing.obj"), std::string::npos);
+    }
+}
+
+TEST(MeshImport, ContentHashTellsMeshesApart) {
+    const auto a = meshgen::prepare(meshgen::box(1, 1, 1, 1), "a").mesh;
+    auto moved = meshgen::box(1, 1, 1, 1);
+    moved.positions[0].x() += 1e-3;
+    const auto b = meshgen::prepare(moved, "b").mesh;
+    EXPECT_EQ(a.content_hash(), meshgen::prepare(meshgen::box(1, 1, 1, 1), "c").mesh.content_hash());
+    EXPECT_NE(a.content_hash(), b.content_hash());
+}

@@ -1,0 +1,31 @@
+// Writes the meshes bundled in resources/meshes/. Usage: spt-make-resources OUT_DIR [--big]
+// --big also writes torus_1m.ply (1,000,000 vertices) for the conversion benchmark; it is
+// not bundled.
+#include "meshgen.hpp"
+#include "spt/error.hpp"
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+int main(int argc, char** argv) {
+    const bool big = argc == 3 && std::string(argv[2]) == "--big";
+    if (argc != 2 && !big) {
+        std::cerr << "usage: spt-make-resources OUT_DIR [--big]\n";
+        return 1;
+    }
+    const std::filesystem::path dir = argv[1];
+    std::filesystem::create_directories(dir);
+    using namespace spt::meshgen;
+    try {
+        write_obj(figure(), (dir / "figure.obj").string());
+        write_obj(torus(0.6, 0.25, 48, 24), (dir / "torus.obj").string());
+        write_ply(box(1, 1, 1, 4), (dir / "box.ply").string());
+        write_stl(cad_part(), (dir / "cad_part.stl").string());
+        write_stl(icosphere(0.5, 3), (dir / "sphere.stl").string());
+        if (big) write_ply(torus(1.0, 0.35, 1000, 1000), (dir / "torus_1m.ply").string());
+    } catch (const spt::Error& e) {
+        std::cerr << e.what() << "\n";
+        return int(e.kind());
+    }
+    return 0;
+}

@@ -1,0 +1,192 @@
+#include "meshgen.hpp"
+#include "spt/error.hpp"
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+namespace spt::meshgen {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::FILE* open_or_throw(const std::string& path, const char* mode) {
+    std::FILE* f = std::fopen(path.c_str(), mode);
+    if (!f) throw Error(ErrorKind::CannotWrite, path + ": cannot open for writing");
+    return f;
+}
+
+} // namespace
+
+void RawMesh::append(const RawMesh& o, const Eigen::Vector3d& offset) {
+    const auto base = uint32_t(positions.size());
+    for (const auto& p : o.positions) positions.push_back(p + offset);
+    for (const auto& t : o.triangles) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+RawMesh torus(double R, double r, int nu, int nv) {
+    RawMesh m;
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const double u = 2 * kPi * i / nu, v = 2 * kPi * j / nv;
+            m.positions.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                                     r * std::sin(v));
+        }
+    auto id = [&](int i, int j) { return uint32_t(((i + nu) % nu) * nv + (j + nv) % nv); };
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
+RawMesh box(double sx, double sy, double sz, int n) {
+    RawMesh m;
+    const Eigen::Vector3d h(sx / 2, sy / 2, sz / 2);
+    // Each face: origin corner, two edge vectors whose cross product points outward.
+    const Eigen::Vector3d faces[6][3] = {
+        {{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}},  {{-1, 1, -1}, {2, 0, 0}, {0, -2, 0}},
+        {{1, -1, -1}, {0, 2, 0}, {0, 0, 2}},  {{-1, 1, -1}, {0, -2, 0}, {0, 0, 2}},
+        {{-1, 1, -1}, {0, 0, 2}, {2, 0, 0}},  {{-1, -1, -1}, {2, 0, 0}, {0, 0, 2}},
+    };
+    for (const auto& f : faces) {
+        const auto base = uint32_t(m.positions.size());
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+                m.positions.push_back((f[0] + f[1] * (double(i) / n) + f[2] * (double(j) / n)).cwiseProduct(h));
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const uint32_t a = base + uint32_t(i * (n + 1) + j), b = a + uint32_t(n + 1);
+                m.triangles.push_back({a, b, b + 1});
+                m.triangles.push_back({a, b + 1, a + 1});
+            }
+    }
+    return m;
+}
+
+RawMesh icosphere(double r, int level) {
+    const double t = (1 + std::sqrt(5.0)) / 2;
+    RawMesh m;
+    m.positions = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                   {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                   {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (int l = 0; l < level; ++l) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            const auto key = std::minmax(a, b);
+            auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            m.positions.push_back((m.positions[a] + m.positions[b]) / 2);
+            return mid[key] = uint32_t(m.positions.size() - 1);
+        };
+        std::vector<Triangle> next;
+        next.reserve(m.triangles.size() * 4);
+        for (const auto& tr : m.triangles) {
+            const uint32_t ab = midpoint(tr[0], tr[1]), bc = midpoint(tr[1], tr[2]), ca = midpoint(tr[2], tr[0]);
+            next.push_back({tr[0], ab, ca});
+            next.push_back({tr[1], bc, ab});
+            next.push_back({tr[2], ca, bc});
+            next.push_back({ab, bc, ca});
+        }
+        m.triangles = std::move(next);
+    }
+    for (auto& p : m.positions) p = p.normalized() * r;
+    return m;
+}
+
+RawMesh cylinder(double r, double h, int seg) {
+    RawMesh m;
+    for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < seg; ++i) {
+            const double a = 2 * kPi * i / seg;
+            m.positions.emplace_back(r * std::cos(a), r * std::sin(a), k * h);
+        }
+    const auto bottom = uint32_t(m.positions.size());
+    m.positions.emplace_back(0, 0, 0);
+    m.positions.emplace_back(0, 0, h);
+    const uint32_t top = bottom + 1, s = uint32_t(seg);
+    for (uint32_t i = 0; i < s; ++i) {
+        const uint32_t j = (i + 1) % s;
+        m.triangles.push_back({i, j, s + j});
+        m.triangles.push_back({i, s + j, s + i});
+        m.triangles.push_back({bottom, j, i});
+        m.triangles.push_back({top, s + i, s + j});
+    }
+    return m;
+}
+
+RawMesh figure() {
+    // Parts stacked so they touch rather than overlap much; each is a closed shell.
+    RawMesh m;
+    m.append(box(0.12, 0.26, 0.06, 3), {-0.11, 0.04, 0.03});   // left foot (toes towards +y)
+    m.append(box(0.12, 0.26, 0.06, 3), {0.11, 0.04, 0.03});    // right foot
+    m.append(cylinder(0.055, 0.80, 16), {-0.11, 0, 0.06});     // left leg
+    m.append(cylinder(0.055, 0.80, 16), {0.11, 0, 0.06});      // right leg
+    m.append(box(0.42, 0.22, 0.62, 4), {0, 0, 1.17});          // body
+    m.append(cylinder(0.045, 0.60, 12), {-0.26, 0, 0.86});     // left arm
+    m.append(cylinder(0.045, 0.60, 12), {0.26, 0, 0.86});      // right arm
+    m.append(icosphere(0.13, 3), {0, 0, 1.61});                 // head
+    return m;
+}
+
+RawMesh cad_part() {
+    RawMesh m;
+    m.append(box(2.0, 1.2, 0.2, 1), {0, 0, 0.1});              // plate: two triangles per face
+    m.append(cylinder(0.22, 0.45, 48), {-0.55, 0, 0.2});       // bosses
+    m.append(cylinder(0.22, 0.45, 48), {0.55, 0, 0.2});
+    m.append(box(0.7, 0.12, 0.3, 1), {0, 0, 0.35});            // rib between them
+    return m;
+}
+
+void write_obj(const RawMesh& m, const std::string& path) {
+    std::FILE* f = open_or_throw(path, "w");
+    std::fprintf(f, "# made by spt tools/meshgen\n");
+    for (const auto& p : m.positions) std::fprintf(f, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+    for (const auto& t : m.triangles) std::fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    if (std::fclose(f) != 0) throw Error(ErrorKind::CannotWrite, path + ": write failed");
+}
+
+void write_stl(const RawMesh& m, const std::string& path) {
+    std::FILE* f = open_or_throw(path, "wb");
+    char header[80] = "binary STL made by spt tools/meshgen";
+    std::fwrite(header, 1, 80, f);
+    const auto n = uint32_t(m.triangles.size());
+    std::fwrite(&n, 4, 1, f);
+    for (const auto& t : m.triangles) {
+        const Eigen::Vector3d &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+        const Eigen::Vector3f nrm = (b - a).cross(c - a).normalized().cast<float>();
+        float v[12] = {nrm.x(), nrm.y(), nrm.z()};
+        for (int k = 0; k < 3; ++k)
+            for (int d = 0; d < 3; ++d) v[3 + 3 * k + d] = float(m.positions[t[k]][d]);
+        const uint16_t attr = 0;
+        std::fwrite(v, 4, 12, f);
+        std::fwrite(&attr, 2, 1, f);
+    }
+    if (std::fclose(f) != 0) throw Error(ErrorKind::CannotWrite, path + ": write failed");
+}
+
+void write_ply(const RawMesh& m, const std::string& path) {
+    std::FILE* f = open_or_throw(path, "wb");
+    std::fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment made by spt tools/meshgen\n"
+                    "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face %zu\nproperty list uchar int vertex_indices\nend_header\n",
+                 m.positions.size(), m.triangles.size());
+    for (const auto& p : m.positions) {
+        const float v[3] = {float(p.x()), float(p.y()), float(p.z())};
+        std::fwrite(v, 4, 3, f);
+    }
+    for (const auto& t : m.triangles) {
+        const uint8_t three = 3;
+        const int32_t idx[3] = {int32_t(t[0]), int32_t(t[1]), int32_t(t[2])};
+        std::fwrite(&three, 1, 1, f);
+        std::fwrite(idx, 4, 3, f);
+    }
+    if (std::fclose(f) != 0) throw Error(ErrorKind::CannotWrite, path + ": write failed");
+}
+
+ImportedMesh prepare(const RawMesh& m, const std::string& name) { return prepare_mesh(name, m.positions, m.triangles); }
+
+} // namespace spt::meshgen
