@@ -75,12 +75,26 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     return 0;
 }
 
-std::string output_for(const std::string& in, const ConvertArgs& a) {
+// DIR/<stem>.spt, or DIR/<file name>.spt when `keep_extension` (two inputs share a stem).
+std::string output_for(const std::string& in, const ConvertArgs& a, bool keep_extension) {
     if (!a.output.empty()) return a.output;
-    const fs::path stem = fs::path(in).stem();
-    if (!a.out_dir.empty()) return (fs::path(a.out_dir) / stem).string() + ".spt";
-    return (fs::path(in).parent_path() / stem).string() + ".spt";
+    const fs::path name = keep_extension ? fs::path(in).filename() : fs::path(in).stem();
+    const fs::path dir = a.out_dir.empty() ? fs::path(in).parent_path() : fs::path(a.out_dir);
+    return (dir / name).string() + ".spt";
 }
+
+// A finite, positive length (CLI11's PositiveNumber lets NaN through).
+const CLI::Validator kPositiveLength(
+    [](std::string& v) -> std::string {
+        try {
+            size_t used = 0;
+            const double d = std::stod(v, &used);
+            if (used == v.size() && std::isfinite(d) && d > 0) return {};
+        } catch (const std::exception&) {
+        }
+        return "must be a finite positive number, not '" + v + "'";
+    },
+    "POSITIVE");
 
 void draw_progress(size_t done, size_t total, size_t failed) {
     const int width = 30;
@@ -99,10 +113,14 @@ int run_convert(const ConvertArgs& a) {
         if (!fs::is_directory(a.out_dir))
             throw Error(ErrorKind::CannotWrite, a.out_dir + ": cannot create the output directory");
     }
+    // Inputs whose outputs would collide (spider.obj and spider.fbx) keep their extension.
+    std::map<std::string, int> uses;
+    for (const auto& in : a.inputs) ++uses[fs::weakly_canonical(output_for(in, a, false)).string()];
     std::vector<std::string> outputs;
     std::map<std::string, std::string> claimed;
     for (const auto& in : a.inputs) {
-        outputs.push_back(output_for(in, a));
+        const bool clash = a.output.empty() && uses[fs::weakly_canonical(output_for(in, a, false)).string()] > 1;
+        outputs.push_back(output_for(in, a, clash));
         const std::string key = fs::weakly_canonical(outputs.back()).string();
         if (claimed.count(key))
             throw Error(ErrorKind::Usage, in + " and " + claimed[key] + " would both be written to " + outputs.back());
@@ -163,11 +181,11 @@ Action add_convert_command(CLI::App& app) {
     c->add_option("--leaf-size", a->leaf_size, "Split until an active node holds at most N samples")
         ->check(CLI::Range(1u, 1u << 20));
     c->add_option("--radius", a->radius, "Sampling-sphere radius for every node, model units (default: from spacing)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveLength);
     c->add_option("--radius-scale", a->radius_scale, "Default radius = scale x median sample spacing of the node")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveLength);
     c->add_option("--tolerance", a->tolerance, "Add face samples so no surface gap is deeper than EPS (model units)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveLength);
     c->add_option("--bounds", a->bounds, "Bounding spheres: tight (contain every sampling sphere) or paper")
         ->check(CLI::IsMember({"tight", "paper"}));
     c->add_option("--strategy", a->strategy, "Automatic split: volume (min. children's sphere volume) or median")

@@ -73,23 +73,13 @@ RadiusLimiter::~RadiusLimiter() = default;
 bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r) const {
     if (r <= protrusion_) return false;
     const Eigen::Vector3d c = p - r * n;
-    Eigen::Vector3d q;
-    double d2;
-    uint32_t tri = 0;
-    // The tangent point p is at distance r; anything nearer says how far the sphere pokes out.
-    if (!bvh_->closest(c, r * r * (1 + 1e-9), q, d2, &tri)) return false;
-    if (std::sqrt(d2) < r - protrusion_) return true;
-    // A centre that has passed through a thin part lies outside the body: the sphere hangs
-    // out however far the nearest surface is. The sign comes from the vertex normals
-    // interpolated at the nearest point (the pseudo-normal at edges and corners).
-    const auto& t = mesh_.triangles[tri];
-    const Eigen::Vector3d a = mesh_.positions[t[0]], b = mesh_.positions[t[1]], cc = mesh_.positions[t[2]];
-    const Eigen::Vector3d fn = (b - a).cross(cc - a);
-    const double area2 = fn.squaredNorm();
-    if (!(area2 > 0)) return false;
-    const double wa = (b - q).cross(cc - q).dot(fn) / area2, wb = (cc - q).cross(a - q).dot(fn) / area2;
-    const Eigen::Vector3d nq = wa * mesh_.normals[t[0]] + wb * mesh_.normals[t[1]] + (1 - wa - wb) * mesh_.normals[t[2]];
-    return (c - q).dot(nq) > 1e-9 * r && (q - p).norm() > protrusion_;
+    // The tangent point p is at distance r; a surface nearer than r - allowance means the
+    // sphere pokes out there by more than the allowance.
+    if (bvh_->any_within(c, (r - protrusion_) * (r - protrusion_))) return true;
+    // A centre beyond a wall thinner than the allowance passes the test above; the segment
+    // from the tangent point to the centre then crosses the surface. The start is skipped
+    // so the faces at p itself do not count.
+    return bvh_->segment_hits(p, c, 1e-6);
 }
 
 float RadiusLimiter::limit(const Eigen::Vector3f& pf, const Eigen::Vector3f& nf, float r_max) const {

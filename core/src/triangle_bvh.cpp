@@ -102,4 +102,67 @@ bool TriangleBvh::closest(const Eigen::Vector3d& p, double max_d2, Eigen::Vector
     return found;
 }
 
+bool TriangleBvh::any_within(const Eigen::Vector3d& p, double d2) const {
+    if (nodes_.empty()) return false;
+    uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top) {
+        const uint32_t self = stack[--top];
+        const Node& n = nodes_[self];
+        if (n.box.squaredExteriorDistance(p) >= d2) continue;
+        if (n.count) {
+            for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+                const auto& t = mesh_.triangles[order_[i]];
+                const Eigen::Vector3d q =
+                    closest_on_triangle(p, mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
+                if ((q - p).squaredNorm() < d2) return true;
+            }
+            continue;
+        }
+        if (top + 2 > 128) continue;
+        stack[top++] = n.first;
+        stack[top++] = self + 1;
+    }
+    return false;
+}
+
+bool TriangleBvh::segment_hits(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double skip) const {
+    if (nodes_.empty()) return false;
+    const Eigen::Vector3d d = b - a;
+    Eigen::AlignedBox3d seg(a.cwiseMin(b), a.cwiseMax(b));
+    uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top) {
+        const uint32_t self = stack[--top];
+        const Node& n = nodes_[self];
+        if (!n.box.intersects(seg)) continue;
+        if (n.count) {
+            for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+                // Moller-Trumbore, both faces.
+                const auto& t = mesh_.triangles[order_[i]];
+                const Eigen::Vector3d& v0 = mesh_.positions[t[0]];
+                const Eigen::Vector3d e1 = mesh_.positions[t[1]] - v0, e2 = mesh_.positions[t[2]] - v0;
+                const Eigen::Vector3d pv = d.cross(e2);
+                const double det = e1.dot(pv);
+                if (std::abs(det) < 1e-300) continue;
+                const Eigen::Vector3d tv = a - v0;
+                const double u = tv.dot(pv) / det;
+                if (u < 0 || u > 1) continue;
+                const Eigen::Vector3d qv = tv.cross(e1);
+                const double v = d.dot(qv) / det;
+                if (v < 0 || u + v > 1) continue;
+                const double s = e2.dot(qv) / det;
+                if (s > skip && s <= 1) return true;
+            }
+            continue;
+        }
+        if (top + 2 > 128) continue;
+        stack[top++] = n.first;
+        stack[top++] = self + 1;
+    }
+    return false;
+}
+
 } // namespace spt::detail

@@ -16,6 +16,11 @@ public:
     bool closest(const Eigen::Vector3d& p, double max_d2, Eigen::Vector3d& out, double& out_d2,
                  uint32_t* out_triangle = nullptr) const;
 
+    /// True if some triangle comes closer to p than sqrt(d2); stops at the first found.
+    bool any_within(const Eigen::Vector3d& p, double d2) const;
+    /// True if the segment from a to b crosses a triangle (excluding its first `skip` fraction).
+    bool segment_hits(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double skip) const;
+
 private:
     struct Node {
         Eigen::AlignedBox3d box;

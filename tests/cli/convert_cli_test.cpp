@@ -1,0 +1,150 @@
+// `spt convert` run as a user would: real binary, real files.
+#include "meshgen.hpp"
+#include "run_command.hpp"
+#include "spt/spt_file.hpp"
+#include "test_support.hpp"
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+
+using namespace spt;
+using namespace spt::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<uint8_t> read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+} // namespace
+
+TEST(ConvertCli, BundledMeshesConvertAndValidate) {
+    TempDir out("bundled");
+    const auto r = run_command(spt_binary() + " convert " + q(project_meshes()) + "/*.* --out-dir " + q(out.path()));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("converted 5, failed 0"), std::string::npos) << r.output;
+    for (const char* name : {"figure", "torus", "box", "cad_part", "sphere"}) {
+        const std::string spt = out.file(std::string(name) + ".spt");
+        ASSERT_TRUE(fs::exists(spt)) << name;
+        EXPECT_EQ(load_spt(spt).validate(), "");
+    }
+}
+
+TEST(ConvertCli, AssimpTestModelsInManyFormatsConvert) {
+    TempDir out("assimp");
+    const std::string m = assimp_models();
+    std::string files;
+    for (const char* f : {"/PLY/Wuson.ply", "/OBJ/spider.obj", "/STL/Spider_binary.stl", "/STL/Spider_ascii.stl",
+                          "/OFF/Cube.off", "/Collada/duck.dae", "/3DS/fels.3ds", "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", "/FBX/spider.fbx",
+                          "/FBX/box.fbx"})
+        if (fs::exists(m + f)) files += " " + q(m + f);
+    ASSERT_FALSE(files.empty());
+    const auto r = run_command(spt_binary() + " convert" + files + " --out-dir " + q(out.path()) + " -j 2");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("failed 0"), std::string::npos) << r.output;
+}
+
+TEST(ConvertCli, EveryInvalidModelFailsCleanlyWithItsName) {
+    TempDir out("invalid");
+    for (const auto& e : fs::directory_iterator(assimp_models() + "/invalid")) {
+        const std::string path = e.path().string();
+        const auto r = run_command(spt_binary() + " convert " + q(path) + " -o " + q(out.file("x.spt")) + " --force");
+        EXPECT_FALSE(r.crashed) << path << "\n" << r.output;
+        if (r.exit_code == 0) continue; // a few "invalid" files still hold a readable mesh
+        EXPECT_EQ(r.exit_code, 2) << path << "\n" << r.output;
+        EXPECT_NE(r.output.find(path), std::string::npos) << r.output;
+    }
+}
+
+TEST(ConvertCli, OneBadFileDoesNotStopTheOthers) {
+    TempDir out("batch");
+    std::ofstream(out.file("broken.obj")) << "v 0 0 0\nv 1 0 0\nf 1 2 9\n";
+    const auto r = run_command(spt_binary() + " convert " + q(project_meshes() + "/torus.obj") + " " +
+                               q(out.file("broken.obj")) + " " + q(project_meshes() + "/box.ply") + " --out-dir " +
+                               q(out.file("o")));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("converted 2, failed 1"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(out.file("o/torus.spt")));
+    EXPECT_TRUE(fs::exists(out.file("o/box.spt")));
+    EXPECT_FALSE(fs::exists(out.file("o/broken.spt")));
+}
+
+TEST(ConvertCli, NaNCoordinateIsBadInputNamingTheFile) {
+    TempDir out("nan");
+    std::ofstream(out.file("nan.obj")) << "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n";
+    const auto r = run_command(spt_binary() + " convert " + q(out.file("nan.obj")) + " -o " + q(out.file("n.spt")));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("nan.obj"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out.file("n.spt")));
+}
+
+TEST(ConvertCli, ParallelOutputIsByteIdenticalToSerial) {
+    TempDir out("determinism");
+    const std::string in = q(project_meshes()) + "/*.*";
+    ASSERT_EQ(run_command(spt_binary() + " convert " + in + " -q -j 1 --out-dir " + q(out.file("a"))).exit_code, 0);
+    ASSERT_EQ(run_command(spt_binary() + " convert " + in + " -q -j 2 --out-dir " + q(out.file("b"))).exit_code, 0);
+    for (const auto& e : fs::directory_iterator(out.file("a")))
+        EXPECT_EQ(read_bytes(e.path().string()), read_bytes(out.file("b/" + e.path().filename().string())))
+            << e.path().filename();
+}
+
+TEST(ConvertCli, OptionsReachTheFile) {
+    TempDir out("options");
+    const auto r = run_command(spt_binary() + " convert " + q(project_meshes() + "/cad_part.stl") + " -o " +
+                               q(out.file("c.spt")) + " --leaf-size 4 --radius 0.05 --tolerance 0.02 --bounds paper " +
+                               "--strategy median --tree-name walk");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const SptDocument doc = load_spt(out.file("c.spt"));
+    ASSERT_NE(doc.tree("walk"), nullptr);
+    for (const TreeNode* n : doc.tree("walk")->active_nodes()) {
+        EXPECT_LE(n->samples.size(), 4u);
+        EXPECT_FLOAT_EQ(n->ss_radius, 0.05f);
+    }
+    size_t face = 0;
+    for (size_t i = 0; i < doc.samples.size(); ++i) face += doc.samples.is_face_sample(i);
+    EXPECT_GT(face, 0u);
+}
+
+TEST(ConvertCli, SameNameInputsKeepTheirExtensions) {
+    TempDir out("clash");
+    const std::string m = assimp_models();
+    const auto r = run_command(spt_binary() + " convert " + q(m + "/OBJ/spider.obj") + " " + q(m + "/FBX/spider.fbx") +
+                               " --out-dir " + q(out.path()));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(out.file("spider.obj.spt")));
+    EXPECT_TRUE(fs::exists(out.file("spider.fbx.spt")));
+}
+
+TEST(ConvertCli, UsageErrorsExitOne) {
+    TempDir out("usage");
+    const std::string torus = q(project_meshes() + "/torus.obj");
+    for (const std::string& args : std::vector<std::string>{std::string("convert"), "convert " + torus + " --bogus", "convert " + torus + " --leaf-size 0",
+          "convert " + torus + " --bounds round", "convert " + torus + " --radius -1",
+          "convert " + torus + " --tolerance nan", "convert " + torus + " --radius inf", "convert " + torus + " " + torus + " -o " + q(out.file("x.spt")),
+          std::string("frobnicate")}) {
+        const auto r = run_command(spt_binary() + " " + args);
+        EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.output;
+    }
+}
+
+TEST(ConvertCli, UnwritableOutputExitsThree) {
+    TempDir out("unwritable");
+    const std::string torus = q(project_meshes() + "/torus.obj");
+    auto r = run_command(spt_binary() + " convert " + torus + " -o /nonexistent-dir/t.spt");
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    ASSERT_EQ(run_command(spt_binary() + " convert " + torus + " -o " + q(out.file("t.spt"))).exit_code, 0);
+    const auto before = read_bytes(out.file("t.spt"));
+    r = run_command(spt_binary() + " convert " + q(project_meshes() + "/box.ply") + " -o " + q(out.file("t.spt")));
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
+    EXPECT_EQ(read_bytes(out.file("t.spt")), before) << "an existing file was overwritten without --force";
+}
+
+TEST(ConvertCli, HelpListsEveryOption) {
+    const auto r = run_command(spt_binary() + " convert --help");
+    EXPECT_EQ(r.exit_code, 0);
+    for (const char* opt : {"--out-dir", "--leaf-size", "--radius", "--tolerance", "--bounds", "--jobs", "--force"})
+        EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
+}

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The main job on bundled data: convert every bundled mesh to .spt in parallel, then
+# describe what was built. Usage: tools/demo.sh BUILD_DIR
+set -euo pipefail
+build=${1:-build}
+spt="$build/cli/spt"
+out="$build/demo"
+mkdir -p "$out"
+echo "== spt convert: bundled meshes -> $out/*.spt"
+"$spt" convert resources/meshes/* --out-dir "$out" --force
+echo
+echo "== the same CAD part with tolerance-driven sampling (no gap deeper than 0.01)"
+"$spt" convert resources/meshes/cad_part.stl -o "$out/cad_part_tol.spt" --tolerance 0.01 --force
+echo
+echo "== spt info $out/figure.spt"
+"$spt" info "$out/figure.spt"
