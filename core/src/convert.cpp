@@ -53,7 +53,7 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
 
     auto t0 = Clock::now();
     const RadiusLimiter limiter(mesh, protrusion);
-    const SampleSet vertex_samples = sample_vertices(mesh, limiter);
+    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius);
     if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
     st.vertex_samples = vertex_samples.size();
     const RadiusRule& rule = options.build.radius;

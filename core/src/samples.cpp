@@ -95,7 +95,7 @@ float RadiusLimiter::limit(const Eigen::Vector3f& pf, const Eigen::Vector3f& nf,
     return float(lo);
 }
 
-SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter) {
+SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule) {
     const size_t n = mesh.positions.size();
     std::vector<double> edge_sum(n, 0);
     std::vector<uint32_t> edge_count(n, 0);
@@ -115,7 +115,7 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
         const float spacing = float(edge_sum[v] / edge_count[v]);
         const Eigen::Vector3f p = mesh.positions[v].cast<float>();
         const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
-        s.add(p, nrm, v, spacing, limiter.limit(p, nrm, kRadiusSearchScale * spacing));
+        s.add(p, nrm, v, spacing, limiter.limit(p, nrm, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY)));
     }
     return s;
 }
@@ -150,7 +150,7 @@ struct FaceSampler {
         auto it = radius_at.find({i, j});
         if (it != radius_at.end()) return it->second;
         const Eigen::Vector3f p = point(i, j).cast<float>();
-        const float cap = limiter.limit(p, normal, kRadiusSearchScale * spacing);
+        const float cap = limiter.limit(p, normal, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY));
         out.add(p, normal, face | kFaceSampleBit, spacing, cap);
         const float r = factor * rule.for_sample(spacing, out.max_radius.back());
         radius_at[{i, j}] = r;

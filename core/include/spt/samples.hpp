@@ -89,12 +89,13 @@ private:
     double protrusion_;
 };
 
-/// How far the radius search looks: max_radius is found up to this many times the spacing.
-constexpr float kRadiusSearchScale = 8.0f;
+/// How far the radius search looks, relative to the radius the rule asks for: room for a
+/// node's median spacing to exceed a member's own. Beyond it max_radius is not explored.
+constexpr float kRadiusSearchHeadroom = 2.0f;
 
 /// One sample per vertex with a valid normal; spacing = mean length of its edges,
-/// max_radius from `limiter`.
-SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter);
+/// max_radius from `limiter`, searched up to kRadiusSearchHeadroom x rule.for_sample.
+SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {});
 
 /// Adds face samples (face normals) on `triangle`, refining adaptively until every point of
 /// it lies within reach of a face sample whose sphere leaves it at most `eps` uncovered,
