@@ -3,6 +3,7 @@
 #include "process_pool.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -25,7 +26,7 @@ struct ConvertArgs {
     uint32_t leaf_size = 8;
     double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
     int jobs = 0;
-    bool force = false, quiet = false;
+    bool force = false, quiet = false, append = false;
 };
 
 std::string fmt(double v, int prec = 2) {
@@ -54,15 +55,37 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     opt.build.radius.scale = float(a.radius_scale);
     if (a.tolerance > 0) opt.tolerance = a.tolerance;
     ConvertStats st;
-    const SptDocument doc = make_document(m.mesh, opt, &st);
+    SptDocument doc;
+    if (a.append) {
+        // Another tree over the samples already in the file (the paper keeps one per motion).
+        doc = load_spt(out);
+        const std::string mismatch = check_mesh_matches(doc.mesh, m.mesh);
+        if (!mismatch.empty()) throw Error(ErrorKind::BadInput, out + ": " + mismatch + " (" + in + ")");
+        auto same = std::find_if(doc.trees.begin(), doc.trees.end(), [&](const SamplingTree& t) { return t.name() == a.tree_name; });
+        if (same != doc.trees.end() && !a.force)
+            throw Error(ErrorKind::CannotWrite, out + ": already has a tree named '" + a.tree_name + "'; use --force to replace it");
+        if (same != doc.trees.end()) doc.trees.erase(same);
+        BuildOptions build = opt.build;
+        for (size_t i = 0; i < doc.samples.size() && !build.radius_coherent; ++i)
+            build.radius_coherent = doc.samples.is_face_sample(i); // keep the tolerance guarantee
+        doc.trees.push_back(build_tree(a.tree_name, doc.samples, build));
+        for (size_t i = 0; i < doc.samples.size(); ++i)
+            ++(doc.samples.is_face_sample(i) ? st.face_samples : st.vertex_samples);
+    } else {
+        doc = make_document(m.mesh, opt, &st);
+    }
     save_spt(doc, out);
-    const SamplingTree& t = doc.trees.front();
+    const SamplingTree& t = doc.trees.back();
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const auto& r = m.report;
     std::cerr << in << " -> " << out << ": " << r.vertices << " vertices, " << r.faces << " faces; " << doc.samples.size()
               << " samples (" << st.vertex_samples << " vertex, " << st.face_samples << " face); tree '" << t.name()
               << "': " << t.node_count() << " nodes, " << t.active_nodes().size() << " active, depth " << t.depth()
               << "; " << fmt(secs) << " s, peak memory " << peak_mib() << " MiB\n";
+    std::cerr << "  import: " << r.file_vertices << " file vertices welded to " << r.vertices << "; " << r.faces
+              << " faces (" << r.degenerate_faces << " degenerate); " << r.components << " component"
+              << (r.components == 1 ? "" : "s") << ", " << (r.closed ? "closed" : "not closed") << "; "
+              << r.boundary_edges << " boundary, " << r.nonmanifold_edges << " non-manifold edges\n";
     for (const auto& f : r.fixes) std::cerr << "  fixed: " << f << "\n";
     for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
     const double diag = m.mesh.diagonal();
@@ -104,6 +127,8 @@ void draw_progress(size_t done, size_t total, size_t failed) {
 }
 
 int run_convert(const ConvertArgs& a) {
+    if (a.append && a.tolerance > 0)
+        throw Error(ErrorKind::Usage, "--append keeps the file's samples; --tolerance would change them");
     if (!a.output.empty() && a.inputs.size() != 1)
         throw Error(ErrorKind::Usage, "-o names one output file; with " + std::to_string(a.inputs.size()) +
                                           " inputs use --out-dir DIR");
@@ -137,7 +162,11 @@ int run_convert(const ConvertArgs& a) {
     std::vector<std::string> failures;
     auto work = [&](size_t i) -> int {
         const std::string& out = outputs[i];
-        if (!a.force && fs::exists(out)) {
+        if (a.append && !fs::exists(out)) {
+            std::cerr << a.inputs[i] << ": --append needs an existing " << out << "\n";
+            return 2;
+        }
+        if (!a.force && !a.append && fs::exists(out)) {
             std::cerr << a.inputs[i] << ": " << out << " exists; use --force to overwrite\n";
             return 3;
         }
@@ -194,7 +223,9 @@ Action add_convert_command(CLI::App& app) {
     c->add_option("-j,--jobs", a->jobs, "Files converted at once (default: all cores)")->check(CLI::Range(1, 1024));
     c->add_option("--timeout", a->timeout, "Give up on one file after this many seconds (0: never)")
         ->check(CLI::NonNegativeNumber);
-    c->add_flag("-f,--force", a->force, "Overwrite existing outputs");
+    c->add_flag("-f,--force", a->force, "Overwrite existing outputs (with --append: replace a same-named tree)");
+    c->add_flag("--append", a->append,
+                "Add a tree (--tree-name) over the samples of an existing OUT.spt made from the same mesh");
     c->add_flag("-q,--quiet", a->quiet, "Print only failures and the summary");
     return [a] { return run_convert(*a); };
 }

@@ -117,12 +117,34 @@ TEST(ConvertCli, SameNameInputsKeepTheirExtensions) {
     EXPECT_TRUE(fs::exists(out.file("spider.fbx.spt")));
 }
 
+TEST(ConvertCli, AppendAddsANamedTreeOverTheSameSamples) {
+    TempDir out("append");
+    const std::string fig = q(project_meshes() + "/figure.obj"), spt = q(out.file("f.spt"));
+    ASSERT_EQ(run_command(spt_binary() + " convert " + fig + " -o " + spt).exit_code, 0);
+    auto r = run_command(spt_binary() + " convert " + fig + " -o " + spt + " --append --tree-name walk --leaf-size 2");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const SptDocument doc = load_spt(out.file("f.spt"));
+    ASSERT_EQ(doc.trees.size(), 2u);
+    ASSERT_NE(doc.tree("walk"), nullptr);
+    for (const TreeNode* n : doc.tree("walk")->active_nodes()) EXPECT_LE(n->samples.size(), 2u);
+    // Same name again: refused without --force, replaced with it.
+    r = run_command(spt_binary() + " convert " + fig + " -o " + spt + " --append --tree-name walk");
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_EQ(run_command(spt_binary() + " convert " + fig + " -o " + spt + " --append --tree-name walk -f").exit_code, 0);
+    EXPECT_EQ(load_spt(out.file("f.spt")).trees.size(), 2u);
+    // A different mesh: refused, file untouched.
+    r = run_command(spt_binary() + " convert " + q(project_meshes() + "/torus.obj") + " -o " + spt + " --append --tree-name x");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(load_spt(out.file("f.spt")).trees.size(), 2u);
+}
+
 TEST(ConvertCli, UsageErrorsExitOne) {
     TempDir out("usage");
     const std::string torus = q(project_meshes() + "/torus.obj");
     for (const std::string& args : std::vector<std::string>{std::string("convert"), "convert " + torus + " --bogus", "convert " + torus + " --leaf-size 0",
           "convert " + torus + " --bounds round", "convert " + torus + " --radius -1",
-          "convert " + torus + " --tolerance nan", "convert " + torus + " --radius inf", "convert " + torus + " " + torus + " -o " + q(out.file("x.spt")),
+          "convert " + torus + " --tolerance nan", "convert " + torus + " --radius inf",
+          "convert " + torus + " --append --tolerance 0.1 -o " + q(out.file("y.spt")), "convert " + torus + " " + torus + " -o " + q(out.file("x.spt")),
           std::string("frobnicate")}) {
         const auto r = run_command(spt_binary() + " " + args);
         EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.output;
