@@ -138,6 +138,7 @@ int run_render(const RenderArgs& a) {
     if (doc) timer.step(spt_input || !a.tree_path.empty() ? "load tree" : "build tree");
     const SamplingTree* tree = nullptr;
     if (doc) {
+        if (doc->trees.empty()) throw_bad_input(spt_input ? a.input : a.tree_path, "holds no sampling tree");
         tree = a.tree_name.empty() ? &doc->trees.front() : doc->tree(a.tree_name);
         if (!tree) {
             std::string names;

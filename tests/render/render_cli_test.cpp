@@ -1,4 +1,5 @@
 // `spt render` as a user runs it: the real binary, real files, exit codes.
+#include "spt/convert.hpp"
 #include "spt/render/image.hpp"
 #include "test_meshes.hpp"
 #include <cstdlib>
@@ -136,6 +137,18 @@ TEST_F(RenderCli, tree_file_and_spt_input) {
     EXPECT_TRUE(has_two_colours(spt::render::read_png((dir / "c.png").string())));
     EXPECT_EQ(spt("render figure.spt --tree figure.spt -o d.png").code, 1);
     EXPECT_EQ(spt("render figure.obj --tree figure.spt --tree-name nope --overlay spheres -o d.png").code, 1);
+}
+
+TEST_F(RenderCli, spt_without_trees_exits_2) {
+    // From the file as written (OBJ text rounds the coordinates), so the hash matches.
+    spt::SptDocument doc = spt::make_document(spt::import_mesh(figure).mesh);
+    doc.trees.clear();
+    spt::save_spt(doc, (dir / "empty.spt").string());
+    for (const char* args : {"render empty.spt -o x.png", "render figure.obj --tree empty.spt -o x.png"}) {
+        const CliRun r = spt(args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find("empty.spt: holds no sampling tree"), std::string::npos) << r.err;
+    }
 }
 
 TEST_F(RenderCli, unwritable_output_exits_3) {
