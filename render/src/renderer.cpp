@@ -434,9 +434,9 @@ struct Renderer::Impl {
         gl.Viewport(vp.x, vp.y, vp.width, vp.height);
         gl.Enable(GL_SCISSOR_TEST);
         gl.Scissor(vp.x, vp.y, vp.width, vp.height);
-        // Pinned for byte-identical output: no dithering, no multisampling.
+        // Pinned for byte-identical output. Multisampling is left to the target: the
+        // off-screen framebuffers are single-sample, a window may want it.
         gl.Disable(GL_DITHER);
-        gl.Disable(GL_MULTISAMPLE);
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         gl.DepthMask(GL_TRUE);
         gl.ClearColor(f.background.r, f.background.g, f.background.b, f.background.a);

@@ -170,8 +170,13 @@ void main() {
     } else if (u_ortho == 1) {
         p = c + vec3(k * r, 0.0);
     } else {
-        float d = max(length(c), r * 1.001);
-        vec3 w = c / length(c);
+        float d = length(c);
+        if (d <= r * 1.001) {  // eye inside the sphere: it has no outline
+            gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+            v_color = vec4(0.0);
+            return;
+        }
+        vec3 w = c / d;
         vec3 helper = abs(w.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
         vec3 u = normalize(cross(helper, w));
         vec3 v = cross(w, u);
