@@ -152,7 +152,7 @@ int run_render(const RenderArgs& a) {
     }
 
     auto context = make_offscreen_context(a.backend, width, height);
-    Renderer renderer(context->loader());
+    auto renderer = std::make_unique<Renderer>(context->loader());
     timer.step("create context");
 
     Frame frame;
@@ -162,7 +162,7 @@ int run_render(const RenderArgs& a) {
     const bool show_node = overlays.count("node") > 0;
     if (mesh) {
         MeshItem item;
-        item.mesh = renderer.add_mesh(*mesh);
+        item.mesh = renderer->add_mesh(*mesh);
         item.style.shading = a.shading == "flat" ? Shading::Flat : a.shading == "none" ? Shading::None : Shading::Smooth;
         item.style.wireframe = overlays.count("wire") > 0;
         item.style.points = overlays.count("points") > 0;
@@ -173,7 +173,7 @@ int run_render(const RenderArgs& a) {
     }
     if (tree && (show_spheres || show_node)) {
         const CompactTree compact(*tree, doc->samples);
-        const SphereSetHandle set = renderer.add_spheres(
+        const SphereSetHandle set = renderer->add_spheres(
             sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level));
         if (show_spheres) {
             SphereItem all;
@@ -192,15 +192,18 @@ int run_render(const RenderArgs& a) {
         frame.wire_spheres.push_back(bounding_spheres(*tree, a.node, 0, highlight_color()).front());
 
     timer.step("upload");
-    Bounds bounds = renderer.bounds(frame);
+    Bounds bounds = renderer->bounds(frame);
     if (bounds.empty()) bounds.add(Eigen::Vector3f::Zero());
     if (a.view == "quad")
-        renderer.draw_quad(frame, fit_quad_cameras(bounds), width, height, context->framebuffer());
+        renderer->draw_quad(frame, fit_quad_cameras(bounds), width, height, context->framebuffer());
     else
-        renderer.draw(frame, fit_camera(parse_view(a.view), bounds), Viewport{0, 0, width, height},
+        renderer->draw(frame, fit_camera(parse_view(a.view), bounds), Viewport{0, 0, width, height},
                       context->framebuffer());
     const Image image = context->read_pixels();
     timer.step("draw and read back");
+    renderer.reset(); // GL objects go before their context
+    context.reset();
+    timer.step("release context");
 
     // Scenes do not exist yet: a static mesh looks the same in every frame.
     for (int f : frames) write_png(image, output_name(a.output, f));
