@@ -12,5 +12,7 @@ using Action = std::function<int()>;
 Action add_convert_command(CLI::App& app);
 /// `spt info`: what a .spt file holds, and whether it is valid.
 Action add_info_command(CLI::App& app);
+/// `spt render`: off-screen renders of a mesh and its sampling tree to PNG.
+Action add_render_command(CLI::App& app);
 
 } // namespace spt::cli

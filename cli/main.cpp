@@ -17,6 +17,9 @@ int main(int argc, char** argv) {
     };
     add(spt::cli::add_convert_command);
     add(spt::cli::add_info_command);
+#ifdef SPT_HAVE_RENDER
+    add(spt::cli::add_render_command);
+#endif
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,252 @@
+// spt render INPUT [--tree FILE.spt] [--view V] [--size WxH] [--frame N | --frames A:B]
+//            [--backend B] [--overlay LIST] -o OUT.png
+#include "commands.hpp"
+#include "spt/compact_tree.hpp"
+#include "spt/convert.hpp"
+#include "spt/error.hpp"
+#include "spt/render/offscreen.hpp"
+#include "spt/render/renderer.hpp"
+#include "spt/render/tree_overlay.hpp"
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <set>
+
+namespace spt::cli {
+namespace {
+
+using namespace spt::render;
+
+struct RenderArgs {
+    std::string input, tree_path, tree_name, view = "camera", size = "512x512", frames, backend = "osmesa";
+    std::string output, shading = "smooth", color_by = "level";
+    std::vector<std::string> overlays;
+    int frame = -1;
+    uint64_t node = 1;
+    int bounds_depth = 1;
+    double mesh_opacity = -1;
+    bool timings = false;
+};
+
+// Wall time of each step, printed with --timings (docs/benchmarks.md uses them).
+class StepTimer {
+public:
+    explicit StepTimer(bool on) : on_(on), last_(Clock::now()) {}
+    void step(const char* name) {
+        const auto now = Clock::now();
+        if (on_) std::cerr << "  " << name << ": " << std::chrono::duration<double>(now - last_).count() * 1000.0 << " ms\n";
+        last_ = now;
+    }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    bool on_;
+    Clock::time_point last_;
+};
+
+const std::vector<std::string> kOverlays = {"spheres", "bounds", "node", "wire", "points", "grid", "axes", "none"};
+
+bool is_spt_file(const std::string& path) {
+    char magic[6] = {};
+    std::ifstream(path, std::ios::binary).read(magic, 6);
+    return std::memcmp(magic, "SPTREE", 6) == 0;
+}
+
+std::pair<int, int> parse_size(const std::string& s) {
+    const size_t x = s.find('x');
+    auto number = [&](const std::string& t) {
+        if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos) return -1;
+        return std::stoi(t);
+    };
+    const int w = x == std::string::npos ? -1 : number(s.substr(0, x));
+    const int h = x == std::string::npos ? -1 : number(s.substr(x + 1));
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw Error(ErrorKind::Usage, "--size " + s + ": expected WxH, each 1 to 16384 pixels (e.g. 512x512)");
+    return {w, h};
+}
+
+std::vector<int> parse_frames(const RenderArgs& a) {
+    if (a.frame >= 0) return {a.frame};
+    if (a.frames.empty()) return {0};
+    const size_t colon = a.frames.find(':');
+    auto number = [](const std::string& t) -> long {
+        if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos) return -1;
+        return std::stol(t);
+    };
+    const long first = colon == std::string::npos ? -1 : number(a.frames.substr(0, colon));
+    const long last = colon == std::string::npos ? -1 : number(a.frames.substr(colon + 1));
+    if (first < 0 || last < first)
+        throw Error(ErrorKind::Usage, "--frames " + a.frames + ": expected A:B with 0 <= A <= B");
+    if (last - first >= 100000) throw Error(ErrorKind::Usage, "--frames " + a.frames + ": at most 100000 frames");
+    std::vector<int> frames;
+    for (long f = first; f <= last; ++f) frames.push_back(int(f));
+    return frames;
+}
+
+std::string output_name(const std::string& pattern, int frame) {
+    std::string out = pattern;
+    const std::string key = "{frame}";
+    for (size_t at = out.find(key); at != std::string::npos; at = out.find(key, at))
+        out.replace(at, key.size(), std::to_string(frame)), at += std::to_string(frame).size();
+    return out;
+}
+
+View parse_view(const std::string& v) {
+    if (v == "top") return View::Top;
+    if (v == "front") return View::Front;
+    if (v == "side") return View::Side;
+    return View::Camera;
+}
+
+int run_render(const RenderArgs& a) {
+    const auto [width, height] = parse_size(a.size);
+    const std::vector<int> frames = parse_frames(a);
+    if (frames.size() > 1 && a.output.find("{frame}") == std::string::npos)
+        throw Error(ErrorKind::Usage, "-o " + a.output + ": with --frames, the output name needs {frame}");
+
+    std::set<std::string> overlays(a.overlays.begin(), a.overlays.end());
+    const bool spt_input = is_spt_file(a.input);
+    if (a.overlays.empty()) overlays = spt_input ? std::set<std::string>{"spheres", "grid", "axes"}
+                                                 : std::set<std::string>{"grid", "axes"};
+    if (overlays.count("none") && overlays.size() > 1)
+        throw Error(ErrorKind::Usage, "--overlay none cannot be combined with other overlays");
+    const bool needs_tree = overlays.count("spheres") || overlays.count("bounds") || overlays.count("node");
+    if (spt_input && !a.tree_path.empty())
+        throw Error(ErrorKind::Usage, a.input + " is already a .spt file; --tree takes the tree of a mesh INPUT");
+
+    StepTimer timer(a.timings);
+    // Geometry: a mesh, and a sampling tree when an overlay needs one.
+    std::optional<TriangleMesh> mesh;
+    std::optional<SptDocument> doc;
+    if (spt_input) {
+        doc = load_spt(a.input);
+    } else {
+        mesh = import_mesh(a.input).mesh;
+        timer.step("import mesh");
+        if (!a.tree_path.empty()) {
+            doc = load_spt(a.tree_path);
+            const std::string mismatch = check_mesh_matches(doc->mesh, *mesh);
+            if (!mismatch.empty())
+                throw_bad_input(a.tree_path, "was not made from " + a.input + ": " + mismatch);
+        } else if (needs_tree) {
+            doc = make_document(*mesh);
+        }
+    }
+    if (doc) timer.step(spt_input || !a.tree_path.empty() ? "load tree" : "build tree");
+    const SamplingTree* tree = nullptr;
+    if (doc) {
+        if (doc->trees.empty()) throw_bad_input(spt_input ? a.input : a.tree_path, "holds no sampling tree");
+        tree = a.tree_name.empty() ? &doc->trees.front() : doc->tree(a.tree_name);
+        if (!tree) {
+            std::string names;
+            for (const auto& t : doc->trees) names += (names.empty() ? "'" : ", '") + t.name() + "'";
+            throw Error(ErrorKind::Usage, "--tree-name " + a.tree_name + ": " +
+                                              (spt_input ? a.input : a.tree_path) + " holds " + names);
+        }
+        if ((overlays.count("bounds") || overlays.count("node")) && !tree->find(a.node))
+            throw Error(ErrorKind::Usage, "--node " + std::to_string(a.node) + ": tree '" + tree->name() +
+                                              "' has no node with that id");
+    }
+
+    auto context = make_offscreen_context(a.backend, width, height);
+    auto renderer = std::make_unique<Renderer>(context->loader());
+    timer.step("create context");
+
+    Frame frame;
+    frame.grid = overlays.count("grid") > 0;
+    frame.axes = overlays.count("axes") > 0;
+    const bool show_spheres = overlays.count("spheres") > 0;
+    const bool show_node = overlays.count("node") > 0;
+    if (mesh) {
+        MeshItem item;
+        item.mesh = renderer->add_mesh(*mesh);
+        item.style.shading = a.shading == "flat" ? Shading::Flat : a.shading == "none" ? Shading::None : Shading::Smooth;
+        item.style.wireframe = overlays.count("wire") > 0;
+        item.style.points = overlays.count("points") > 0;
+        // Sampling spheres lie inside the surface: show them through a see-through mesh.
+        const double opacity = a.mesh_opacity >= 0 ? a.mesh_opacity : (show_spheres || show_node) ? 0.3 : 1.0;
+        item.style.opacity = float(opacity);
+        frame.meshes.push_back(item);
+    }
+    if (tree && (show_spheres || show_node)) {
+        const CompactTree compact(*tree, doc->samples);
+        const SphereSetHandle set = renderer->add_spheres(
+            sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level));
+        if (show_spheres) {
+            SphereItem all;
+            all.spheres = set;
+            frame.spheres.push_back(all);
+        }
+        if (show_node) {
+            const SphereRange r = sphere_range(compact, *tree, a.node);
+            frame.spheres.push_back(SphereItem{set, Eigen::Affine3f::Identity(), r.first, r.count, highlight_color()});
+        }
+    }
+    if (tree && overlays.count("bounds"))
+        for (const WireSphere& w : bounding_spheres(*tree, a.node, a.bounds_depth, highlight_color()))
+            frame.wire_spheres.push_back(w);
+    if (tree && show_node && !overlays.count("bounds"))
+        frame.wire_spheres.push_back(bounding_spheres(*tree, a.node, 0, highlight_color()).front());
+
+    timer.step("upload");
+    Bounds bounds = renderer->bounds(frame);
+    if (bounds.empty()) bounds.add(Eigen::Vector3f::Zero());
+    if (a.view == "quad")
+        renderer->draw_quad(frame, fit_quad_cameras(bounds), width, height, context->framebuffer());
+    else
+        renderer->draw(frame, fit_camera(parse_view(a.view), bounds), Viewport{0, 0, width, height},
+                      context->framebuffer());
+    const Image image = context->read_pixels();
+    timer.step("draw and read back");
+    renderer.reset(); // GL objects go before their context
+    context.reset();
+    timer.step("release context");
+
+    // Scenes do not exist yet: a static mesh looks the same in every frame.
+    for (int f : frames) write_png(image, output_name(a.output, f));
+    timer.step("write png");
+    return 0;
+}
+
+} // namespace
+
+Action add_render_command(CLI::App& app) {
+    auto a = std::make_shared<RenderArgs>();
+    CLI::App* c = app.add_subcommand("render", "Render a mesh and its sampling tree off screen to PNG");
+    c->footer("Overlays: spheres (sampling spheres), bounds (bounding spheres of --node and --bounds-depth levels\n"
+              "below), node (highlight --node), wire (mesh edges), points (mesh vertices), grid, axes, none.\n"
+              "Default overlays: grid,axes (a .spt INPUT: spheres,grid,axes). {frame} in OUT is replaced by the\n"
+              "frame number. Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write. See docs/rendering.md.");
+    c->add_option("input", a->input, "Mesh file (any format assimp reads) or a .spt file (spheres only)")->required();
+    c->add_option("-o,--output", a->output, "Output PNG; {frame} is replaced by the frame number")->required();
+    c->add_option("--tree", a->tree_path, "Sampling-tree file of the mesh (default: built when an overlay needs it)");
+    c->add_option("--tree-name", a->tree_name, "Tree to show from the file (default: the first)");
+    c->add_option("--view", a->view, "View: top, front, side, camera (perspective) or quad (all four)")
+        ->check(CLI::IsMember({"top", "front", "side", "camera", "quad"}));
+    c->add_option("--size", a->size, "Image size WxH in pixels (default 512x512)");
+    auto* frame = c->add_option("--frame", a->frame, "Frame to render (scenes; a mesh is static)")
+                      ->check(CLI::Range(0, 1 << 30));
+    c->add_option("--frames", a->frames, "Frames A:B, inclusive; OUT must contain {frame}")->excludes(frame);
+    c->add_option("--backend", a->backend, "Off-screen backend: osmesa (default) or egl")
+        ->check(CLI::IsMember({"osmesa", "egl"}));
+    c->add_option("--overlay", a->overlays, "Comma-separated overlays (see below)")
+        ->delimiter(',')
+        ->check(CLI::IsMember(kOverlays));
+    c->add_option("--shading", a->shading, "Mesh faces: smooth (default), flat or none")
+        ->check(CLI::IsMember({"smooth", "flat", "none"}));
+    c->add_option("--mesh-opacity", a->mesh_opacity, "Mesh opacity 0-1 (default 1; 0.3 with spheres or node)")
+        ->check(CLI::Range(0.0, 1.0));
+    c->add_option("--color-by", a->color_by, "Sampling-sphere colours: level (tree depth) or node")
+        ->check(CLI::IsMember({"level", "node"}));
+    c->add_option("--node", a->node, "Paper id of the node for the bounds and node overlays (default 1, the root)")
+        ->check(CLI::Range(uint64_t(1), ~uint64_t(0)));
+    c->add_option("--bounds-depth", a->bounds_depth, "Levels below --node whose bounding spheres are drawn (default 1)")
+        ->check(CLI::Range(0, 62));
+    c->add_flag("--timings", a->timings, "Print the time of each step to stderr");
+    return [a] { return run_render(*a); };
+}
+
+} // namespace spt::cli

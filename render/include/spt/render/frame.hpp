@@ -1,0 +1,122 @@
+#pragma once
+/// What one frame shows, as plain data. The renderer owns only GPU copies of large
+/// geometry (meshes, sphere sets, by handle); everything else is passed per frame,
+/// so a caller such as the collision query can fill these structs directly.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace spt::render {
+
+/// Linear RGBA, each channel in [0, 1].
+struct Color {
+    float r = 0, g = 0, b = 0, a = 1;
+};
+
+/// A sphere in some frame (world unless stated), model units.
+struct Sphere {
+    Eigen::Vector3f center = Eigen::Vector3f::Zero();
+    float radius = 0;
+};
+
+/// One instance of a solid sphere set: a sphere and its colour.
+struct SphereInstance {
+    Sphere sphere;
+    Color color;
+};
+
+/// Handle of a mesh uploaded with Renderer::add_mesh.
+struct MeshHandle {
+    uint32_t id = 0; ///< 0 is no mesh
+};
+
+/// Handle of a sphere set uploaded with Renderer::add_spheres.
+struct SphereSetHandle {
+    uint32_t id = 0; ///< 0 is no set
+};
+
+/// How a mesh's faces are lit.
+enum class Shading {
+    None,   ///< faces not drawn (wireframe or points only)
+    Flat,   ///< one normal per face
+    Smooth, ///< interpolated vertex normals (faces of vertices without a normal fall back to flat)
+};
+
+/// Appearance of one drawn mesh.
+struct MeshStyle {
+    Shading shading = Shading::Smooth;
+    Color color{0.72f, 0.74f, 0.78f, 1};
+    float opacity = 1;          ///< < 1: drawn after opaque geometry, blended, back faces culled
+    bool wireframe = false;     ///< edges over the faces
+    Color wire_color{0.15f, 0.17f, 0.22f, 1};
+    bool points = false;        ///< vertices as points
+    Color point_color{0.1f, 0.1f, 0.1f, 1};
+    float point_size = 3;       ///< pixels
+};
+
+/// A mesh placed in the world.
+struct MeshItem {
+    MeshHandle mesh;
+    Eigen::Affine3f pose = Eigen::Affine3f::Identity(); ///< object to world; rigid (sphere radii are not scaled)
+    MeshStyle style;
+};
+
+/// A range of an uploaded sphere set placed in the world. Items are drawn in
+/// order with a less-or-equal depth test, so a later item over the same spheres
+/// (e.g. one highlighted node) replaces their colour.
+struct SphereItem {
+    SphereSetHandle spheres;
+    Eigen::Affine3f pose = Eigen::Affine3f::Identity(); ///< object to world; rigid
+    uint32_t first = 0;                 ///< first sphere of the range
+    uint32_t count = UINT32_MAX;        ///< number of spheres; clamped to the set
+    std::optional<Color> color;         ///< replaces the per-sphere colours when set
+};
+
+/// A bounding sphere drawn as wire: its outline always on top, its three
+/// axis-aligned great circles faint and depth-tested. World frame.
+struct WireSphere {
+    Sphere sphere;
+    Color color{0.1f, 0.45f, 0.95f, 1};
+};
+
+/// Two overlapping spheres of a collision with their contact. World frame.
+struct SpherePair {
+    Sphere a;                  ///< sphere of the first object
+    Sphere b;                  ///< sphere of the second object
+    Eigen::Vector3f contact = Eigen::Vector3f::Zero(); ///< contact point
+    Eigen::Vector3f normal = Eigen::Vector3f::UnitY(); ///< unit contact normal, from a towards b
+    float depth = 0;           ///< penetration depth, model units
+};
+
+/// Colliding sphere pairs as a query reports them.
+struct CollisionOverlay {
+    std::vector<SpherePair> pairs;
+    Color color_a{0.93f, 0.27f, 0.18f, 1};
+    Color color_b{0.16f, 0.42f, 0.92f, 1};
+    Color contact_color{1.0f, 0.85f, 0.1f, 1};
+    Color normal_color{0.05f, 0.05f, 0.05f, 1};
+    float normal_length = 0;   ///< world units; 0: 4% of the scene's bounding diameter
+    float contact_size = 6;    ///< pixels
+};
+
+/// A polyline through successive positions of a moving point. World frame.
+struct Trail {
+    std::vector<Eigen::Vector3f> points;
+    Color color{0.55f, 0.2f, 0.75f, 1};
+};
+
+/// Everything one draw shows.
+struct Frame {
+    std::vector<MeshItem> meshes;
+    std::vector<SphereItem> spheres;
+    std::vector<WireSphere> wire_spheres;
+    CollisionOverlay collision;
+    std::vector<Trail> trails;
+    bool grid = true;   ///< ground grid under the scene (at its lowest Y)
+    bool axes = true;   ///< axis gizmo in the lower-left corner of each view
+    Color background{0.95f, 0.95f, 0.96f, 1};
+};
+
+} // namespace spt::render

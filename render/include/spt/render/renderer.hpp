@@ -1,0 +1,65 @@
+#pragma once
+/// The OpenGL 3.3 core renderer shared by the editor, the viewer and `spt render`.
+/// It needs only a current context and a loader; it never calls GL directly.
+/// Every method must be called with the same context current.
+#include "spt/mesh.hpp"
+#include "spt/render/camera.hpp"
+#include "spt/render/frame.hpp"
+#include "spt/render/gl_loader.hpp"
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spt::render {
+
+/// A rectangle of the target framebuffer in pixels, origin at the lower left (GL convention).
+struct Viewport {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
+/// The four viewports of the quad layout inside a width x height target, in
+/// fit_quad_cameras order: top (upper left), front (upper right), side (lower
+/// left), camera (lower right), with a one-pixel separator between them.
+std::array<Viewport, 4> quad_viewports(int width, int height);
+
+/// Draws frames into the current context's framebuffers.
+class Renderer {
+public:
+    /// Loads GL through `load` and compiles the shaders; the context must be current.
+    explicit Renderer(const ProcLoader& load);
+    /// Frees every GL object; the context must still be current.
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /// Uploads a mesh (positions and vertex normals, object frame) and returns its handle.
+    MeshHandle add_mesh(const TriangleMesh& mesh);
+    /// Frees an uploaded mesh; the handle becomes invalid.
+    void remove_mesh(MeshHandle mesh);
+    /// Uploads solid spheres (object frame) for instanced drawing and returns the set's handle.
+    SphereSetHandle add_spheres(const std::vector<SphereInstance>& spheres);
+    /// Replaces the spheres of a set (e.g. new colours after a split).
+    void update_spheres(SphereSetHandle set, const std::vector<SphereInstance>& spheres);
+    /// Frees an uploaded sphere set.
+    void remove_spheres(SphereSetHandle set);
+    /// Number of spheres in a set.
+    uint32_t sphere_count(SphereSetHandle set) const;
+
+    /// World-frame box around everything `frame` shows (the grid excepted).
+    Bounds bounds(const Frame& frame) const;
+    /// Clears `viewport` of `framebuffer` and draws `frame` through `camera` into it.
+    void draw(const Frame& frame, const Camera& camera, const Viewport& viewport, uint32_t framebuffer);
+    /// Draws the 2x2 layout (cameras in fit_quad_cameras order) over a width x height target.
+    void draw_quad(const Frame& frame, const std::array<Camera, 4>& cameras, int width, int height,
+                   uint32_t framebuffer);
+
+    /// GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+    const std::string& gl_renderer() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace spt::render

@@ -1,0 +1,44 @@
+#pragma once
+/// Sampling trees as plain draw data: sampling spheres coloured by level or by
+/// node, sphere ranges of subtrees (for highlighting), bounding spheres. Spheres
+/// come in CompactTree order, so the spheres below any node are one range.
+#include "spt/compact_tree.hpp"
+#include "spt/render/frame.hpp"
+#include "spt/sampling_tree.hpp"
+#include <vector>
+
+namespace spt::render {
+
+/// How sampling spheres are coloured.
+enum class ColorBy {
+    Level, ///< by the depth of the sphere's active node (a fixed palette, cycled)
+    Node,  ///< by a hash of the active node's paper id
+};
+
+/// Colour of tree depth `depth` (root 0) in the level palette.
+Color level_color(int depth);
+/// Stable colour of a node id (hashed hue).
+Color node_color(NodeId id);
+/// Colour used for the highlighted node.
+Color highlight_color();
+
+/// Every sampling sphere of `compact` (object frame), coloured by `by`; `tree` is
+/// the tree `compact` was built from (for node ids and depths).
+std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by);
+
+/// Range [first, first + count) of sampling_spheres() below node `id`; count 0 if the
+/// tree has no such node.
+struct SphereRange {
+    uint32_t first = 0;
+    uint32_t count = 0;
+};
+/// Spheres below node `id` in the CompactTree order.
+SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id);
+
+/// Bounding spheres of node `id` and of its descendants down to `levels` levels
+/// below it (0: the node alone), in the object frame transformed by `pose`. The
+/// node itself gets `color`, descendants the level palette.
+std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, NodeId id, int levels, const Color& color,
+                                         const Eigen::Affine3f& pose = Eigen::Affine3f::Identity());
+
+} // namespace spt::render

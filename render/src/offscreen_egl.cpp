@@ -1,0 +1,110 @@
+// The egl backend: EGL on Mesa's surfaceless platform (no display, no window system),
+// a desktop OpenGL 3.3 core-profile context. Only egl* functions are called here.
+#include "offscreen_backends.hpp"
+#include "spt/error.hpp"
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <string>
+
+namespace spt::render::detail {
+namespace {
+
+// EGL hands out one EGLDisplay per platform; terminate it only when the last of our
+// contexts is gone.
+std::mutex g_display_mutex;
+int g_display_users = 0;
+
+std::string egl_error(const char* what) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04X", unsigned(eglGetError()));
+    return std::string("egl: ") + what + " (EGL error " + code + ")";
+}
+
+class EglContext final : public OffscreenContext {
+public:
+    EglContext(int width, int height) : OffscreenContext(width, height) {
+        pin_llvmpipe();
+        const char* client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+        if (!client_ext || !std::strstr(client_ext, "EGL_MESA_platform_surfaceless"))
+            throw Error(ErrorKind::Usage, "egl: the EGL library has no surfaceless platform (EGL_MESA_platform_surfaceless)");
+        auto get_display =
+            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        if (!get_display) throw Error(ErrorKind::Usage, "egl: eglGetPlatformDisplayEXT is missing");
+        {
+            std::lock_guard<std::mutex> lock(g_display_mutex);
+            display_ = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            if (display_ == EGL_NO_DISPLAY) throw Error(ErrorKind::Usage, egl_error("no surfaceless display"));
+            EGLint major = 0, minor = 0;
+            if (!eglInitialize(display_, &major, &minor))
+                throw Error(ErrorKind::Usage, egl_error("cannot initialise the surfaceless display"));
+            ++g_display_users;
+        }
+        try {
+            create();
+            init_gl();
+        } catch (...) {
+            destroy();
+            throw;
+        }
+    }
+    ~EglContext() override {
+        make_current();
+        release_gl();
+        destroy();
+    }
+    const char* backend() const override { return "egl"; }
+    ProcLoader loader() const override {
+        return [](const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); };
+    }
+    void make_current() override { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_); }
+
+private:
+    void create() {
+        const char* ext = eglQueryString(display_, EGL_EXTENSIONS);
+        if (!ext || !std::strstr(ext, "EGL_KHR_surfaceless_context"))
+            throw Error(ErrorKind::Usage, "egl: the display cannot make a context current without a surface");
+        if (!eglBindAPI(EGL_OPENGL_API)) throw Error(ErrorKind::Usage, egl_error("desktop OpenGL is not supported"));
+        const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
+                                         EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_NONE};
+        EGLConfig config = nullptr;
+        EGLint count = 0;
+        if (!eglChooseConfig(display_, config_attribs, &config, 1, &count) || count < 1) {
+            // Drivers that expose no configs on surfaceless still accept a config-less context.
+            if (!std::strstr(ext, "EGL_KHR_no_config_context"))
+                throw Error(ErrorKind::Usage, egl_error("no RGBA8 OpenGL config"));
+            config = EGL_NO_CONFIG_KHR;
+        }
+        const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                          EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                          EGL_NONE};
+        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
+        if (context_ == EGL_NO_CONTEXT)
+            throw Error(ErrorKind::Usage, egl_error("cannot create an OpenGL 3.3 core-profile context"));
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            throw Error(ErrorKind::Usage, egl_error("cannot make the context current"));
+    }
+
+    void destroy() {
+        if (display_ == EGL_NO_DISPLAY) return;
+        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+        context_ = EGL_NO_CONTEXT;
+        std::lock_guard<std::mutex> lock(g_display_mutex);
+        if (--g_display_users == 0) eglTerminate(display_);
+        display_ = EGL_NO_DISPLAY;
+    }
+
+    EGLDisplay display_ = EGL_NO_DISPLAY;
+    EGLContext context_ = EGL_NO_CONTEXT;
+};
+
+} // namespace
+
+std::unique_ptr<OffscreenContext> make_egl_context(int width, int height) {
+    return std::make_unique<EglContext>(width, height);
+}
+
+} // namespace spt::render::detail

@@ -1,0 +1,51 @@
+#pragma once
+// GLSL 3.30 programs of the renderer and their uniform locations.
+#include "spt/render/gl_loader.hpp"
+
+namespace spt::render::detail {
+
+// Attribute locations shared by every program and vertex array.
+enum Attrib : GLuint {
+    kPosition = 0, // vec3 (mesh, lines) or vec2 corner (impostor quad) or vec3 circle point
+    kNormal = 1,   // vec3 mesh normal
+    kColor = 2,    // vec4 per-vertex or per-instance colour
+    kSphere = 3,   // vec4 per-instance centre (xyz) and radius (w)
+};
+
+// Lit triangles.
+struct MeshProgram {
+    GLuint id = 0;
+    GLint model_view = -1, projection = -1, normal_matrix = -1, color = -1, smooth = -1;
+};
+
+// Lines and points with per-vertex colour (or a constant generic attribute).
+struct LineProgram {
+    GLuint id = 0;
+    GLint mvp = -1, point_size = -1, round_points = -1;
+};
+
+// Ray-cast sphere impostors, one quad per instance.
+struct SphereProgram {
+    GLuint id = 0;
+    GLint model_view = -1, projection = -1, ortho = -1, override_color = -1, color = -1;
+};
+
+// Wire circles of bounding spheres, instanced.
+struct CircleProgram {
+    GLuint id = 0;
+    GLint view = -1, projection = -1, ortho = -1, alpha = -1;
+};
+
+struct Programs {
+    MeshProgram mesh;
+    LineProgram line;
+    SphereProgram sphere;
+    CircleProgram circle;
+};
+
+// Compiles and links every program; throws std::runtime_error with the compiler log.
+Programs build_programs(const GlFunctions& gl);
+// Deletes the programs made by build_programs.
+void delete_programs(const GlFunctions& gl, Programs& p);
+
+} // namespace spt::render::detail

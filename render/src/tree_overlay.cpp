@@ -1,0 +1,121 @@
+#include "spt/render/tree_overlay.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt::render {
+namespace {
+
+// Index of `id` in tree.nodes() order (increasing id), or -1.
+int64_t node_index(const std::vector<const TreeNode*>& nodes, NodeId id) {
+    auto it = std::lower_bound(nodes.begin(), nodes.end(), id, [](const TreeNode* n, NodeId v) { return n->id < v; });
+    return it != nodes.end() && (*it)->id == id ? int64_t(it - nodes.begin()) : -1;
+}
+
+// Sphere range of compact node i, and the index just past its subtree.
+struct SubtreeSpan {
+    uint32_t first, end_sphere;
+};
+SubtreeSpan span_of(const std::vector<CompactNode>& nodes, uint32_t i) {
+    const CompactNode& n = nodes[i];
+    if (n.is_active()) return {n.first, n.first + n.count};
+    const SubtreeSpan l = span_of(nodes, i + 1);
+    const SubtreeSpan r = span_of(nodes, n.first);
+    return {l.first, r.end_sphere};
+}
+
+Color hsv(float h, float s, float v) {
+    const float c = v * s;
+    const float hp = std::fmod(h, 1.0f) * 6.0f;
+    const float x = c * (1.0f - std::fabs(std::fmod(hp, 2.0f) - 1.0f));
+    float r = 0, g = 0, b = 0;
+    if (hp < 1) r = c, g = x;
+    else if (hp < 2) r = x, g = c;
+    else if (hp < 3) g = c, b = x;
+    else if (hp < 4) g = x, b = c;
+    else if (hp < 5) r = x, b = c;
+    else r = c, b = x;
+    const float m = v - c;
+    return {r + m, g + m, b + m, 1};
+}
+
+} // namespace
+
+Color level_color(int depth) {
+    // Ten distinguishable colours (Tableau 10), cycled for deep trees.
+    static const Color palette[10] = {
+        {0.306f, 0.475f, 0.655f, 1}, {0.949f, 0.557f, 0.169f, 1}, {0.882f, 0.341f, 0.349f, 1},
+        {0.463f, 0.718f, 0.698f, 1}, {0.349f, 0.631f, 0.310f, 1}, {0.929f, 0.788f, 0.282f, 1},
+        {0.690f, 0.478f, 0.631f, 1}, {1.000f, 0.616f, 0.655f, 1}, {0.612f, 0.459f, 0.373f, 1},
+        {0.729f, 0.690f, 0.675f, 1}};
+    return palette[size_t(std::max(depth, 0)) % 10];
+}
+
+Color node_color(NodeId id) {
+    // splitmix64 finaliser: neighbouring ids get unrelated hues.
+    uint64_t z = id + 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    const float hue = float(z & 0xffffff) / float(0x1000000);
+    const float sat = 0.45f + 0.35f * float((z >> 24) & 0xff) / 255.0f;
+    return hsv(hue, sat, 0.92f);
+}
+
+Color highlight_color() { return {1.0f, 0.78f, 0.05f, 1}; }
+
+std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by) {
+    const auto nodes = tree.nodes();
+    std::vector<SphereInstance> out(compact.sphere_count());
+    for (const CompactNode& c : compact.nodes()) {
+        if (!c.is_active()) continue;
+        const NodeId id = c.tree_node < nodes.size() ? nodes[c.tree_node]->id : root_id();
+        const Color color = by == ColorBy::Level ? level_color(node_depth(id)) : node_color(id);
+        for (uint32_t k = c.first; k < c.first + c.count; ++k) {
+            out[k].sphere.center = {compact.x()[k], compact.y()[k], compact.z()[k]};
+            out[k].sphere.radius = c.ss_radius;
+            out[k].color = color;
+        }
+    }
+    return out;
+}
+
+SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
+    const auto nodes = tree.nodes();
+    const int64_t index = node_index(nodes, id);
+    if (index < 0) return {};
+    const auto& cn = compact.nodes();
+    for (uint32_t i = 0; i < cn.size(); ++i)
+        if (cn[i].tree_node == uint32_t(index)) {
+            const SubtreeSpan s = span_of(cn, i);
+            return {s.first, s.end_sphere - s.first};
+        }
+    return {};
+}
+
+std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, NodeId id, int levels, const Color& color,
+                                         const Eigen::Affine3f& pose) {
+    std::vector<WireSphere> out;
+    const TreeNode* top = tree.find(id);
+    if (!top) return out;
+    const int top_depth = node_depth(id);
+    std::vector<NodeId> stack{id};
+    while (!stack.empty()) {
+        const NodeId n = stack.back();
+        stack.pop_back();
+        const TreeNode* node = tree.find(n);
+        if (!node) continue;
+        const int below = node_depth(n) - top_depth;
+        WireSphere w;
+        w.sphere.center = pose * node->center;
+        w.sphere.radius = node->bv_radius;
+        w.color = n == id ? color : level_color(node_depth(n));
+        out.push_back(w);
+        if (!node->active && below < levels) {
+            stack.push_back(right_child(n));
+            stack.push_back(left_child(n));
+        }
+    }
+    return out;
+}
+
+} // namespace spt::render

@@ -1,0 +1,112 @@
+#include "spt/compact_tree.hpp"
+#include "spt/convert.hpp"
+#include "spt/render/collision_overlay.hpp"
+#include "spt/render/tree_overlay.hpp"
+#include "test_meshes.hpp"
+#include <gtest/gtest.h>
+#include <set>
+
+using namespace spt;
+using namespace spt::render;
+
+namespace {
+
+struct TreeFixture : ::testing::Test {
+    TriangleMesh mesh = test::box_figure();
+    SptDocument doc = make_document(mesh);
+    const SamplingTree& tree = doc.trees.front();
+    CompactTree compact{tree, doc.samples};
+};
+
+// Samples below a node, from the tree itself.
+std::set<uint32_t> samples_below(const SamplingTree& tree, NodeId id) {
+    std::set<uint32_t> out;
+    const TreeNode* n = tree.find(id);
+    if (!n) return out;
+    if (n->active) return {n->samples.begin(), n->samples.end()};
+    for (NodeId c : {left_child(id), right_child(id)}) {
+        const auto s = samples_below(tree, c);
+        out.insert(s.begin(), s.end());
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_F(TreeFixture, sampling_spheres_follow_the_compact_layout_and_levels) {
+    ASSERT_GT(tree.depth(), 2);
+    const auto spheres = sampling_spheres(compact, tree, ColorBy::Level);
+    ASSERT_EQ(spheres.size(), compact.sphere_count());
+    for (const TreeNode* n : tree.active_nodes()) {
+        const SphereRange r = sphere_range(compact, tree, n->id);
+        ASSERT_EQ(r.count, n->samples.size());
+        const Color c = level_color(node_depth(n->id));
+        for (uint32_t k = r.first; k < r.first + r.count; ++k) {
+            EXPECT_EQ(spheres[k].sphere.radius, n->ss_radius);
+            EXPECT_EQ(spheres[k].color.r, c.r);
+            EXPECT_EQ(spheres[k].color.g, c.g);
+        }
+    }
+}
+
+TEST_F(TreeFixture, sphere_range_of_a_node_is_exactly_its_subtree) {
+    for (const TreeNode* n : tree.nodes()) {
+        const SphereRange r = sphere_range(compact, tree, n->id);
+        std::set<uint32_t> in_range;
+        for (uint32_t k = r.first; k < r.first + r.count; ++k) in_range.insert(compact.sample_index()[k]);
+        EXPECT_EQ(in_range, samples_below(tree, n->id)) << "node " << n->id;
+    }
+    const SphereRange root = sphere_range(compact, tree, root_id());
+    EXPECT_EQ(root.first, 0u);
+    EXPECT_EQ(root.count, compact.sphere_count());
+    EXPECT_EQ(sphere_range(compact, tree, NodeId(1) << 40).count, 0u);
+}
+
+TEST_F(TreeFixture, bounding_spheres_cover_the_requested_levels) {
+    const Color red{1, 0, 0, 1};
+    const auto one = bounding_spheres(tree, root_id(), 0, red);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_EQ(one[0].sphere.radius, tree.find(root_id())->bv_radius);
+    EXPECT_EQ(one[0].color.r, 1.0f);
+    size_t expected = 0;
+    for (const TreeNode* n : tree.nodes()) expected += node_depth(n->id) <= 2;
+    EXPECT_EQ(bounding_spheres(tree, root_id(), 2, red).size(), expected);
+    // A pose moves the centres.
+    const Eigen::Affine3f pose(Eigen::Translation3f(0, 5, 0));
+    EXPECT_NEAR(bounding_spheres(tree, root_id(), 0, red, pose)[0].sphere.center.y(),
+                tree.find(root_id())->center.y() + 5, 1e-5f);
+    EXPECT_TRUE(bounding_spheres(tree, NodeId(1) << 40, 1, red).empty());
+}
+
+TEST(overlay, node_colours_are_stable_and_distinct) {
+    EXPECT_EQ(node_color(5).r, node_color(5).r);
+    int same = 0;
+    for (NodeId id = 2; id < 64; ++id) same += node_color(id).r == node_color(id + 1).r && node_color(id).g == node_color(id + 1).g;
+    EXPECT_EQ(same, 0);
+    EXPECT_EQ(level_color(0).r, level_color(10).r);
+    EXPECT_NE(level_color(0).r, level_color(1).r);
+}
+
+TEST(overlay, sphere_pairs_by_brute_force) {
+    const std::vector<Sphere> a = {{{0, 0, 0}, 1}, {{10, 0, 0}, 1}};
+    const std::vector<Sphere> b = {{{1.5f, 0, 0}, 1}, {{0, 2, 0}, 1}, {{20, 0, 0}, 1}};
+    const auto pairs = overlapping_pairs(a, b);
+    ASSERT_EQ(pairs.size(), 1u); // {0,2,0} only touches: not a collision
+    EXPECT_FLOAT_EQ(pairs[0].depth, 0.5f);
+    EXPECT_TRUE(pairs[0].normal.isApprox(Eigen::Vector3f::UnitX()));
+    EXPECT_TRUE(pairs[0].contact.isApprox(Eigen::Vector3f(0.75f, 0, 0)));
+    const SpherePair same = make_sphere_pair({{1, 1, 1}, 1}, {{1, 1, 1}, 2});
+    EXPECT_TRUE(same.normal.isApprox(Eigen::Vector3f::UnitY()));
+    EXPECT_FLOAT_EQ(same.depth, 3.0f);
+}
+
+TEST_F(TreeFixture, world_spheres_apply_the_pose) {
+    const Eigen::Affine3f pose(Eigen::Translation3f(1, 2, 3));
+    const auto local = world_spheres(compact, Eigen::Affine3f::Identity());
+    const auto moved = world_spheres(compact, pose);
+    ASSERT_EQ(moved.size(), compact.sphere_count());
+    for (size_t i = 0; i < moved.size(); i += 17) {
+        EXPECT_TRUE(moved[i].center.isApprox(local[i].center + Eigen::Vector3f(1, 2, 3)));
+        EXPECT_EQ(moved[i].radius, local[i].radius);
+    }
+}

@@ -1,0 +1,178 @@
+// `spt render` as a user runs it: the real binary, real files, exit codes.
+#include "spt/convert.hpp"
+#include "spt/render/image.hpp"
+#include "test_meshes.hpp"
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+using spt::render::Image;
+
+namespace {
+
+struct CliRun {
+    int code = -1;
+    std::string err;
+    std::string out;
+};
+
+class RenderCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::path(SPT_BINARY_DIR) / "test-output" / "render-cli" / info->name();
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        figure = (dir / "figure.obj").string();
+        spt::test::write_obj(spt::test::box_figure(), figure);
+    }
+
+    // Runs `spt ARGS` in the test directory; captures exit code, stdout and stderr.
+    CliRun spt(const std::string& args) {
+        const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
+        const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(SPT_BINARY_DIR) + "/cli/spt' " + args +
+                                " >'" + out + "' 2>'" + err + "'";
+        const int status = std::system(cmd.c_str());
+        CliRun r;
+        r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        r.out = slurp(out);
+        r.err = slurp(err);
+        return r;
+    }
+
+    static std::string slurp(const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+
+    fs::path dir;
+    std::string figure;
+};
+
+bool has_two_colours(const Image& im) {
+    for (size_t i = 4; i < im.rgba.size(); i += 4)
+        if (im.rgba[i] != im.rgba[0] || im.rgba[i + 1] != im.rgba[1] || im.rgba[i + 2] != im.rgba[2]) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_F(RenderCli, mesh_alone_needs_only_an_output) {
+    const CliRun r = spt("render figure.obj -o out.png");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    const Image im = spt::render::read_png((dir / "out.png").string());
+    EXPECT_EQ(im.width, 512);
+    EXPECT_EQ(im.height, 512);
+    EXPECT_TRUE(has_two_colours(im));
+}
+
+TEST_F(RenderCli, same_input_gives_byte_identical_png) {
+    const std::string args = "render figure.obj --view quad --overlay spheres,bounds,grid,axes --size 200x150";
+    ASSERT_EQ(spt(args + " -o a.png").code, 0);
+    ASSERT_EQ(spt(args + " -o b.png").code, 0);
+    const std::string a = slurp(dir / "a.png"), b = slurp(dir / "b.png");
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, b);
+}
+
+TEST_F(RenderCli, help_lists_the_options) {
+    const CliRun r = spt("render --help");
+    EXPECT_EQ(r.code, 0);
+    for (const char* opt : {"--tree", "--view", "--size", "--frames", "--backend", "--overlay", "Exit codes"})
+        EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+TEST_F(RenderCli, bad_arguments_exit_1) {
+    for (const char* args :
+         {"render figure.obj", "render figure.obj --view diagonal -o x.png", "render figure.obj --size 0x10 -o x.png",
+          "render figure.obj --size 64 -o x.png", "render figure.obj --size 64xabc -o x.png",
+          "render figure.obj --frames 5:2 -o x{frame}.png", "render figure.obj --frames 1-3 -o x{frame}.png",
+          "render figure.obj --frame 1 --frames 1:2 -o x{frame}.png", "render figure.obj --frames 1:3 -o x.png",
+          "render figure.obj --overlay spheres,bogus -o x.png", "render figure.obj --overlay none,grid -o x.png",
+          "render figure.obj --backend vulkan -o x.png", "render figure.obj --overlay bounds --node 99999 -o x.png",
+          "render figure.obj --mesh-opacity 2 -o x.png"}) {
+        const CliRun r = spt(args);
+        EXPECT_EQ(r.code, 1) << args << "\n" << r.err;
+        EXPECT_FALSE(r.err.empty()) << args;
+        EXPECT_FALSE(fs::exists(dir / "x.png")) << args;
+    }
+}
+
+TEST_F(RenderCli, broken_input_exits_2_naming_the_file) {
+    std::ofstream(dir / "junk.obj") << "this is not a mesh\n";
+    std::ofstream(dir / "junk.spt") << "SPTREE and then nothing useful";
+    for (const char* input : {"junk.obj", "missing.obj", "junk.spt"}) {
+        const CliRun r = spt(std::string("render ") + input + " -o x.png");
+        EXPECT_EQ(r.code, 2) << input << "\n" << r.err;
+        EXPECT_NE(r.err.find(input), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "x.png"));
+    }
+}
+
+TEST_F(RenderCli, tree_of_another_mesh_exits_2) {
+    spt::test::write_obj(spt::test::torus(1, 0.35, 24, 12), (dir / "torus.obj").string());
+    ASSERT_EQ(spt("convert torus.obj -o torus.spt -q").code, 0);
+    const CliRun r = spt("render figure.obj --tree torus.spt --overlay spheres -o x.png");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("torus.spt"), std::string::npos) << r.err;
+}
+
+TEST_F(RenderCli, tree_file_and_spt_input) {
+    ASSERT_EQ(spt("convert figure.obj -o figure.spt -q").code, 0);
+    const CliRun with_tree = spt("render figure.obj --tree figure.spt --overlay spheres,node --node 2 -o a.png");
+    ASSERT_EQ(with_tree.code, 0) << with_tree.err;
+    // The tree from the file is the one make_document builds by default, so the image
+    // is the same as when the tree is built on the fly.
+    ASSERT_EQ(spt("render figure.obj --overlay spheres,node --node 2 -o b.png").code, 0);
+    EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png"));
+    const CliRun spt_only = spt("render figure.spt --size 128x128 -o c.png");
+    ASSERT_EQ(spt_only.code, 0) << spt_only.err;
+    EXPECT_TRUE(has_two_colours(spt::render::read_png((dir / "c.png").string())));
+    EXPECT_EQ(spt("render figure.spt --tree figure.spt -o d.png").code, 1);
+    EXPECT_EQ(spt("render figure.obj --tree figure.spt --tree-name nope --overlay spheres -o d.png").code, 1);
+}
+
+TEST_F(RenderCli, spt_without_trees_exits_2) {
+    // From the file as written (OBJ text rounds the coordinates), so the hash matches.
+    spt::SptDocument doc = spt::make_document(spt::import_mesh(figure).mesh);
+    doc.trees.clear();
+    spt::save_spt(doc, (dir / "empty.spt").string());
+    for (const char* args : {"render empty.spt -o x.png", "render figure.obj --tree empty.spt -o x.png"}) {
+        const CliRun r = spt(args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find("empty.spt: holds no sampling tree"), std::string::npos) << r.err;
+    }
+}
+
+TEST_F(RenderCli, unwritable_output_exits_3) {
+    const CliRun r = spt("render figure.obj -o no/such/dir/out.png");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("no/such/dir/out.png"), std::string::npos) << r.err;
+}
+
+TEST_F(RenderCli, frames_number_the_outputs) {
+    const CliRun r = spt("render figure.obj --size 64x64 --frames 2:4 -o 'f{frame}.png'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f : {2, 3, 4}) EXPECT_TRUE(fs::exists(dir / ("f" + std::to_string(f) + ".png"))) << f;
+    EXPECT_FALSE(fs::exists(dir / "f1.png"));
+    EXPECT_FALSE(fs::exists(dir / "f5.png"));
+    // A static mesh looks the same in every frame.
+    EXPECT_EQ(slurp(dir / "f2.png"), slurp(dir / "f4.png"));
+    ASSERT_EQ(spt("render figure.obj --size 64x64 --frame 7 -o 'g{frame}.png'").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "g7.png"));
+}
+
+TEST_F(RenderCli, egl_backend_writes_the_same_bytes) {
+    ASSERT_EQ(spt("render figure.obj --size 96x96 --overlay spheres,grid -o o.png").code, 0);
+    const CliRun r = spt("render figure.obj --size 96x96 --overlay spheres,grid --backend egl -o e.png");
+    if (r.code == 1 && r.err.find("egl") != std::string::npos) GTEST_SKIP() << "EGL unavailable: " << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(slurp(dir / "o.png"), slurp(dir / "e.png"));
+}
