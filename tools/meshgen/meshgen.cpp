@@ -118,18 +118,28 @@ RawMesh cylinder(double r, double h, int seg) {
     return m;
 }
 
+namespace {
+
+// z-up construction to y-up (the convention of OBJ, glTF and the renderer): (x, y, z) -> (x, z, -y).
+RawMesh y_up(RawMesh m) {
+    for (auto& p : m.positions) p = Eigen::Vector3d(p.x(), p.z(), -p.y());
+    return m;
+}
+
+} // namespace
+
 RawMesh figure() {
-    // Parts stacked so they touch rather than overlap much; each is a closed shell.
+    // Built z-up, parts stacked so they touch rather than overlap much; each a closed shell.
     RawMesh m;
-    m.append(box(0.12, 0.26, 0.06, 3), {-0.11, 0.04, 0.03});   // left foot (toes towards +y)
-    m.append(box(0.12, 0.26, 0.06, 3), {0.11, 0.04, 0.03});    // right foot
+    m.append(box(0.12, 0.26, 0.06, 3), {-0.11, -0.04, 0.03});  // left foot (toes towards +z once y-up)
+    m.append(box(0.12, 0.26, 0.06, 3), {0.11, -0.04, 0.03});   // right foot
     m.append(cylinder(0.055, 0.80, 16), {-0.11, 0, 0.06});     // left leg
     m.append(cylinder(0.055, 0.80, 16), {0.11, 0, 0.06});      // right leg
     m.append(box(0.42, 0.22, 0.62, 4), {0, 0, 1.17});          // body
     m.append(cylinder(0.045, 0.60, 12), {-0.26, 0, 0.86});     // left arm
     m.append(cylinder(0.045, 0.60, 12), {0.26, 0, 0.86});      // right arm
     m.append(icosphere(0.13, 3), {0, 0, 1.61});                 // head
-    return m;
+    return y_up(std::move(m));
 }
 
 RawMesh cad_part() {
@@ -138,7 +148,7 @@ RawMesh cad_part() {
     m.append(cylinder(0.22, 0.45, 48), {-0.55, 0, 0.2});       // bosses
     m.append(cylinder(0.22, 0.45, 48), {0.55, 0, 0.2});
     m.append(box(0.7, 0.12, 0.3, 1), {0, 0, 0.35});            // rib between them
-    return m;
+    return y_up(std::move(m));
 }
 
 void write_obj(const RawMesh& m, const std::string& path) {

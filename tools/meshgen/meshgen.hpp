@@ -22,9 +22,9 @@ RawMesh box(double sx, double sy, double sz, int n = 1);
 RawMesh icosphere(double r, int level);
 /// Cylinder along +z from z=0 to z=h, radius r, `seg` sides, flat caps (sharp edges).
 RawMesh cylinder(double r, double h, int seg);
-/// A standing figure built from primitives (body, head, arms, legs, feet); height ~1.8, feet at z=0.
+/// A standing figure built from primitives (body, head, arms, legs, feet); y-up, height ~1.74, feet at y=0.
 RawMesh figure();
-/// A CAD-like part: a plate with two bosses and a rib; large flat faces and sharp edges.
+/// A CAD-like part, y-up: a plate with two bosses and a rib; large flat faces and sharp edges.
 RawMesh cad_part();
 
 /// Writes Wavefront OBJ (text, 1-based indices, %.9g coordinates).
