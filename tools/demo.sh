@@ -14,3 +14,8 @@ echo "== the same CAD part with tolerance-driven sampling (no gap deeper than 0.
 echo
 echo "== spt info $out/figure.spt"
 "$spt" info "$out/figure.spt"
+echo
+echo "== spt render: the figure in the four views, sampling spheres by node -> $out/figure.png"
+"$spt" render resources/meshes/figure.obj --tree "$out/figure.spt" --view quad \
+  --overlay spheres,bounds,grid,axes --node 2 --color-by node -o "$out/figure.png"
+echo "wrote $out/figure.png"
