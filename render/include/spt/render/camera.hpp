@@ -18,8 +18,8 @@ const char* view_name(View view);
 
 /// Axis-aligned box in world units; empty when min > max.
 struct Bounds {
-    Eigen::Vector3f min = Eigen::Vector3f::Constant(1e30f);
-    Eigen::Vector3f max = Eigen::Vector3f::Constant(-1e30f);
+    Eigen::Vector3f min = Eigen::Vector3f::Constant(1e30f);  ///< lowest corner, world units
+    Eigen::Vector3f max = Eigen::Vector3f::Constant(-1e30f); ///< highest corner, world units
     /// True if nothing has been added.
     bool empty() const { return (min.array() > max.array()).any(); }
     /// Grows the box to hold p.
