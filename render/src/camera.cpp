@@ -95,6 +95,13 @@ Eigen::Matrix4f Camera::projection_matrix(float aspect) const {
     return p;
 }
 
+Eigen::Vector3f Camera::project(const Eigen::Vector3f& p, int width, int height) const {
+    const float w = float(std::max(width, 1)), h = float(std::max(height, 1));
+    const Eigen::Vector4f clip = projection_matrix(w / h) * view_matrix() * p.homogeneous();
+    const Eigen::Vector3f ndc = clip.head<3>() / clip.w();
+    return {(ndc.x() + 1.0f) * 0.5f * w, (ndc.y() + 1.0f) * 0.5f * h, (ndc.z() + 1.0f) * 0.5f};
+}
+
 Camera fit_camera(View view, const Bounds& bounds) {
     Camera c;
     c.view = view;

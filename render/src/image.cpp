@@ -9,6 +9,7 @@
 #include <iterator>
 #include <png.h>
 #include <sstream>
+#include <unistd.h>
 
 namespace spt::render {
 namespace {
@@ -128,13 +129,18 @@ Image decode_png(const std::vector<uint8_t>& bytes, const std::string& name) {
 
 void write_png(const Image& image, const std::string& path) {
     const std::vector<uint8_t> bytes = encode_png(image);
-    std::FILE* f = std::fopen(path.c_str(), "wb");
+    // Written beside the target and renamed over it, so a reader (a golden test
+    // running while baselines are updated, a viewer) never sees half a file.
+    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+    std::FILE* f = std::fopen(tmp.c_str(), "wb");
     if (!f) throw Error(ErrorKind::CannotWrite, path + ": cannot write: " + std::strerror(errno));
-    const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    const int saved = errno;
-    if (std::fclose(f) != 0 || !ok) {
-        std::remove(path.c_str());
-        throw Error(ErrorKind::CannotWrite, path + ": cannot write: " + std::strerror(ok ? errno : saved));
+    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    int saved = errno;
+    if (std::fclose(f) != 0 && ok) ok = false, saved = errno;
+    if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) ok = false, saved = errno;
+    if (!ok) {
+        std::remove(tmp.c_str());
+        throw Error(ErrorKind::CannotWrite, path + ": cannot write: " + std::strerror(saved));
     }
 }
 

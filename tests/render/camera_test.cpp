@@ -82,3 +82,20 @@ TEST(camera, quad_viewports_tile_with_one_pixel_gaps) {
         EXPECT_EQ(v[3].y, 0);
     }
 }
+
+TEST(camera, project_gives_window_pixels) {
+    const Bounds b = box();
+    for (View v : {View::Top, View::Front, View::Side, View::Camera}) {
+        const Camera c = fit_camera(v, b);
+        const Eigen::Vector3f centre = c.project(c.target, 200, 100);
+        EXPECT_NEAR(centre.x(), 100.0f, 1e-3f) << view_name(v);
+        EXPECT_NEAR(centre.y(), 50.0f, 1e-3f) << view_name(v);
+        EXPECT_GT(centre.z(), 0.0f);
+        EXPECT_LT(centre.z(), 1.0f);
+        // Screen up is up in window pixels; a point nearer the eye has a smaller depth.
+        const Eigen::Vector3f up = c.project(c.target + 0.1f * c.up(), 200, 100);
+        EXPECT_GT(up.y(), centre.y()) << view_name(v);
+        EXPECT_NEAR(up.x(), centre.x(), 1e-3f) << view_name(v);
+        EXPECT_LT(c.project(c.target + 0.1f * c.back(), 200, 100).z(), centre.z()) << view_name(v);
+    }
+}

@@ -31,10 +31,11 @@ protected:
         spt::test::write_obj(spt::test::box_figure(), figure);
     }
 
-    // Runs `spt ARGS` in the test directory; captures exit code, stdout and stderr.
-    CliRun spt(const std::string& args) {
+    // Runs `spt ARGS` in the test directory with environment assignments `env`;
+    // captures exit code, stdout and stderr.
+    CliRun spt(const std::string& args, const std::string& env = "") {
         const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
-        const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(SPT_BINARY_DIR) + "/cli/spt' " + args +
+        const std::string cmd = "cd '" + dir.string() + "' && " + env + " '" + std::string(SPT_BINARY_DIR) + "/cli/spt' " + args +
                                 " >'" + out + "' 2>'" + err + "'";
         const int status = std::system(cmd.c_str());
         CliRun r;
@@ -80,6 +81,16 @@ TEST_F(RenderCli, same_input_gives_byte_identical_png) {
     const std::string a = slurp(dir / "a.png"), b = slurp(dir / "b.png");
     EXPECT_FALSE(a.empty());
     EXPECT_EQ(a, b);
+}
+
+TEST_F(RenderCli, thread_count_and_driver_choice_do_not_change_the_bytes) {
+    const std::string args = "render figure.obj --view quad --overlay spheres,node --node 3 --size 160x120";
+    ASSERT_EQ(spt(args + " -o a.png").code, 0);
+    ASSERT_EQ(spt(args + " -o b.png", "LP_NUM_THREADS=1").code, 0);
+    // The off-screen backends pin llvmpipe whatever the environment asks for.
+    ASSERT_EQ(spt(args + " -o c.png", "LP_NUM_THREADS=3 GALLIUM_DRIVER=softpipe").code, 0);
+    EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png"));
+    EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "c.png"));
 }
 
 TEST_F(RenderCli, help_lists_the_options) {

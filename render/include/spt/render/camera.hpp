@@ -18,8 +18,8 @@ const char* view_name(View view);
 
 /// Axis-aligned box in world units; empty when min > max.
 struct Bounds {
-    Eigen::Vector3f min = Eigen::Vector3f::Constant(1e30f);
-    Eigen::Vector3f max = Eigen::Vector3f::Constant(-1e30f);
+    Eigen::Vector3f min = Eigen::Vector3f::Constant(1e30f);  ///< lowest corner, world units
+    Eigen::Vector3f max = Eigen::Vector3f::Constant(-1e30f); ///< highest corner, world units
     /// True if nothing has been added.
     bool empty() const { return (min.array() > max.array()).any(); }
     /// Grows the box to hold p.
@@ -57,6 +57,10 @@ struct Camera {
     /// Eye-to-clip transform for a viewport of width/height `aspect`; the sphere
     /// (target, radius) fits the shorter side and lies inside the depth range.
     Eigen::Matrix4f projection_matrix(float aspect) const;
+    /// Where world point p lands in a width x height view: x, y in pixels from the
+    /// lower-left corner (GL window coordinates), z the depth in [0, 1]. For
+    /// selecting vertices inside a dragged rectangle.
+    Eigen::Vector3f project(const Eigen::Vector3f& p, int width, int height) const;
 };
 
 /// A camera of `view` that frames `bounds` (the box's bounding sphere, with a margin).

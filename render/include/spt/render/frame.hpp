@@ -17,8 +17,8 @@ struct Color {
 
 /// A sphere in some frame (world unless stated), model units.
 struct Sphere {
-    Eigen::Vector3f center = Eigen::Vector3f::Zero();
-    float radius = 0;
+    Eigen::Vector3f center = Eigen::Vector3f::Zero(); ///< model units
+    float radius = 0; ///< model units
 };
 
 /// One instance of a solid sphere set: a sphere and its colour.

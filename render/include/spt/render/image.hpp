@@ -26,7 +26,8 @@ std::vector<uint8_t> encode_png(const Image& image);
 /// Decodes PNG bytes of any colour type and bit depth to RGBA8; throws
 /// Error(BadInput) "name: problem" on anything that is not a readable PNG.
 Image decode_png(const std::vector<uint8_t>& bytes, const std::string& name = "");
-/// Writes encode_png(image) to `path`; throws Error(CannotWrite) naming the path.
+/// Writes encode_png(image) to `path` atomically (temporary file, then rename);
+/// throws Error(CannotWrite) naming the path.
 void write_png(const Image& image, const std::string& path);
 /// Reads a PNG file; throws Error(BadInput) naming the file.
 Image read_png(const std::string& path);
