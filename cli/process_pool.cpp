@@ -14,6 +14,20 @@
 namespace spt::cli {
 namespace {
 
+// AddressSanitizer reserves terabytes of address space for its shadow memory; an
+// address-space limit would make every worker fail at start.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressLimitWorks = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressLimitWorks = false;
+#else
+constexpr bool kAddressLimitWorks = true;
+#endif
+#else
+constexpr bool kAddressLimitWorks = true;
+#endif
+
 struct Child {
     size_t job;
     pid_t pid;
@@ -56,7 +70,7 @@ void run_in_processes(size_t n, int jobs, double timeout_s, size_t memory_limit_
                 ::close(fds[0]);
                 ::dup2(fds[1], 2);
                 ::close(fds[1]);
-                if (memory_limit_bytes) {
+                if (memory_limit_bytes && kAddressLimitWorks) {
                     rlimit lim{memory_limit_bytes, memory_limit_bytes};
                     ::setrlimit(RLIMIT_AS, &lim);
                 }
