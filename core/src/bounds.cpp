@@ -24,7 +24,7 @@ double enclosing_radius(const Eigen::Vector3d& centre, const Eigen::Vector3f* c,
 } // namespace
 
 void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const Eigen::Vector3f* p, size_t n,
-               const Ball& hint, BoundsMethod method) {
+               const Ball& hint, BoundsMethod method, const Eigen::AlignedBox3f* centre_box) {
     if (n == 0) {
         node.center.setZero();
         node.bv_radius = 0;
@@ -46,9 +46,10 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
         volatile float fx = float(x.x()), fy = float(x.y()), fz = float(x.z());
         candidates.emplace_back(double(fx), double(fy), double(fz));
     };
-    Eigen::Vector3f lo = c[0], hi = c[0];
-    for (size_t i = 1; i < n; ++i) lo = lo.cwiseMin(c[i]), hi = hi.cwiseMax(c[i]);
-    add(((lo + hi) / 2).cast<double>());
+    Eigen::AlignedBox3f box;
+    if (centre_box) box = *centre_box;
+    else for (size_t i = 0; i < n; ++i) box.extend(c[i]);
+    add(box.center().cast<double>());
     if (hint.radius >= 0) add(hint.center);
     const bool equal_radii = std::all_of(r, r + n, [&](float x) { return x == r[0]; });
     if (n <= 32 && equal_radii) {
@@ -60,10 +61,9 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
     double rad = INFINITY;
     for (const auto& cand : candidates) {
         const double cr = enclosing_radius(cand, c, r, n, equal_radii);
+        // Candidates hold float values, so the radius measured is the stored centre's.
         if (cr < rad) rad = cr, node.center = Eigen::Vector3f(float(cand.x()), float(cand.y()), float(cand.z()));
     }
-    // Measure once more from the stored centre: the bound must hold for what is stored.
-    rad = enclosing_radius(Eigen::Vector3d(node.center.x(), node.center.y(), node.center.z()), c, r, n, equal_radii);
     node.bv_radius = std::nextafter(float(rad * (1 + 1e-6)), INFINITY);
 }
 

@@ -94,23 +94,33 @@ void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method)
     std::vector<Eigen::Vector3f> c, p;
     std::vector<float> r;
     c.reserve(samples.size()), p.reserve(samples.size()), r.reserve(samples.size());
-    std::function<detail::Ball(TreeNode&)> visit = [&](TreeNode& n) -> detail::Ball {
+    struct Result {
+        detail::Ball ball;
+        Eigen::AlignedBox3f box; // of the sphere centres below
+    };
+    std::function<Result(TreeNode&)> visit = [&](TreeNode& n) -> Result {
         const size_t begin = c.size();
+        Result out;
         detail::Ball hint;
         if (n.active) {
             for (uint32_t s : n.samples) {
                 p.push_back(samples.points[s]);
                 c.push_back(sphere_center(samples.points[s], samples.normals[s], n.ss_radius));
                 r.push_back(n.ss_radius);
+                out.box.extend(c.back());
             }
         } else {
-            TreeNode* l = find_mutable(left_child(n.id));
-            TreeNode* rt = find_mutable(right_child(n.id));
-            if (l) hint = detail::merge_balls(hint, visit(*l));
-            if (rt) hint = detail::merge_balls(hint, visit(*rt));
+            for (NodeId child : {left_child(n.id), right_child(n.id)})
+                if (TreeNode* ch = find_mutable(child)) {
+                    const Result sub = visit(*ch);
+                    hint = detail::merge_balls(hint, sub.ball);
+                    out.box.extend(sub.box);
+                }
         }
-        detail::bound_run(n, c.data() + begin, r.data() + begin, p.data() + begin, c.size() - begin, hint, method);
-        return {n.center.cast<double>(), double(n.bv_radius)};
+        detail::bound_run(n, c.data() + begin, r.data() + begin, p.data() + begin, c.size() - begin, hint, method,
+                          &out.box);
+        out.ball = {n.center.cast<double>(), double(n.bv_radius)};
+        return out;
     };
     if (TreeNode* root = find_mutable(root_id())) visit(*root);
 }
