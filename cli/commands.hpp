@@ -12,5 +12,7 @@ using Action = std::function<int()>;
 Action add_convert_command(CLI::App& app);
 /// `spt info`: what a .spt file holds, and whether it is valid.
 Action add_info_command(CLI::App& app);
+/// `spt query`: collision queries of B against A at poses from a file, CSV out.
+Action add_query_command(CLI::App& app);
 
 } // namespace spt::cli
