@@ -102,8 +102,9 @@ static std::pair<const uint32_t*, const uint32_t*> triangles_of(const ExactData&
 
 bool QueryRun::exact_leaf_pair(uint32_t i, uint32_t j, uint32_t sphere_hits) {
     const ExactData &ea = A.exact(), &eb = B.exact();
-    // Likely contacts first: triangles around overlapping sampling spheres.
-    for (uint32_t h = 0; h < sphere_hits; ++h) {
+    // Likely contacts first: triangles around the first overlapping sampling spheres
+    // (a couple only: with many overlaps the complete pass below is cheaper).
+    for (uint32_t h = 0; h < std::min(sphere_hits, 2u); ++h) {
         const uint32_t src_a = ea.sphere_source[s.hits_[h].first], src_b = eb.sphere_source[s.hits_[h].second];
         const uint32_t fa = src_a & ~kFaceSampleBit, fb = src_b & ~kFaceSampleBit;
         const auto [a0, a1] = triangles_of(ea, src_a, fa);
