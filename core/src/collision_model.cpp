@@ -103,24 +103,29 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     }
 
     // Reach: children follow their parent in depth-first order, so go backwards.
+    // Two radii: triangles only (what a collide decision needs), and triangles and
+    // spheres (what the deepest sphere pair needs as well).
     e.node_reach.assign(nn, 0);
+    e.node_tri_reach.assign(nn, 0);
+    std::vector<uint8_t> has_tris(nn, 0);
     for (size_t i = nn; i-- > 0;) {
         const CompactNode& n = nodes[i];
         const Eigen::Vector3d c(n.center[0], n.center[1], n.center[2]);
-        double r = n.bv_radius;
-        auto grow_by = [&](const Eigen::Vector3d& x, double rx) { r = std::max(r, (x - c).norm() + rx); };
+        double r = n.bv_radius, rt = 0;
         if (n.is_active()) {
-            for (uint32_t k = e.node_tri_begin[i]; k < e.node_tri_begin[i + 1]; ++k) {
-                const auto& t = e.triangles[e.node_tris[k]];
-                for (uint32_t v : t) grow_by(e.positions[v], 0);
-            }
+            for (uint32_t k = e.node_tri_begin[i]; k < e.node_tri_begin[i + 1]; ++k)
+                for (uint32_t v : e.triangles[e.node_tris[k]]) rt = std::max(rt, (e.positions[v] - c).norm());
+            has_tris[i] = e.node_tri_begin[i + 1] > e.node_tri_begin[i];
         } else {
             for (uint32_t child : {uint32_t(i + 1), n.first}) {
                 const CompactNode& m = nodes[child];
-                grow_by(Eigen::Vector3d(m.center[0], m.center[1], m.center[2]), e.node_reach[child]);
+                const double d = (Eigen::Vector3d(m.center[0], m.center[1], m.center[2]) - c).norm();
+                r = std::max(r, d + e.node_reach[child]);
+                if (has_tris[child]) rt = std::max(rt, d + e.node_tri_reach[child]), has_tris[i] = 1;
             }
         }
-        e.node_reach[i] = round_up(r);
+        e.node_tri_reach[i] = has_tris[i] ? round_up(rt) : -1.0f; // negative: nothing to test below
+        e.node_reach[i] = round_up(std::max(r, rt));
     }
 }
 
@@ -159,7 +164,7 @@ size_t CollisionModel::memory_bytes() const {
            e.triangles.capacity() * sizeof(Triangle) +
            (e.node_tri_begin.capacity() + e.node_tris.capacity() + e.vertex_tri_begin.capacity() +
             e.vertex_tris.capacity() + e.sphere_source.capacity()) * sizeof(uint32_t) +
-           (e.node_reach.capacity() + e.tri_sphere.capacity()) * sizeof(float);
+           (e.node_reach.capacity() + e.node_tri_reach.capacity() + e.tri_sphere.capacity()) * sizeof(float);
 }
 
 } // namespace spt

@@ -212,8 +212,17 @@ void QueryRun::run() {
     const auto &an = A.tree().nodes(), &bn = B.tree().nodes();
     if (an.empty() || bn.empty()) return;
     const bool bounds = o.level == QueryLevel::Bounds;
-    const float* reach_a = exact ? A.exact().node_reach.data() : bounds ? A.bounds_reach().data() : nullptr;
-    const float* reach_b = exact ? B.exact().node_reach.data() : bounds ? B.bounds_reach().data() : nullptr;
+    // Exact any/all decide on triangles alone: prune with the triangles' reach, which
+    // is much tighter than the spheres' when the spheres are large.
+    const bool tris_only = exact && o.mode != QueryMode::Deepest;
+    const float* reach_a = tris_only ? A.exact().node_tri_reach.data()
+                           : exact   ? A.exact().node_reach.data()
+                           : bounds  ? A.bounds_reach().data()
+                                     : nullptr;
+    const float* reach_b = tris_only ? B.exact().node_tri_reach.data()
+                           : exact   ? B.exact().node_reach.data()
+                           : bounds  ? B.bounds_reach().data()
+                                     : nullptr;
     s.hits_.resize(s.hits_.capacity());
     auto& stack = s.stack_;
     stack.clear();
@@ -226,6 +235,7 @@ void QueryRun::run() {
         const Eigen::Vector3f ca(na.center[0], na.center[1], na.center[2]);
         const Eigen::Vector3f cb = f.R * Eigen::Vector3f(nb.center[0], nb.center[1], nb.center[2]) + f.t;
         const float ra = reach_a ? reach_a[i] : na.bv_radius, rb = reach_b ? reach_b[j] : nb.bv_radius;
+        if (tris_only && (ra < 0 || rb < 0)) continue; // no triangle below one side
         const float sum = ra + rb + o.inflate;
         const float d2 = (ca - cb).squaredNorm();
         ++res.counters.bound_tests;

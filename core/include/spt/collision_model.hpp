@@ -20,6 +20,7 @@ struct ExactData {
     std::vector<uint32_t> node_tri_begin;     ///< CSR over compact nodes: owned triangles of node i
     std::vector<uint32_t> node_tris;          ///< triangle indices, grouped by node
     std::vector<float> node_reach;            ///< radius around each node centre holding its spheres and triangles
+    std::vector<float> node_tri_reach;        ///< radius around each node centre holding its triangles only; -1 if it owns none
     std::vector<float> tri_sphere;            ///< per triangle: centre xyz and radius of a bounding sphere
     std::vector<uint32_t> vertex_tri_begin;   ///< CSR: triangles incident to each vertex
     std::vector<uint32_t> vertex_tris;
