@@ -14,5 +14,7 @@ Action add_convert_command(CLI::App& app);
 Action add_info_command(CLI::App& app);
 /// `spt render`: off-screen renders of a mesh and its sampling tree to PNG.
 Action add_render_command(CLI::App& app);
+/// `spt query`: collision queries of B against A at poses from a file, CSV out.
+Action add_query_command(CLI::App& app);
 
 } // namespace spt::cli

@@ -1,0 +1,35 @@
+#pragma once
+// The measured peers, behind one small interface: FCL (OBBRSS, boolean) and
+// Bullet (btGImpactMeshShape). B's pose is given in A's frame; A at the identity.
+#include "spt/mesh.hpp"
+#include "spt/pose.hpp"
+#include <memory>
+
+namespace bench {
+
+/// FCL 0.7 mesh-mesh boolean query on OBBRSS trees of the same mesh for A and B.
+class FclPeer {
+public:
+    explicit FclPeer(const spt::TriangleMesh& mesh);
+    ~FclPeer();
+    /// True if the triangle surfaces intersect.
+    bool collide(const spt::Pose& b_in_a) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// Bullet GImpact mesh-mesh contact test (margin 0): collide if any contact has distance <= 0.
+class BulletPeer {
+public:
+    explicit BulletPeer(const spt::TriangleMesh& mesh);
+    ~BulletPeer();
+    bool collide(const spt::Pose& b_in_a) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace bench

@@ -1,0 +1,43 @@
+#include "pose_file.hpp"
+#include "spt/error.hpp"
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace spt::cli {
+
+std::vector<PoseLine> read_pose_file(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw_bad_input(path, "cannot open the pose file");
+    std::vector<PoseLine> out;
+    std::string text;
+    for (size_t line = 1; std::getline(in, text); ++line) {
+        const size_t first = text.find_first_not_of(" \t\r");
+        if (first == std::string::npos || text[first] == '#') continue;
+        std::istringstream s(text);
+        std::vector<double> v;
+        std::string tok;
+        auto fail = [&](const std::string& why) {
+            throw Error(ErrorKind::BadInput, path + ":" + std::to_string(line) + ": " + why);
+        };
+        while (s >> tok) {
+            char* end = nullptr;
+            const double x = std::strtod(tok.c_str(), &end);
+            if (end == tok.c_str() || *end != '\0') fail("'" + tok + "' is not a number");
+            if (!std::isfinite(x)) fail("'" + tok + "' is not finite");
+            v.push_back(x);
+        }
+        if (v.size() != 7 && v.size() != 10)
+            fail("expected 7 or 10 numbers (tx ty tz qw qx qy qz [dx dy dz]), found " + std::to_string(v.size()));
+        const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
+        if (!(q.norm() > 1e-12)) fail("the quaternion (qw qx qy qz) has zero length");
+        PoseLine pl;
+        pl.pose = Pose::from(Eigen::Vector3d(v[0], v[1], v[2]), q);
+        if (v.size() == 10) pl.direction = Eigen::Vector3d(v[7], v[8], v[9]);
+        pl.line = line;
+        out.push_back(pl);
+    }
+    return out;
+}
+
+} // namespace spt::cli

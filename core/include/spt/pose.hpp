@@ -1,0 +1,50 @@
+#pragma once
+/// Rigid poses in double precision. A pose maps an object's frame to the world:
+/// x_world = rotation * x_object + translation. Queries run in one object's frame,
+/// so the other object's pose is taken relative to it in double before any float.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace spt {
+
+/// Rotation and translation of an object, object frame to world frame (model units).
+struct Pose {
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity(); ///< unit quaternion
+    Eigen::Vector3d translation = Eigen::Vector3d::Zero();        ///< model units
+
+    /// The identity pose.
+    static Pose identity() { return {}; }
+    /// Pose from a translation and a rotation (the quaternion is normalised).
+    static Pose from(const Eigen::Vector3d& t, const Eigen::Quaterniond& q) { return {q.normalized(), t}; }
+    /// Maps a point of the object frame to the world frame.
+    Eigen::Vector3d apply(const Eigen::Vector3d& p) const { return rotation * p + translation; }
+    /// Maps a direction of the object frame to the world frame.
+    Eigen::Vector3d rotate(const Eigen::Vector3d& v) const { return rotation * v; }
+    /// The inverse pose: world frame to object frame.
+    Pose inverse() const {
+        const Eigen::Quaterniond qi = rotation.conjugate();
+        return {qi, -(qi * translation)};
+    }
+    /// Composition: (this * other).apply(p) == this->apply(other.apply(p)).
+    Pose operator*(const Pose& o) const { return {(rotation * o.rotation).normalized(), rotation * o.translation + translation}; }
+};
+
+/// Pose of B expressed in A's frame: inverse(a) * b, computed in double.
+inline Pose relative_pose(const Pose& a, const Pose& b) {
+    // Subtract translations first so that two far-away poses keep their small difference exactly.
+    const Eigen::Quaterniond qi = a.rotation.conjugate();
+    return {(qi * b.rotation).normalized(), qi * (b.translation - a.translation)};
+}
+
+/// Pose at t in [0, 1] on the motion from p0 to p1: translation linear, rotation slerp.
+inline Pose interpolate(const Pose& p0, const Pose& p1, double t) {
+    return {p0.rotation.slerp(t, p1.rotation).normalized(), p0.translation + t * (p1.translation - p0.translation)};
+}
+
+/// Angle (radians) swept by the rotation from p0 to p1 along the shortest arc.
+inline double rotation_angle(const Pose& p0, const Pose& p1) {
+    const double c = std::abs(p0.rotation.dot(p1.rotation));
+    return 2.0 * std::acos(std::min(1.0, c));
+}
+
+} // namespace spt

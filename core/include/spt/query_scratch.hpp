@@ -1,0 +1,58 @@
+#pragma once
+/// Per-query working memory. The caller owns one per thread and reuses it: a
+/// query grows it only when it meets a larger model, so repeated queries
+/// allocate nothing.
+#include <Eigen/Core>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace spt {
+
+class CollisionModel;
+struct Pose;
+struct QueryOptions;
+struct QueryResult;
+
+/// A colliding pair found by a query in mode `all`.
+struct SpherePair {
+    uint32_t a = 0, b = 0; ///< sphere indices (node indices at level `bounds`) in each CompactTree
+    float depth = 0;       ///< reach - |c1 - c2|, model units
+    float reach = 0;       ///< r1 + r2 (+ inflate), model units
+};
+
+/// An intersecting triangle pair found at level `exact` in mode `all`.
+struct TrianglePair {
+    uint32_t a = 0, b = 0; ///< triangle indices in each mesh
+};
+
+/// Scratch buffers of one query at a time.
+class QueryScratch {
+public:
+    /// Sphere (or leaf) pairs of the last query in mode `all`.
+    const std::vector<SpherePair>& pairs() const { return pairs_; }
+    /// Triangle pairs of the last `exact` query in mode `all`.
+    const std::vector<TrianglePair>& triangle_pairs() const { return tri_pairs_; }
+
+private:
+    friend struct QueryRun;
+    friend void prepare_scratch(QueryScratch&, const CollisionModel&, const CollisionModel&, bool);
+    friend QueryResult collide_brute_force(const CollisionModel&, const CollisionModel&, const Pose&,
+                                           const QueryOptions&, QueryScratch&);
+    std::vector<std::pair<uint32_t, uint32_t>> stack_;
+    std::vector<float> bx_, by_, bz_;          // B's spheres in A's frame (lazy, by node)
+    std::vector<uint32_t> node_stamp_;         // epoch at which B's node block was moved
+    std::vector<Eigen::Vector3d> bverts_;      // B's vertices in A's frame (lazy)
+    std::vector<uint32_t> vert_stamp_;
+    std::vector<float> btri_;                  // B's triangle bounding spheres in A's frame (lazy)
+    std::vector<uint32_t> tri_stamp_;
+    std::vector<float> d2_;                    // distance matrix of one leaf pair
+    std::vector<float> ga_, gb_;               // culled spheres gathered (x, y, z blocks)
+    std::vector<uint32_t> ia_, ib_;            // their sphere indices
+    std::vector<SpherePair> pairs_;
+    std::vector<TrianglePair> tri_pairs_;
+    std::vector<std::pair<uint32_t, uint32_t>> hits_; // sphere hits of one leaf pair
+    uint32_t epoch_ = 0;
+};
+
+} // namespace spt

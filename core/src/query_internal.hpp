@@ -1,0 +1,50 @@
+#pragma once
+// Pieces of the query shared by query.cpp, the brute-force reference, response and CCD.
+#include "spt/query.hpp"
+
+namespace spt {
+
+// B's pose in A's frame, in double and float, and the rounding margin.
+struct QueryFrame {
+    QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a);
+    Eigen::Matrix3d Rd;
+    Eigen::Vector3d td;
+    Eigen::Matrix3f R;
+    Eigen::Vector3f t;
+    float margin = 0;
+};
+
+// Grows the scratch for this pair of models and starts a new epoch of lazy stamps.
+void prepare_scratch(QueryScratch& s, const CollisionModel& a, const CollisionModel& b, bool exact);
+
+// One query in progress.
+struct QueryRun {
+    QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const QueryOptions& options,
+             QueryScratch& scratch);
+    void run();
+    void move_block(uint32_t node_b);
+    const Eigen::Vector3d& b_vertex(uint32_t v);
+    const float* b_tri_sphere(uint32_t tri);
+    bool triangle_pair(uint32_t ta, uint32_t tb);
+    bool exact_leaf_pair(uint32_t i, uint32_t j, uint32_t sphere_hits);
+    void exact_leaf_pair_all(uint32_t i, uint32_t j);
+    uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb,
+                              bool collect_hits);
+    void record(uint32_t a, uint32_t b, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float reach, float ra,
+                float d2);
+
+    const CollisionModel& A;
+    const CollisionModel& B;
+    const QueryOptions& o;
+    QueryScratch& s;
+    QueryFrame f;
+    bool exact;
+    bool have_best = false;
+    bool tri_hit = false;
+    QueryResult res;
+};
+
+// Radius of each sphere of a tree (the radius of the node holding it).
+void sphere_radii(const CompactTree& t, std::vector<float>& out);
+
+} // namespace spt

@@ -1,0 +1,100 @@
+// Backtrack along the motion (paper §3-4-3, made exact for the sphere model).
+#include "spt/response.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt {
+namespace {
+
+Eigen::Vector3d node_centre(const CompactTree& t, uint32_t i) {
+    const CompactNode& n = t.nodes()[i];
+    return {n.center[0], n.center[1], n.center[2]};
+}
+Eigen::Vector3d sphere_centre(const CompactTree& t, uint32_t k) { return {t.x()[k], t.y()[k], t.z()[k]}; }
+
+BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                             const Eigen::Vector3d& back, const QueryOptions& options, QueryScratch& scratch) {
+    BacktrackResult r;
+    QueryOptions q = options;
+    q.mode = QueryMode::Any;
+    auto collides = [&](double s) {
+        Pose p = b_in_a;
+        p.translation += s * back;
+        ++r.queries;
+        return collide_relative(a, b, p, q, scratch).collide;
+    };
+    if (!collides(0)) return r;
+    const double diag = b.diagonal() > 0 ? b.diagonal() : 2 * b.reach();
+    const double step = 0.01 * diag;
+    double lo = 0, hi = step;
+    while (collides(hi)) {
+        lo = hi, hi += step;
+        if (hi > 100 * diag + 2 * (a.reach() + b.reach())) {
+            r.converged = false;
+            break;
+        }
+    }
+    while (r.converged && hi - lo > 1e-6 * diag) {
+        const double mid = 0.5 * (lo + hi);
+        (collides(mid) ? lo : hi) = mid;
+    }
+    r.distance = hi;
+    return r;
+}
+
+} // namespace
+
+BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                                   const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
+                                   BacktrackRule rule, QueryScratch& scratch) {
+    BacktrackResult r;
+    const double len = motion_in_a.norm();
+    if (!(len > 0) || !std::isfinite(len)) return r; // no motion: no direction to move back along
+    const Eigen::Vector3d back = -motion_in_a / len;
+    QueryOptions q = options;
+    if (rule == BacktrackRule::Paper) {
+        q.mode = QueryMode::Deepest;
+        const QueryResult res = collide_relative(a, b, b_in_a, q, scratch);
+        r.queries = 1;
+        r.distance = res.collide ? std::max(0.0, res.deepest.depth) : 0;
+        return r;
+    }
+    if (options.level == QueryLevel::Exact) return by_bisection(a, b, b_in_a, back, options, scratch);
+    q.mode = QueryMode::All;
+    const bool bounds = options.level == QueryLevel::Bounds;
+    double s = 0;
+    // Every pair overlapping at s keeps overlapping until its own exit root, so the
+    // model collides on [s, largest root): jump there and look again.
+    for (int it = 0; it < 100000; ++it) {
+        Pose p = b_in_a;
+        p.translation += s * back;
+        ++r.queries;
+        if (!collide_relative(a, b, p, q, scratch).collide) {
+            r.distance = s;
+            return r;
+        }
+        const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
+        double step = 0, reach_max = 0;
+        for (const SpherePair& pair : scratch.pairs()) {
+            const Eigen::Vector3d ca = bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.a);
+            const Eigen::Vector3d cb0 = bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.b);
+            const Eigen::Vector3d w = rot * cb0 + p.translation - ca;
+            const double reach = pair.reach, half_b = w.dot(back), c = w.squaredNorm() - reach * reach;
+            step = std::max(step, -half_b + std::sqrt(std::max(0.0, half_b * half_b - c)));
+            reach_max = std::max(reach_max, reach);
+        }
+        s += step + 1e-6 * reach_max;
+    }
+    r.converged = false;
+    r.distance = s;
+    return r;
+}
+
+BacktrackResult backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
+                          const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
+                          QueryScratch& scratch) {
+    return backtrack_relative(a, b, relative_pose(pose_a, pose_b), pose_a.rotation.conjugate() * motion, options,
+                              rule, scratch);
+}
+
+} // namespace spt

@@ -1,0 +1,44 @@
+#pragma once
+// Small models and poses shared by the query tests.
+#include "spt/collision_model.hpp"
+#include "spt/convert.hpp"
+#include "spt/pose.hpp"
+#include "spt/shapes.hpp"
+#include <memory>
+#include <random>
+
+namespace spt::test {
+
+// A mesh, its document and a model with the exact level.
+struct Object {
+    TriangleMesh mesh;
+    SptDocument doc;
+    CollisionModel model;
+};
+
+inline std::unique_ptr<Object> make_object(TriangleMesh mesh, const ConvertOptions& opt = {}) {
+    auto o = std::make_unique<Object>();
+    o->mesh = std::move(mesh);
+    o->doc = make_document(o->mesh, opt);
+    o->model = CollisionModel(o->doc, o->mesh);
+    return o;
+}
+
+inline Eigen::Quaterniond random_rotation(std::mt19937& rng) {
+    std::normal_distribution<double> n;
+    Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
+    return q.normalized();
+}
+
+inline Eigen::Vector3d random_unit(std::mt19937& rng) {
+    std::normal_distribution<double> n;
+    Eigen::Vector3d v(n(rng), n(rng), n(rng));
+    return v.normalized();
+}
+
+// B's pose in A's frame: centre at `distance` in a random direction, random orientation.
+inline Pose random_pose(std::mt19937& rng, double distance) {
+    return Pose::from(distance * random_unit(rng), random_rotation(rng));
+}
+
+} // namespace spt::test
