@@ -1,5 +1,6 @@
 #include "meshgen.hpp"
 #include "spt/error.hpp"
+#include "spt/shapes.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -24,46 +25,15 @@ void RawMesh::append(const RawMesh& o, const Eigen::Vector3d& offset) {
     for (const auto& t : o.triangles) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }
 
-RawMesh torus(double R, double r, int nu, int nv) {
-    RawMesh m;
-    for (int i = 0; i < nu; ++i)
-        for (int j = 0; j < nv; ++j) {
-            const double u = 2 * kPi * i / nu, v = 2 * kPi * j / nv;
-            m.positions.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-                                     r * std::sin(v));
-        }
-    auto id = [&](int i, int j) { return uint32_t(((i + nu) % nu) * nv + (j + nv) % nv); };
-    for (int i = 0; i < nu; ++i)
-        for (int j = 0; j < nv; ++j) {
-            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
-    return m;
-}
+namespace {
 
-RawMesh box(double sx, double sy, double sz, int n) {
-    RawMesh m;
-    const Eigen::Vector3d h(sx / 2, sy / 2, sz / 2);
-    // Each face: origin corner, two edge vectors whose cross product points outward.
-    const Eigen::Vector3d faces[6][3] = {
-        {{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}},  {{-1, 1, -1}, {2, 0, 0}, {0, -2, 0}},
-        {{1, -1, -1}, {0, 2, 0}, {0, 0, 2}},  {{-1, 1, -1}, {0, -2, 0}, {0, 0, 2}},
-        {{-1, 1, -1}, {0, 0, 2}, {2, 0, 0}},  {{-1, -1, -1}, {2, 0, 0}, {0, 0, 2}},
-    };
-    for (const auto& f : faces) {
-        const auto base = uint32_t(m.positions.size());
-        for (int i = 0; i <= n; ++i)
-            for (int j = 0; j <= n; ++j)
-                m.positions.push_back((f[0] + f[1] * (double(i) / n) + f[2] * (double(j) / n)).cwiseProduct(h));
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) {
-                const uint32_t a = base + uint32_t(i * (n + 1) + j), b = a + uint32_t(n + 1);
-                m.triangles.push_back({a, b, b + 1});
-                m.triangles.push_back({a, b + 1, a + 1});
-            }
-    }
-    return m;
-}
+RawMesh raw(const TriangleMesh& m) { return {m.positions, m.triangles}; }
+
+} // namespace
+
+RawMesh torus(double R, double r, int nu, int nv) { return raw(make_torus(R, r, nu, nv)); }
+
+RawMesh box(double sx, double sy, double sz, int n) { return raw(make_box({sx / 2, sy / 2, sz / 2}, n)); }
 
 RawMesh icosphere(double r, int level) {
     const double t = (1 + std::sqrt(5.0)) / 2;

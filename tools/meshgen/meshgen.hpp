@@ -14,9 +14,11 @@ struct RawMesh {
     void append(const RawMesh& other, const Eigen::Vector3d& offset = Eigen::Vector3d::Zero());
 };
 
-/// Torus around +z: ring radius R, tube radius r, nu segments around the ring, nv around the tube.
+/// Torus around +z: ring radius R, tube radius r, nu segments around the ring, nv around the tube
+/// (spt::make_torus, welded).
 RawMesh torus(double R, double r, int nu, int nv);
-/// Axis-aligned box centred at the origin with sides (sx, sy, sz), each face an n x n grid.
+/// Axis-aligned box centred at the origin with sides (sx, sy, sz), each face an n x n grid
+/// (spt::make_box, welded).
 RawMesh box(double sx, double sy, double sz, int n = 1);
 /// Sphere of radius r from an icosahedron subdivided `level` times.
 RawMesh icosphere(double r, int level);
