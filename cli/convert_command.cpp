@@ -26,7 +26,7 @@ struct ConvertArgs {
     uint32_t leaf_size = 8;
     double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
     int jobs = 0;
-    bool force = false, quiet = false, append = false;
+    bool force = false, quiet = false, append = false, vertices_only = false;
 };
 
 std::string fmt(double v, int prec = 2) {
@@ -54,6 +54,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     opt.build.radius.fixed = float(a.radius);
     opt.build.radius.scale = float(a.radius_scale);
     if (a.tolerance > 0) opt.tolerance = a.tolerance;
+    opt.auto_tolerance = !a.vertices_only;
     ConvertStats st;
     SptDocument doc;
     if (a.append) {
@@ -92,7 +93,11 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     if (opt.tolerance && !std::isfinite(st.worst_predicted_gap))
         std::cerr << "  warning: the tree gave some face samples smaller spheres than assumed; gaps may exceed "
                   << a.tolerance << "\n";
-    if (!opt.tolerance && st.worst_predicted_gap > 0.01 * diag)
+    if (st.automatic_tolerance > 0)
+        std::cerr << "  note: vertex samples alone would leave the surface uncovered deeper than "
+                  << st.automatic_tolerance << " (" << fmt(100 * kAutoTolerance) << "% of the diagonal); faces were "
+                  << "sampled to that tolerance (--vertices-only to keep vertex samples only)\n";
+    if (!opt.tolerance && st.automatic_tolerance == 0 && st.worst_predicted_gap > 0.01 * diag)
         std::cerr << "  warning: vertex samples leave the surface uncovered up to " << st.worst_predicted_gap << " ("
                   << fmt(100 * st.worst_predicted_gap / diag) << "% of the diagonal); --tolerance EPS adds face samples\n";
     return 0;
@@ -215,6 +220,9 @@ Action add_convert_command(CLI::App& app) {
         ->check(kPositiveLength);
     c->add_option("--tolerance", a->tolerance, "Add face samples so no surface gap is deeper than EPS (model units)")
         ->check(kPositiveLength);
+    c->add_flag("--vertices-only", a->vertices_only,
+                "Sample vertices only (the paper), even where that leaves holes; otherwise faces are sampled "
+                "automatically when vertex gaps exceed 0.5% of the diagonal");
     c->add_option("--bounds", a->bounds, "Bounding spheres: tight (contain every sampling sphere) or paper")
         ->check(CLI::IsMember({"tight", "paper"}));
     c->add_option("--strategy", a->strategy, "Automatic split: volume (min. children's sphere volume) or median")

@@ -46,9 +46,11 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
     ConvertStats& st = stats ? *stats : local;
     if (options.tolerance && (!(*options.tolerance > 0) || !std::isfinite(*options.tolerance)))
         throw Error(ErrorKind::Usage, "--tolerance must be a positive length");
+    // Two objects meet: their errors add. Within a tolerance each object keeps its gaps to
+    // half of it and its protrusion to an eighth, so a pair stays well within it.
     const double protrusion =
         options.protrusion ? *options.protrusion
-                           : (options.tolerance ? *options.tolerance : kDefaultProtrusion * mesh.diagonal());
+                           : (options.tolerance ? *options.tolerance / 8 : kDefaultProtrusion * mesh.diagonal());
     if (!(protrusion > 0) || !std::isfinite(protrusion)) throw Error(ErrorKind::Usage, "protrusion must be positive");
 
     auto t0 = Clock::now();
@@ -67,12 +69,22 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
         doc.trees.push_back(build_tree(options.tree_name, doc.samples, options.build));
         st.build_seconds = seconds_since(t0);
         st.worst_predicted_gap = vertex_only_gap(mesh, doc.samples, radius_in_use(doc.trees[0], doc.samples.size()));
-        return doc;
+        const double automatic = kAutoTolerance * mesh.diagonal();
+        if (!options.auto_tolerance || st.worst_predicted_gap <= automatic) return doc;
+        // Vertices alone leave holes (large flat faces): sample the faces too.
+        ConvertOptions with_faces = options;
+        with_faces.tolerance = automatic;
+        ConvertStats again;
+        SptDocument sampled = make_document(mesh, with_faces, &again);
+        again.automatic_tolerance = automatic;
+        again.sample_seconds += st.sample_seconds, again.build_seconds += st.build_seconds;
+        st = again;
+        return sampled;
     }
 
     // The builder keeps active nodes radius-coherent, so a node's radius is at least
     // 1/kRadiusClassRatio of each member's own radius: faces are sampled for that radius.
-    const double eps = *options.tolerance;
+    const double eps = *options.tolerance / 2;
     SampleSet s = vertex_samples;
     for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
         add_face_samples(s, limiter, f, eps, rule, 1.0f / kRadiusClassRatio);

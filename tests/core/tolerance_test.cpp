@@ -98,17 +98,37 @@ TEST(Tolerance, LargestUncoveredDepthStaysWithinEpsilon) {
             ConvertStats st;
             const SptDocument doc = make_document(c.mesh, o, &st);
             EXPECT_GT(st.face_samples, 0u);
-            EXPECT_LE(st.worst_predicted_gap, *o.tolerance * (1 + 1e-6));
+            EXPECT_LE(st.worst_predicted_gap, *o.tolerance / 2 * (1 + 1e-6));
             const double measured = largest_uncovered_depth(c.mesh, doc, 20);
             // float storage of points and radii: allow rounding far below eps.
-            EXPECT_LE(measured, *o.tolerance + 1e-5 * diag) << "measured " << measured;
+            // Each object keeps its gaps within half the tolerance (two objects meet).
+            EXPECT_LE(measured, *o.tolerance / 2 + 1e-5 * diag) << "measured " << measured;
         }
     }
+}
+
+TEST(Tolerance, DefaultSamplesFacesWhereVerticesLeaveHoles) {
+    const TriangleMesh mesh = import_mesh(test::project_meshes() + "/cad_part.stl").mesh;
+    ConvertStats st;
+    const SptDocument doc = make_document(mesh, {}, &st);
+    EXPECT_DOUBLE_EQ(st.automatic_tolerance, kAutoTolerance * mesh.diagonal());
+    EXPECT_GT(st.face_samples, 0u);
+    EXPECT_LE(largest_uncovered_depth(mesh, doc, 10), kAutoTolerance * mesh.diagonal() / 2 + 1e-5 * mesh.diagonal());
+}
+
+TEST(Tolerance, FineMeshKeepsVertexSamplesOnly) {
+    const ImportedMesh m = meshgen::prepare(meshgen::torus(1, 0.4, 200, 100), "fine torus");
+    ConvertStats st;
+    make_document(m.mesh, {}, &st);
+    EXPECT_EQ(st.automatic_tolerance, 0);
+    EXPECT_EQ(st.face_samples, 0u);
 }
 
 TEST(Tolerance, VerticesOnlyLeaveDeepGapsOnLargeFlatFaces) {
     // The reason tolerance sampling exists: two triangles per face of a slab.
     const TriangleMesh mesh = import_mesh(test::project_meshes() + "/cad_part.stl").mesh;
-    const SptDocument doc = make_document(mesh);
+    ConvertOptions vertices_only;
+    vertices_only.auto_tolerance = false;
+    const SptDocument doc = make_document(mesh, vertices_only);
     EXPECT_GT(largest_uncovered_depth(mesh, doc, 30), 0.01 * mesh.diagonal());
 }

@@ -81,6 +81,7 @@ TEST(Query, ExactFindsTrianglesCrossingWhereNoSpheresOverlap) {
     // through the middle of A's face, far from every sample.
     ConvertOptions small;
     small.build.radius.fixed = 0.05f;
+    small.auto_tolerance = false; // coarse on purpose: vertex samples only
     auto a = make_object(make_box({1, 1, 1}, 1), small);
     auto b = make_object(make_box({1, 1, 1}, 1), small);
     // Rotate B so a corner points along -x, and put that corner 0.1 inside A's +x face.

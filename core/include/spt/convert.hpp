@@ -10,22 +10,31 @@ namespace spt {
 /// Options for make_document.
 struct ConvertOptions {
     BuildOptions build;              ///< tree shape, radius rule, bounds
-    std::optional<double> tolerance; ///< model units; adds face samples so no gap is deeper
-    /// How far a sampling sphere may poke out of the mesh, model units. Default: the
-    /// tolerance if set, else kDefaultProtrusion x the mesh diagonal.
+    /// Model units: adds face samples so that no surface point is more than tolerance/2
+    /// outside every sampling sphere (two objects' gaps together stay within it).
+    std::optional<double> tolerance;
+    /// How far a sampling sphere may poke out of the mesh, model units. Default: a quarter
+    /// of the tolerance if set, else kDefaultProtrusion x the mesh diagonal.
     std::optional<double> protrusion;
     std::string tree_name = "default";
+    /// Without a tolerance: if vertex samples alone would leave the surface uncovered deeper
+    /// than kAutoTolerance x the diagonal, sample the faces to that tolerance.
+    bool auto_tolerance = true;
 };
 
-/// Default protrusion allowance as a fraction of the mesh diagonal: half of the 1% band
-/// in which the accuracy targets are set.
-constexpr double kDefaultProtrusion = 0.005;
+/// Default protrusion allowance as a fraction of the mesh diagonal: two objects together
+/// stay well inside the 1% band in which the accuracy targets are set.
+constexpr double kDefaultProtrusion = 0.0025;
+
+/// Tolerance applied automatically (fraction of the diagonal) when vertices leave holes.
+constexpr double kAutoTolerance = 0.005;
 
 /// What make_document did beyond the document itself.
 struct ConvertStats {
     size_t vertex_samples = 0;
     size_t face_samples = 0;
     double worst_predicted_gap = 0;  ///< largest uncovered depth the final radii allow on a face, model units
+    double automatic_tolerance = 0;  ///< > 0: the tolerance applied because vertices left holes
     double sample_seconds = 0;
     double build_seconds = 0;
 };
