@@ -9,7 +9,7 @@ mkdir -p "$out"
 echo "== spt convert: bundled meshes -> $out/*.spt"
 "$spt" convert resources/meshes/* --out-dir "$out" --force
 echo
-echo "== the same CAD part with tolerance-driven sampling (no gap deeper than 0.01)"
+echo "== the CAD part with a tolerance of 0.01 (model units) between two objects"
 "$spt" convert resources/meshes/cad_part.stl -o "$out/cad_part_tol.spt" --tolerance 0.01 --force
 echo
 echo "== spt info $out/figure.spt"
