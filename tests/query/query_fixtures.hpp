@@ -16,7 +16,14 @@ struct Object {
     CollisionModel model;
 };
 
-inline std::unique_ptr<Object> make_object(TriangleMesh mesh, const ConvertOptions& opt = {}) {
+// Vertex samples only: the fixtures are small on purpose (brute force is quadratic).
+inline ConvertOptions coarse() {
+    ConvertOptions o;
+    o.auto_tolerance = false;
+    return o;
+}
+
+inline std::unique_ptr<Object> make_object(TriangleMesh mesh, const ConvertOptions& opt = coarse()) {
     auto o = std::make_unique<Object>();
     o->mesh = std::move(mesh);
     o->doc = make_document(o->mesh, opt);
