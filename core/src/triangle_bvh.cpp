@@ -66,103 +66,56 @@ void TriangleBvh::build(uint32_t node, uint32_t b, uint32_t e, std::vector<Eigen
     nodes_[node].first = right, nodes_[node].count = 0;
 }
 
-bool TriangleBvh::closest(const Eigen::Vector3d& p, double max_d2, Eigen::Vector3d& out, double& out_d2,
-                          uint32_t* out_triangle) const {
+template <class Reject, class Hit> bool TriangleBvh::find_triangle(Reject reject, Hit hit) const {
     if (nodes_.empty()) return false;
-    bool found = false;
-    double best = max_d2;
     uint32_t stack[128];
     int top = 0;
     stack[top++] = 0;
     while (top) {
-        const Node& n = nodes_[stack[--top]];
-        if (n.box.squaredExteriorDistance(p) >= best) continue;
+        const uint32_t self = stack[--top];
+        const Node& n = nodes_[self];
+        if (reject(n.box)) continue;
         if (n.count) {
-            for (uint32_t i = n.first; i < n.first + n.count; ++i) {
-                const auto& t = mesh_.triangles[order_[i]];
-                const Eigen::Vector3d q =
-                    closest_on_triangle(p, mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
-                const double d2 = (q - p).squaredNorm();
-                if (d2 < best) {
-                    best = d2, out = q, found = true;
-                    if (out_triangle) *out_triangle = order_[i];
-                }
-            }
+            for (uint32_t i = n.first; i < n.first + n.count; ++i)
+                if (hit(mesh_.triangles[order_[i]])) return true;
             continue;
         }
-        const uint32_t self = uint32_t(&n - nodes_.data());
-        const uint32_t l = self + 1, r = n.first;
-        // Nearer child last so it is searched first.
-        const double dl = nodes_[l].box.squaredExteriorDistance(p), dr = nodes_[r].box.squaredExteriorDistance(p);
         if (top + 2 > 128) continue; // cannot happen for a median tree of < 2^60 triangles
-        if (dl < dr) stack[top++] = r, stack[top++] = l;
-        else stack[top++] = l, stack[top++] = r;
+        stack[top++] = n.first;
+        stack[top++] = self + 1;
     }
-    out_d2 = best;
-    return found;
+    return false;
 }
 
 bool TriangleBvh::any_within(const Eigen::Vector3d& p, double d2) const {
-    if (nodes_.empty()) return false;
-    uint32_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top) {
-        const uint32_t self = stack[--top];
-        const Node& n = nodes_[self];
-        if (n.box.squaredExteriorDistance(p) >= d2) continue;
-        if (n.count) {
-            for (uint32_t i = n.first; i < n.first + n.count; ++i) {
-                const auto& t = mesh_.triangles[order_[i]];
-                const Eigen::Vector3d q =
-                    closest_on_triangle(p, mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
-                if ((q - p).squaredNorm() < d2) return true;
-            }
-            continue;
-        }
-        if (top + 2 > 128) continue;
-        stack[top++] = n.first;
-        stack[top++] = self + 1;
-    }
-    return false;
+    return find_triangle([&](const Eigen::AlignedBox3d& box) { return box.squaredExteriorDistance(p) >= d2; },
+                         [&](const Triangle& t) {
+                             const Eigen::Vector3d q = closest_on_triangle(p, mesh_.positions[t[0]], mesh_.positions[t[1]],
+                                                                           mesh_.positions[t[2]]);
+                             return (q - p).squaredNorm() < d2;
+                         });
 }
 
 bool TriangleBvh::segment_hits(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double skip) const {
-    if (nodes_.empty()) return false;
     const Eigen::Vector3d d = b - a;
-    Eigen::AlignedBox3d seg(a.cwiseMin(b), a.cwiseMax(b));
-    uint32_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top) {
-        const uint32_t self = stack[--top];
-        const Node& n = nodes_[self];
-        if (!n.box.intersects(seg)) continue;
-        if (n.count) {
-            for (uint32_t i = n.first; i < n.first + n.count; ++i) {
-                // Moller-Trumbore, both faces.
-                const auto& t = mesh_.triangles[order_[i]];
-                const Eigen::Vector3d& v0 = mesh_.positions[t[0]];
-                const Eigen::Vector3d e1 = mesh_.positions[t[1]] - v0, e2 = mesh_.positions[t[2]] - v0;
-                const Eigen::Vector3d pv = d.cross(e2);
-                const double det = e1.dot(pv);
-                if (std::abs(det) < 1e-300) continue;
-                const Eigen::Vector3d tv = a - v0;
-                const double u = tv.dot(pv) / det;
-                if (u < 0 || u > 1) continue;
-                const Eigen::Vector3d qv = tv.cross(e1);
-                const double v = d.dot(qv) / det;
-                if (v < 0 || u + v > 1) continue;
-                const double s = e2.dot(qv) / det;
-                if (s > skip && s <= 1) return true;
-            }
-            continue;
-        }
-        if (top + 2 > 128) continue;
-        stack[top++] = n.first;
-        stack[top++] = self + 1;
-    }
-    return false;
+    const Eigen::AlignedBox3d seg(a.cwiseMin(b), a.cwiseMax(b));
+    return find_triangle([&](const Eigen::AlignedBox3d& box) { return !box.intersects(seg); },
+                         [&](const Triangle& t) {
+                             // Moller-Trumbore, both faces.
+                             const Eigen::Vector3d& v0 = mesh_.positions[t[0]];
+                             const Eigen::Vector3d e1 = mesh_.positions[t[1]] - v0, e2 = mesh_.positions[t[2]] - v0;
+                             const Eigen::Vector3d pv = d.cross(e2);
+                             const double det = e1.dot(pv);
+                             if (std::abs(det) < 1e-300) return false;
+                             const Eigen::Vector3d tv = a - v0;
+                             const double u = tv.dot(pv) / det;
+                             if (u < 0 || u > 1) return false;
+                             const Eigen::Vector3d qv = tv.cross(e1);
+                             const double v = d.dot(qv) / det;
+                             if (v < 0 || u + v > 1) return false;
+                             const double s = e2.dot(qv) / det;
+                             return s > skip && s <= 1;
+                         });
 }
 
 } // namespace spt::detail

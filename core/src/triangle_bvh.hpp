@@ -12,9 +12,6 @@ Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vecto
 class TriangleBvh {
 public:
     explicit TriangleBvh(const TriangleMesh& mesh);
-    /// Closest point of the mesh to p among points closer than sqrt(max_d2); false if none.
-    bool closest(const Eigen::Vector3d& p, double max_d2, Eigen::Vector3d& out, double& out_d2,
-                 uint32_t* out_triangle = nullptr) const;
 
     /// True if some triangle comes closer to p than sqrt(d2); stops at the first found.
     bool any_within(const Eigen::Vector3d& p, double d2) const;
@@ -27,6 +24,9 @@ private:
         uint32_t first, count; // leaf: triangle range in order_; inner: count 0, first = right child
     };
     void build(uint32_t node, uint32_t b, uint32_t e, std::vector<Eigen::Vector3d>& centroids);
+    // Depth-first walk: skips nodes whose box `reject`s, calls `hit(triangle)` at leaves and
+    // stops at the first triangle for which it returns true.
+    template <class Reject, class Hit> bool find_triangle(Reject reject, Hit hit) const;
     const TriangleMesh& mesh_;
     std::vector<uint32_t> order_;
     std::vector<Node> nodes_;
