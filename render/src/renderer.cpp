@@ -138,15 +138,7 @@ struct Renderer::Impl {
 
         make_sphere_vao(scratch_set_vao, scratch_set_vbo);
 
-        gl.GenVertexArrays(1, &wire_vao);
-        gl.GenBuffers(1, &wire_vbo);
-        gl.BindVertexArray(wire_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, circle_vbo);
-        gl.EnableVertexAttribArray(detail::kPosition);
-        gl.VertexAttribPointer(detail::kPosition, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-        gl.BindBuffer(GL_ARRAY_BUFFER, wire_vbo);
-        set_instance_attributes();
-        gl.BindVertexArray(0);
+        make_instanced_vao(wire_vao, wire_vbo, circle_vbo, 3);
         check_gl(gl, "renderer set-up");
     }
 
@@ -171,17 +163,23 @@ struct Renderer::Impl {
         gl.VertexAttribDivisor(detail::kColor, 1);
     }
 
-    void make_sphere_vao(GLuint& vao, GLuint& vbo) {
+    // A VAO drawing the shape in `shape_vbo` (positions of `components` floats) once per
+    // GpuSphere instance in a new buffer `vbo`.
+    void make_instanced_vao(GLuint& vao, GLuint& vbo, GLuint shape_vbo, int components) {
         gl.GenVertexArrays(1, &vao);
         gl.GenBuffers(1, &vbo);
         gl.BindVertexArray(vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, quad_vbo);
+        gl.BindBuffer(GL_ARRAY_BUFFER, shape_vbo);
         gl.EnableVertexAttribArray(detail::kPosition);
-        gl.VertexAttribPointer(detail::kPosition, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+        gl.VertexAttribPointer(detail::kPosition, components, GL_FLOAT, GL_FALSE, GLsizei(components * sizeof(float)),
+                               nullptr);
         gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
         set_instance_attributes();
         gl.BindVertexArray(0);
     }
+
+    // Sampling spheres: a screen-facing quad per instance.
+    void make_sphere_vao(GLuint& vao, GLuint& vbo) { make_instanced_vao(vao, vbo, quad_vbo, 2); }
 
     void free_mesh(GpuMesh& m) {
         gl.DeleteVertexArrays(1, &m.vao);
