@@ -89,6 +89,20 @@ void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule
     }
 }
 
+namespace {
+
+// Appends an active node's sampling spheres (centres, radii) and their surface points.
+void append_spheres(const TreeNode& n, const SampleSet& samples, std::vector<Eigen::Vector3f>& c,
+                    std::vector<float>& r, std::vector<Eigen::Vector3f>& p) {
+    for (uint32_t s : n.samples) {
+        p.push_back(samples.points[s]);
+        c.push_back(sphere_center(samples.points[s], samples.normals[s], n.ss_radius));
+        r.push_back(n.ss_radius);
+    }
+}
+
+} // namespace
+
 void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
     // Lay the samples out leaf by leaf so that every node covers one contiguous run.
     std::vector<Eigen::Vector3f> c, p;
@@ -103,12 +117,8 @@ void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method)
         Result out;
         detail::Ball hint;
         if (n.active) {
-            for (uint32_t s : n.samples) {
-                p.push_back(samples.points[s]);
-                c.push_back(sphere_center(samples.points[s], samples.normals[s], n.ss_radius));
-                r.push_back(n.ss_radius);
-                out.box.extend(c.back());
-            }
+            append_spheres(n, samples, c, r, p);
+            for (size_t k = begin; k < c.size(); ++k) out.box.extend(c[k]);
         } else {
             for (NodeId child : {left_child(n.id), right_child(n.id)})
                 if (TreeNode* ch = find_mutable(child)) {
@@ -139,11 +149,7 @@ void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMet
         std::vector<float> rad;
         std::function<void(const TreeNode&)> collect = [&](const TreeNode& t) {
             if (t.active) {
-                for (uint32_t s : t.samples) {
-                    p.push_back(samples.points[s]);
-                    c.push_back(sphere_center(samples.points[s], samples.normals[s], t.ss_radius));
-                    rad.push_back(t.ss_radius);
-                }
+                append_spheres(t, samples, c, rad, p);
                 return;
             }
             if (const TreeNode* l = find(left_child(t.id))) collect(*l);
