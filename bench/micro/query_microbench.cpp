@@ -37,13 +37,18 @@ void traversal(benchmark::State& state, QueryLevel level, QueryMode mode, bool c
     QueryOptions o;
     o.level = level, o.mode = mode, o.normal_culling = cull;
     size_t i = 0;
-    uint64_t spheres = 0;
+    QueryCounters sum;
     for (auto _ : state) {
         const QueryResult r = collide_relative(f.model, f.model, f.poses[i++ & 1023], o, s);
-        spheres += r.counters.sphere_tests;
+        sum.node_pairs += r.counters.node_pairs;
+        sum.sphere_tests += r.counters.sphere_tests;
+        sum.triangle_tests += r.counters.triangle_tests;
         benchmark::DoNotOptimize(r.collide);
     }
-    state.counters["sphere_tests"] = benchmark::Counter(double(spheres), benchmark::Counter::kAvgIterations);
+    auto per_query = [](uint64_t v) { return benchmark::Counter(double(v), benchmark::Counter::kAvgIterations); };
+    state.counters["node_pairs"] = per_query(sum.node_pairs);
+    state.counters["sphere_tests"] = per_query(sum.sphere_tests);
+    state.counters["triangle_tests"] = per_query(sum.triangle_tests);
 }
 BENCHMARK_CAPTURE(traversal, spheres_any, QueryLevel::Spheres, QueryMode::Any, false);
 BENCHMARK_CAPTURE(traversal, spheres_any_culling, QueryLevel::Spheres, QueryMode::Any, true);
