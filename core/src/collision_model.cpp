@@ -94,7 +94,10 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     e.node_tri_begin.assign(nn + 1, 0);
     for (uint32_t f = 0; f < nt; ++f)
         if (owner[f] != UINT32_MAX) ++e.node_tri_begin[owner[f] + 1];
-    for (size_t i = 0; i < nn; ++i) e.node_tri_begin[i + 1] += e.node_tri_begin[i];
+    for (size_t i = 0; i < nn; ++i) {
+        e.max_node_tris = std::max(e.max_node_tris, e.node_tri_begin[i + 1]);
+        e.node_tri_begin[i + 1] += e.node_tri_begin[i];
+    }
     e.node_tris.resize(e.node_tri_begin[nn]);
     {
         std::vector<uint32_t> fill(e.node_tri_begin.begin(), e.node_tri_begin.end() - 1);
@@ -126,6 +129,19 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         }
         e.node_tri_reach[i] = has_tris[i] ? round_up(rt) : -1.0f; // negative: nothing to test below
         e.node_reach[i] = round_up(std::max(r, rt));
+    }
+
+    // Slabs: a node's subtree is a contiguous run of nodes, so its triangles are a
+    // contiguous run of node_tris.
+    std::vector<uint32_t> subtree_end(nn);
+    for (size_t i = nn; i-- > 0;) subtree_end[i] = nodes[i].is_active() ? uint32_t(i + 1) : subtree_end[nodes[i].first];
+    e.node_slab.assign(nn, Slab{});
+    std::vector<Eigen::Vector3d> corners;
+    for (size_t i = 0; i < nn; ++i) {
+        corners.clear();
+        for (uint32_t k = e.node_tri_begin[i]; k < e.node_tri_begin[subtree_end[i]]; ++k)
+            for (uint32_t v : e.triangles[e.node_tris[k]]) corners.push_back(e.positions[v]);
+        e.node_slab[i] = fit_slab(corners);
     }
 }
 
@@ -164,7 +180,8 @@ size_t CollisionModel::memory_bytes() const {
            e.triangles.capacity() * sizeof(Triangle) +
            (e.node_tri_begin.capacity() + e.node_tris.capacity() + e.vertex_tri_begin.capacity() +
             e.vertex_tris.capacity() + e.sphere_source.capacity()) * sizeof(uint32_t) +
-           (e.node_reach.capacity() + e.node_tri_reach.capacity() + e.tri_sphere.capacity()) * sizeof(float);
+           (e.node_reach.capacity() + e.node_tri_reach.capacity() + e.tri_sphere.capacity()) * sizeof(float) +
+           e.node_slab.capacity() * sizeof(Slab);
 }
 
 } // namespace spt

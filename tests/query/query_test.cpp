@@ -93,6 +93,29 @@ TEST(Query, ExactFindsTrianglesCrossingWhereNoSpheresOverlap) {
     EXPECT_TRUE(collide_brute_force(a->model, b->model, p, opts(QueryLevel::Exact, QueryMode::Any), s).collide);
 }
 
+TEST(Query, ExactOnParallelPlatesAtHairlineGapsMatchesBruteForce) {
+    // Face to face, the case slabs prune and spheres cannot: every gap from a slight
+    // overlap to a slight separation, with and without a tiny tilt.
+    auto a = make_object(make_box({0.6, 0.6, 0.05}, 8));
+    auto b = make_object(make_box({0.6, 0.6, 0.05}, 8));
+    QueryScratch s1, s2;
+    int collide = 0, cases = 0;
+    for (double tilt : {0.0, 1e-4, 1e-3})
+        for (double gap : {-1e-3, -1e-6, 0.0, 1e-6, 1e-4, 1e-3}) {
+            const Eigen::Quaterniond q(Eigen::AngleAxisd(tilt, Eigen::Vector3d(1, 2, 0).normalized()));
+            const Pose p = Pose::from(Eigen::Vector3d(0.013, -0.021, 0.1 + gap), q);
+            const QueryResult ref = collide_brute_force(a->model, b->model, p, opts(QueryLevel::Exact, QueryMode::All), s2);
+            EXPECT_EQ(collide_relative(a->model, b->model, p, opts(QueryLevel::Exact, QueryMode::Any), s1).collide,
+                      ref.collide)
+                << "tilt " << tilt << " gap " << gap;
+            collide_relative(a->model, b->model, p, opts(QueryLevel::Exact, QueryMode::All), s1);
+            EXPECT_EQ(tri_pairs(s1), tri_pairs(s2)) << "tilt " << tilt << " gap " << gap;
+            collide += ref.collide, ++cases;
+        }
+    EXPECT_GT(collide, 0);
+    EXPECT_LT(collide, cases);
+}
+
 TEST(Query, SwappingObjectsGivesTheSameAnswer) {
     std::mt19937 rng(5);
     QueryScratch s;
@@ -122,6 +145,9 @@ TEST(Query, CommonRigidMotionIncludingTranslationByAMillionChangesNothing) {
             const QueryResult here = collide(torus().model, Pose{}, box().model, pb, opts(level, QueryMode::Deepest), s);
             const QueryResult there = collide(torus().model, g, box().model, g * pb, opts(level, QueryMode::Deepest), s);
             ASSERT_EQ(here.collide, there.collide) << it;
+            // Any at `exact` prunes with slabs, not spheres: it must not lose a contact far away either.
+            ASSERT_EQ(collide(torus().model, g, box().model, g * pb, opts(level, QueryMode::Any), s).collide, here.collide)
+                << it;
             EXPECT_NEAR(here.deepest.depth, there.deepest.depth, 1e-5);
             if (here.deepest.depth > 1e-3) {
                 EXPECT_NEAR((g.apply(here.deepest.point) - there.deepest.point).norm(), 0, 1e-4);

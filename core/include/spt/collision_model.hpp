@@ -4,6 +4,7 @@
 /// Immutable after construction; share one model between threads freely.
 #include "spt/compact_tree.hpp"
 #include "spt/mesh.hpp"
+#include "spt/slab.hpp"
 #include "spt/spt_file.hpp"
 #include <string>
 #include <vector>
@@ -21,10 +22,12 @@ struct ExactData {
     std::vector<uint32_t> node_tris;          ///< triangle indices, grouped by node
     std::vector<float> node_reach;            ///< radius around each node centre holding its spheres and triangles
     std::vector<float> node_tri_reach;        ///< radius around each node centre holding its triangles only; -1 if it owns none
+    std::vector<Slab> node_slab;              ///< per node: thinnest slab holding the triangles below it
     std::vector<float> tri_sphere;            ///< per triangle: centre xyz and radius of a bounding sphere
     std::vector<uint32_t> vertex_tri_begin;   ///< CSR: triangles incident to each vertex
     std::vector<uint32_t> vertex_tris;
     std::vector<uint32_t> sphere_source;      ///< per compact sphere: SampleSet source (vertex or face|bit)
+    uint32_t max_node_tris = 0;               ///< most triangles owned by one node
     size_t degenerate_triangles = 0;          ///< zero-area triangles left out (their edges belong to neighbours)
 };
 
