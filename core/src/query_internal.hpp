@@ -25,19 +25,13 @@ struct QueryRun {
     // Gap between a child of A (or B) and the other node's centre: its distance less its reach.
     float gap_a(uint32_t k, const Eigen::Vector3f& other, const float* reach) const;
     float gap_b(uint32_t k, const Eigen::Vector3f& other, const float* reach) const;
-    // Exact level: true if either node's triangle slab misses the other's triangle sphere.
-    bool slabs_separate(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra, float rb);
     void move_block(uint32_t node_b);
     const Eigen::Vector3d& b_vertex(uint32_t v);
     const float* b_tri_sphere(uint32_t tri);
     bool triangle_pair(uint32_t ta, uint32_t tb);
-    // Triangles of A's node i near B's node j (in s.ta_) and of B's node j near A's node i
-    // (in s.tb_): their bounding spheres reach the other node's sphere and slab. Counts.
-    std::pair<uint32_t, uint32_t> near_triangles(uint32_t i, uint32_t j);
-    bool exact_leaf_pair(uint32_t i, uint32_t j, uint32_t sphere_hits);
-    void exact_leaf_pair_all(uint32_t i, uint32_t j);
-    uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb,
-                              bool collect_hits);
+    // Level `exact`: walks the triangle trees; sets res.collide (and, in mode all, the triangle pairs).
+    void run_triangles();
+    uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb);
     void record(uint32_t a, uint32_t b, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float reach, float ra,
                 float d2);
 
@@ -48,7 +42,6 @@ struct QueryRun {
     QueryFrame f;
     bool exact;
     bool have_best = false;
-    bool tri_hit = false;
     QueryResult res;
 };
 

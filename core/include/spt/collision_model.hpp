@@ -11,23 +11,27 @@
 
 namespace spt {
 
-/// Triangles of a mesh attached to the active nodes of a compact tree (object frame).
-/// Every non-degenerate triangle belongs to exactly one active node: the node of
-/// the lowest-numbered sample on it (a vertex sample of one of its corners or a
-/// face sample of it); a triangle with no sample goes to the nearest active node.
+/// One node of the exact level's triangle tree (object frame, model units, 44 bytes).
+struct TriangleNode {
+    float center[3] = {0, 0, 0}; ///< bounding-sphere centre of the triangles below
+    float radius = 0;            ///< bounding-sphere radius
+    Slab slab;                   ///< thinnest slab holding the triangles below
+    uint32_t first = 0;          ///< inner node: index of the right child; leaf: first slot in tri_order
+    uint32_t count = 0;          ///< leaf: number of triangles (1 to 4); inner node: 0
+    /// True for a leaf.
+    bool is_leaf() const { return count != 0; }
+};
+
+/// The mesh of an object for the `exact` level, with its own triangle tree. The
+/// sampling tree is the wrong hierarchy for triangles: a CAD face sampled to a
+/// tolerance spans thousands of samples, and a bounding sphere cannot separate two
+/// flat patches face to face; a tree of triangles bounded by spheres and slabs can.
 struct ExactData {
     std::vector<Eigen::Vector3d> positions;   ///< mesh vertices, model units
     std::vector<Triangle> triangles;          ///< mesh triangles
-    std::vector<uint32_t> node_tri_begin;     ///< CSR over compact nodes: owned triangles of node i
-    std::vector<uint32_t> node_tris;          ///< triangle indices, grouped by node
-    std::vector<float> node_reach;            ///< radius around each node centre holding its spheres and triangles
-    std::vector<float> node_tri_reach;        ///< radius around each node centre holding its triangles only; -1 if it owns none
-    std::vector<Slab> node_slab;              ///< per node: thinnest slab holding the triangles below it
+    std::vector<TriangleNode> tri_nodes;      ///< root first, depth-first (the left child follows its parent)
+    std::vector<uint32_t> tri_order;          ///< triangle indices; a leaf holds tri_order[first, first + count)
     std::vector<float> tri_sphere;            ///< per triangle: centre xyz and radius of a bounding sphere
-    std::vector<uint32_t> vertex_tri_begin;   ///< CSR: triangles incident to each vertex
-    std::vector<uint32_t> vertex_tris;
-    std::vector<uint32_t> sphere_source;      ///< per compact sphere: SampleSet source (vertex or face|bit)
-    uint32_t max_node_tris = 0;               ///< most triangles owned by one node
     size_t degenerate_triangles = 0;          ///< zero-area triangles left out (their edges belong to neighbours)
 };
 

@@ -49,10 +49,8 @@ private:
     std::vector<float> d2_;                    // distance matrix of one leaf pair
     std::vector<float> ga_, gb_;               // culled spheres gathered (x, y, z blocks)
     std::vector<uint32_t> ia_, ib_;            // their sphere indices
-    std::vector<uint32_t> ta_, tb_;            // triangles of one leaf pair that reach the other node
     std::vector<SpherePair> pairs_;
     std::vector<TrianglePair> tri_pairs_;
-    std::vector<std::pair<uint32_t, uint32_t>> hits_; // sphere hits of one leaf pair
     uint32_t epoch_ = 0;
 };
 
