@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <numeric>
+#include <Eigen/Geometry>
 
 namespace spt {
 namespace {
@@ -66,7 +68,48 @@ void SampleSet::add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t
 }
 
 RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
-    : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion) {}
+    : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion) {
+    // Connected parts (union-find over triangles), then which parts have an edge used by
+    // one face or by three or more.
+    const size_t nv = mesh.positions.size();
+    std::vector<uint32_t> parent(nv);
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto root = [&](uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    std::vector<std::pair<uint32_t, uint32_t>> edges;
+    edges.reserve(3 * mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = t[k], b = t[(k + 1) % 3];
+            if (a == b) continue;
+            edges.push_back({std::min(a, b), std::max(a, b)});
+            parent[root(a)] = root(b);
+        }
+    std::sort(edges.begin(), edges.end());
+    std::vector<uint8_t> open_root(nv, 0);
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        if (j - i != 2) open_root[root(edges[i].first)] = 1;
+        i = j;
+    }
+    ray_length_ = 4 * mesh.diagonal() + 1e-300; // from anywhere on the mesh to beyond it
+    open_part_.resize(nv);
+    for (uint32_t v = 0; v < nv; ++v) open_part_[v] = open_root[root(v)];
+}
+
+bool RadiusLimiter::back_exposed(const Eigen::Vector3d& p, const Eigen::Vector3d& n, uint32_t vertex) const {
+    if (vertex >= open_part_.size() || !open_part_[vertex]) return false;
+    const double far = ray_length_ + 4 * (p - mesh_.positions[vertex]).norm();
+    const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    const double c = std::sqrt(0.5);
+    const Eigen::Vector3d dirs[] = {-n, c * (-n + t1), c * (-n - t1), c * (-n + t2), c * (-n - t2)};
+    for (const auto& d : dirs)
+        if (!bvh_->segment_hits(p, p + far * d, 1e-9)) return true;
+    return false;
+}
 
 RadiusLimiter::~RadiusLimiter() = default;
 
@@ -82,8 +125,9 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     return bvh_->segment_hits(p, c, 1e-6);
 }
 
-float RadiusLimiter::limit(const Eigen::Vector3f& pf, const Eigen::Vector3f& nf, float r_max) const {
+float RadiusLimiter::limit(const Eigen::Vector3f& pf, const Eigen::Vector3f& nf, float r_max, uint32_t vertex) const {
     const Eigen::Vector3d p = pf.cast<double>(), n = nf.cast<double>();
+    if (back_exposed(p, n, vertex)) r_max = std::min(r_max, float(protrusion_ / 2));
     // Protrusion grows with r (a centre that passes through a thin part counts as outside),
     // so the largest allowed radius is found by bisection.
     if (!protrudes(p, n, r_max)) return r_max;
@@ -115,7 +159,7 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
         const float spacing = float(edge_sum[v] / edge_count[v]);
         const Eigen::Vector3f p = mesh.positions[v].cast<float>();
         const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
-        s.add(p, nrm, v, spacing, limiter.limit(p, nrm, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY)));
+        s.add(p, nrm, v, spacing, limiter.limit(p, nrm, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), v));
     }
     return s;
 }
@@ -137,6 +181,7 @@ struct FaceSampler {
     uint32_t face;
     Eigen::Vector3d a, b, c;
     Eigen::Vector3f normal;
+    uint32_t corner_vertex; // any vertex of the face: it names the face's connected part
     float spacing;
     RadiusRule rule;
     float factor;
@@ -150,7 +195,7 @@ struct FaceSampler {
         auto it = radius_at.find({i, j});
         if (it != radius_at.end()) return it->second;
         const Eigen::Vector3f p = point(i, j).cast<float>();
-        const float cap = limiter.limit(p, normal, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY));
+        const float cap = limiter.limit(p, normal, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), corner_vertex);
         out.add(p, normal, face | kFaceSampleBit, spacing, cap);
         const float r = factor * rule.for_sample(spacing, out.max_radius.back());
         radius_at[{i, j}] = r;
@@ -191,7 +236,7 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     if (!(fn.norm() > 0)) return;
     // Spacing stands for the mesh's own resolution (it sets default radii), not the grid's.
     const float spacing = float(((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0);
-    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), spacing, rule, radius_factor, eps, {}};
+    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), t[0], spacing, rule, radius_factor, eps, {}};
     const int64_t g = FaceSampler::kGrid;
     fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
 }

@@ -86,6 +86,19 @@ TriangleMesh make_box(const Eigen::Vector3d& half, int n) {
     return finish("box", std::move(p), std::move(t));
 }
 
+TriangleMesh make_sheet(double size, int n) {
+    std::vector<Eigen::Vector3d> p;
+    std::vector<Triangle> t;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) p.emplace_back(size * (double(i) / n - 0.5), size * (double(j) / n - 0.5), 0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n + 1), d = c + 1;
+            t.push_back({a, b, d}), t.push_back({a, d, c});
+        }
+    return finish("sheet", std::move(p), std::move(t));
+}
+
 TriangleMesh make_bracket() {
     std::vector<Eigen::Vector2d> poly = {{0, 0}, {6, 0}, {6, 0.8}, {2, 0.8}, {2, 3}};
     for (int k = 1; k < 12; ++k) { // rounded end, centre (1, 3), radius 1

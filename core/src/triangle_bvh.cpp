@@ -98,8 +98,23 @@ bool TriangleBvh::any_within(const Eigen::Vector3d& p, double d2) const {
 
 bool TriangleBvh::segment_hits(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double skip) const {
     const Eigen::Vector3d d = b - a;
-    const Eigen::AlignedBox3d seg(a.cwiseMin(b), a.cwiseMax(b));
-    return find_triangle([&](const Eigen::AlignedBox3d& box) { return !box.intersects(seg); },
+    // Slab test of the segment against each box: long segments (rays out of the mesh)
+    // would overlap most boxes if only the segment's own box were compared.
+    auto misses = [&](const Eigen::AlignedBox3d& box) {
+        double lo = 0, hi = 1;
+        for (int k = 0; k < 3; ++k) {
+            if (d[k] == 0) {
+                if (a[k] < box.min()[k] || a[k] > box.max()[k]) return true;
+                continue;
+            }
+            double t0 = (box.min()[k] - a[k]) / d[k], t1 = (box.max()[k] - a[k]) / d[k];
+            if (t0 > t1) std::swap(t0, t1);
+            lo = std::max(lo, t0), hi = std::min(hi, t1);
+            if (lo > hi) return true;
+        }
+        return false;
+    };
+    return find_triangle(misses,
                          [&](const Triangle& t) {
                              // Moller-Trumbore, both faces.
                              const Eigen::Vector3d& v0 = mesh_.positions[t[0]];

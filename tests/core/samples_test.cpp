@@ -1,6 +1,7 @@
 #include "meshgen.hpp"
 #include "spt/samples.hpp"
 #include "test_support.hpp"
+#include "spt/shapes.hpp"
 #include <gtest/gtest.h>
 #include <random>
 
@@ -46,14 +47,14 @@ TEST(RadiusLimiter, ThinPlateCapsRadiusAtHalfItsThicknessPlusAllowance) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 0.1, 8), "plate");
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
-    const float r = limiter.limit({0.1f, 0.2f, 0.05f}, {0, 0, 1}, 1.0f);
+    const float r = limiter.limit({0.1f, 0.2f, 0.05f}, {0, 0, 1}, 1.0f, 0);
     EXPECT_NEAR(r, (0.1 + allowance) / 2, 0.01 * 0.055 + 1e-4);
 }
 
 TEST(RadiusLimiter, FlatInteriorKeepsTheRequestedRadius) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 8), "cube");
     const RadiusLimiter limiter(m.mesh, 0.001);
-    EXPECT_EQ(limiter.limit({0, 0, 1}, {0, 0, 1}, 0.5f), 0.5f);
+    EXPECT_EQ(limiter.limit({0, 0, 1}, {0, 0, 1}, 0.5f, 0), 0.5f);
 }
 
 TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
@@ -63,7 +64,7 @@ TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
     const Eigen::Vector3f corner(1, 1, 1), n = corner.normalized();
-    const float r = limiter.limit(corner, n, 1.0f);
+    const float r = limiter.limit(corner, n, 1.0f, 0);
     EXPECT_NEAR(r * (1 - 1 / std::sqrt(3.0)), allowance, allowance * 0.02);
 }
 
@@ -71,7 +72,7 @@ TEST(RadiusLimiter, SphereThroughAThinRodIsCaughtFromOutside) {
     // Far larger than the rod: the centre passes through and lies outside the body.
     const ImportedMesh m = meshgen::prepare(meshgen::cylinder(0.05, 2.0, 24), "rod");
     const RadiusLimiter limiter(m.mesh, 0.005);
-    const float r = limiter.limit({0.05f, 0, 1.0f}, {1, 0, 0}, 1.0f);
+    const float r = limiter.limit({0.05f, 0, 1.0f}, {1, 0, 0}, 1.0f, 0);
     EXPECT_LT(r, 0.06f);
     EXPECT_GT(r, 0.04f);
 }
@@ -119,4 +120,44 @@ TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
             EXPECT_LE(nearest, gap * (1 + 1e-5)) << "face " << f;
         }
     }
+}
+
+TEST(RadiusLimiter, OpenSheetCapsRadiusAtHalfTheAllowance) {
+    // Centred behind the sheet, a sphere pokes out of the back by its diameter.
+    const TriangleMesh sheet = make_sheet(2, 4);
+    const double allowance = 0.01;
+    const RadiusLimiter limiter(sheet, allowance);
+    EXPECT_TRUE(limiter.back_exposed({0.1, 0.2, 0}, {0, 0, 1}, 0));
+    EXPECT_NEAR(limiter.limit({0.1f, 0.2f, 0}, {0, 0, 1}, 1.0f, 0), allowance / 2, 1e-6);
+}
+
+TEST(RadiusLimiter, ClosedBoxIsNeverTestedForAnExposedBack) {
+    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 2), "cube");
+    const RadiusLimiter limiter(m.mesh, 0.001);
+    EXPECT_FALSE(limiter.back_exposed({0, 0, 1}, {0, 0, 1}, 0));
+}
+
+TEST(RadiusLimiter, OpenBoxBottomSeenThroughTheOpeningIsExposedButAClosedPartBesideItIsNot) {
+    // A box without its top face, and a closed cube elsewhere in the same mesh: only the
+    // open part is treated as a sheet.
+    auto raw = meshgen::box(2, 2, 2, 1);
+    auto cube = meshgen::box(1, 1, 1, 1);
+    std::vector<Eigen::Vector3d> p = raw.positions;
+    std::vector<spt::Triangle> t;
+    for (const auto& tri : raw.triangles) {
+        bool top = true;
+        for (uint32_t v : tri) top = top && raw.positions[v].z() > 0.99;
+        if (!top) t.push_back(tri);
+    }
+    const uint32_t base = uint32_t(p.size());
+    for (const auto& q : cube.positions) p.push_back(q + Eigen::Vector3d(5, 0, 0));
+    for (auto tri : cube.triangles) t.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+    const ImportedMesh m = spt::prepare_mesh("cup and cube", std::move(p), std::move(t));
+    const RadiusLimiter limiter(m.mesh, 0.01);
+    // Find a vertex of each part (the import may reorder vertices).
+    uint32_t cup_vertex = 0, cube_vertex = 0;
+    for (uint32_t v = 0; v < m.mesh.positions.size(); ++v)
+        (m.mesh.positions[v].x() > 3 ? cube_vertex : cup_vertex) = v;
+    EXPECT_TRUE(limiter.back_exposed({0.2, 0.1, -1}, {0, 0, -1}, cup_vertex));
+    EXPECT_FALSE(limiter.back_exposed({5.1, 0.1, -0.5}, {0, 0, -1}, cube_vertex));
 }

@@ -1,6 +1,6 @@
 #pragma once
-/// Meshes made in code, for tests and benchmarks: closed, consistently wound,
-/// model units as given.
+/// Meshes made in code, for tests and benchmarks: consistently wound, model units
+/// as given; closed except the sheet.
 #include "spt/mesh.hpp"
 
 namespace spt {
@@ -9,6 +9,8 @@ namespace spt {
 TriangleMesh make_torus(double ring, double tube, int nu, int nv);
 /// Axis-aligned box of the given half extents, each face an n x n grid (12 n^2 triangles).
 TriangleMesh make_box(const Eigen::Vector3d& half, int n);
+/// Open square sheet in the plane z = 0, side `size`, facing +z, an n x n grid (2 n^2 triangles).
+TriangleMesh make_sheet(double size, int n);
 /// A CAD-like part: a concave bracket profile with a rounded end, extruded along z.
 /// Large flat faces (long thin cap triangles), sharp 90-degree edges.
 TriangleMesh make_bracket();
