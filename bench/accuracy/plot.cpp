@@ -40,7 +40,7 @@ std::string time_label(double ns) {
 } // namespace
 
 bool draw_plot(const std::string& path, const std::string& title, const std::vector<PlotPoint>& pts) {
-    const int W = 1000, H = 640, left = 90, right = 30, top = 50, bottom = 120;
+    const int W = 1000, H = 660, left = 90, right = 30, top = 70, bottom = 120;
     Canvas c(W, H, kWhite);
     double tmin = 1e300, tmax = 0, amin = 100;
     for (const auto& p : pts) tmin = std::min(tmin, p.ns), tmax = std::max(tmax, p.ns), amin = std::min(amin, p.agreement);
@@ -65,7 +65,7 @@ bool draw_plot(const std::string& path, const std::string& title, const std::vec
     c.line(left, top, left, top + ph, kBlack, 2);
     c.line(left, top + ph, left + pw, top + ph, kBlack, 2);
     c.text(left + pw / 2 - text_width("MEDIAN QUERY TIME (LOG)") / 2, top + ph + 32, "MEDIAN QUERY TIME (LOG)", kBlack);
-    c.text(left, 20, title, kBlack);
+    c.text(left, 14, title, kBlack); // above the axis label, which sits just over the plot
     c.text(8, top - 22, "AGREEMENT", kBlack);
     // Pareto front: sorted by time, a point joins when it is more accurate than every faster one.
     std::vector<PlotPoint> sorted = pts;
