@@ -78,22 +78,29 @@ RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
         while (parent[v] != v) v = parent[v] = parent[parent[v]];
         return v;
     };
-    std::vector<std::pair<uint32_t, uint32_t>> edges;
-    edges.reserve(3 * mesh.triangles.size());
+    // Edges bucketed by their lower vertex (counting sort), then each small bucket sorted.
+    std::vector<uint32_t> begin(nv + 1, 0);
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k)
+            if (t[k] != t[(k + 1) % 3]) ++begin[std::min(t[k], t[(k + 1) % 3]) + 1];
+    for (size_t v = 0; v < nv; ++v) begin[v + 1] += begin[v];
+    std::vector<uint32_t> high(begin[nv]), fill(begin.begin(), begin.end() - 1);
     for (const auto& t : mesh.triangles)
         for (int k = 0; k < 3; ++k) {
             const uint32_t a = t[k], b = t[(k + 1) % 3];
             if (a == b) continue;
-            edges.push_back({std::min(a, b), std::max(a, b)});
+            high[fill[std::min(a, b)]++] = std::max(a, b);
             parent[root(a)] = root(b);
         }
-    std::sort(edges.begin(), edges.end());
     std::vector<uint8_t> open_root(nv, 0);
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        if (j - i != 2) open_root[root(edges[i].first)] = 1;
-        i = j;
+    for (uint32_t v = 0; v < nv; ++v) {
+        std::sort(high.begin() + begin[v], high.begin() + begin[v + 1]);
+        for (uint32_t i = begin[v]; i < begin[v + 1];) {
+            uint32_t j = i;
+            while (j < begin[v + 1] && high[j] == high[i]) ++j;
+            if (j - i != 2) open_root[root(v)] = 1; // boundary (1 face) or non-manifold (3+)
+            i = j;
+        }
     }
     ray_length_ = 4 * mesh.diagonal() + 1e-300; // from anywhere on the mesh to beyond it
     open_part_.resize(nv);

@@ -100,7 +100,9 @@ bool TriangleBvh::segment_hits(const Eigen::Vector3d& a, const Eigen::Vector3d& 
     const Eigen::Vector3d d = b - a;
     // Slab test of the segment against each box: long segments (rays out of the mesh)
     // would overlap most boxes if only the segment's own box were compared.
+    const Eigen::AlignedBox3d seg(a.cwiseMin(b), a.cwiseMax(b));
     auto misses = [&](const Eigen::AlignedBox3d& box) {
+        if (!box.intersects(seg)) return true; // cheap, and enough for short segments
         double lo = 0, hi = 1;
         for (int k = 0; k < 3; ++k) {
             if (d[k] == 0) {
