@@ -137,6 +137,10 @@ int run_convert(const ConvertArgs& a) {
     if (!a.output.empty() && a.inputs.size() != 1)
         throw Error(ErrorKind::Usage, "-o names one output file; with " + std::to_string(a.inputs.size()) +
                                           " inputs use --out-dir DIR");
+    // Caught before any work: a directory given to -o fails only at the final rename.
+    if (!a.output.empty() && (fs::is_directory(a.output) || a.output.back() == '/'))
+        throw Error(ErrorKind::Usage, "-o names an output file, and " + a.output + " is a directory: use --out-dir " +
+                                          a.output);
     if (!a.out_dir.empty()) {
         std::error_code ec;
         fs::create_directories(a.out_dir, ec);

@@ -146,6 +146,7 @@ TEST(ConvertCli, UsageErrorsExitOne) {
           "convert " + torus + " --bounds round", "convert " + torus + " --radius -1",
           "convert " + torus + " --tolerance nan", "convert " + torus + " --radius inf",
           "convert " + torus + " --append --tolerance 0.1 -o " + q(out.file("y.spt")), "convert " + torus + " " + torus + " -o " + q(out.file("x.spt")),
+          "convert " + torus + " -o " + q(out.path().string()), "convert " + torus + " -o " + q(out.file("new/")),
           std::string("frobnicate")}) {
         const auto r = run_command(spt_binary() + " " + args);
         EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.output;
