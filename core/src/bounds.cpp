@@ -1,4 +1,5 @@
 #include "bounds.hpp"
+#include "float_round.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -40,12 +41,7 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
     // Tight: try a few centres, each with the exact radius that encloses every sphere.
     // Centres are rounded to float first, so the radius measured is the stored centre's.
     std::vector<Eigen::Vector3d> candidates;
-    auto add = [&](const Eigen::Vector3d& x) {
-        // Scalar casts: GCC 12 with Eigen 3.4 was seen folding x.cast<float>().cast<double>()
-        // into x at -O2, which left the stored centre off the measured one.
-        volatile float fx = float(x.x()), fy = float(x.y()), fz = float(x.z());
-        candidates.emplace_back(double(fx), double(fy), double(fz));
-    };
+    auto add = [&](const Eigen::Vector3d& x) { candidates.push_back(float_rounded(x)); };
     Eigen::AlignedBox3f box;
     if (centre_box) box = *centre_box;
     else for (size_t i = 0; i < n; ++i) box.extend(c[i]);
@@ -64,7 +60,7 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
         // Candidates hold float values, so the radius measured is the stored centre's.
         if (cr < rad) rad = cr, node.center = Eigen::Vector3f(float(cand.x()), float(cand.y()), float(cand.z()));
     }
-    node.bv_radius = std::nextafter(float(rad * (1 + 1e-6)), INFINITY);
+    node.bv_radius = round_up(rad);
 }
 
 } // namespace spt::detail

@@ -1,5 +1,6 @@
 #include "spt/collision_model.hpp"
 #include "spt/error.hpp"
+#include "float_round.hpp"
 #include "triangle_tree.hpp"
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,7 @@
 namespace spt {
 namespace {
 
-// Float radius that still contains a double one after rounding.
-float round_up(double r) { return std::nextafter(float(r * (1 + 1e-6)), std::numeric_limits<float>::infinity()); }
+using detail::round_up;
 
 const SamplingTree& pick_tree(const SptDocument& doc, const std::string& name) {
     if (doc.trees.empty()) throw_bad_input(doc.mesh.name, "the document holds no sampling tree");

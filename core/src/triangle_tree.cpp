@@ -1,10 +1,10 @@
 // Top-down median split on triangle centroids, longest axis first; each node gets a
 // bounding sphere and a slab. Deterministic: std::nth_element with an index tie-break.
 #include "triangle_tree.hpp"
+#include "float_round.hpp"
 #include "spt/tri_tri.hpp"
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace spt::detail {
 namespace {
@@ -23,14 +23,11 @@ struct Builder {
         for (uint32_t k = begin; k < end; ++k)
             for (uint32_t v : e.triangles[e.tri_order[k]]) corners.push_back(e.positions[v]), box.extend(e.positions[v]);
         TriangleNode n;
-        const Eigen::Vector3d c = box.center();
-        // Volatile scalar casts: GCC 12 with Eigen 3.4 folds cast<float>().cast<double>() (bounds.cpp).
-        volatile float cx = float(c.x()), cy = float(c.y()), cz = float(c.z());
-        n.center[0] = cx, n.center[1] = cy, n.center[2] = cz;
-        const Eigen::Vector3d fc(double(n.center[0]), double(n.center[1]), double(n.center[2]));
+        const Eigen::Vector3d fc = float_rounded(box.center()); // measure around the stored centre
+        n.center[0] = float(fc.x()), n.center[1] = float(fc.y()), n.center[2] = float(fc.z());
         double r = 0;
         for (const auto& p : corners) r = std::max(r, (p - fc).norm());
-        n.radius = std::nextafter(float(r * (1 + 1e-6)), std::numeric_limits<float>::infinity());
+        n.radius = round_up(r);
         n.slab = fit_slab(corners);
         return n;
     }

@@ -1,0 +1,26 @@
+#pragma once
+// Geometry measured in double, stored in float: each stored bound must still hold
+// what it was measured to hold after rounding.
+#include <Eigen/Core>
+#include <cmath>
+#include <limits>
+
+namespace spt::detail {
+
+/// Smallest float at least r grown by 1e-6 relative: a stored radius or half-width that holds r.
+inline float round_up(double r) { return std::nextafter(float(r * (1 + 1e-6)), std::numeric_limits<float>::infinity()); }
+
+/// v rounded to float. Through a volatile, so that double(to_float(v)) is the value stored:
+/// GCC 12 with Eigen 3.4 was seen folding x.cast<float>().cast<double>() into x at -O2,
+/// which measured bounds around a point other than the stored one.
+inline float to_float(double v) {
+    volatile float f = float(v);
+    return f;
+}
+
+/// x rounded to float per coordinate (see to_float), read back as double.
+inline Eigen::Vector3d float_rounded(const Eigen::Vector3d& x) {
+    return {double(to_float(x.x())), double(to_float(x.y())), double(to_float(x.z()))};
+}
+
+} // namespace spt::detail
