@@ -159,6 +159,10 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
     r.components = components.size();
     r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
+    m.on_open_part.assign(m.triangles.size(), 0);
+    for (const auto& comp : components)
+        if (std::any_of(comp.begin(), comp.end(), [&](uint32_t f) { return face_on_open_edge[f] != 0; }))
+            for (uint32_t f : comp) m.on_open_part[f] = 1;
 
     if (options.fix_orientation) {
         // Breadth-first over manifold edges: a neighbour walking the shared edge the same
@@ -200,8 +204,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
                                  " edges disagree after re-winding)");
         // A closed part with negative volume is inside out.
         for (const auto& comp : components) {
-            const bool closed = std::none_of(comp.begin(), comp.end(), [&](uint32_t f) { return face_on_open_edge[f] != 0; });
-            if (closed && signed_volume(m, comp) < 0) {
+            if (!m.on_open_part[comp[0]] && signed_volume(m, comp) < 0) {
                 for (uint32_t f : comp) std::swap(m.triangles[f][1], m.triangles[f][2]);
                 ++r.inverted_components;
             }

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <numeric>
 #include <Eigen/Geometry>
 
 namespace spt {
@@ -69,42 +68,14 @@ void SampleSet::add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t
 
 RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
     : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion) {
-    // Connected parts (union-find over triangles), then which parts have an edge used by
-    // one face or by three or more.
+    // A vertex is on an open part if one of its faces is (prepare_mesh found the parts).
     const size_t nv = mesh.positions.size();
-    std::vector<uint32_t> parent(nv);
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto root = [&](uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    };
-    // Edges bucketed by their lower vertex (counting sort), then each small bucket sorted.
-    std::vector<uint32_t> begin(nv + 1, 0);
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k)
-            if (t[k] != t[(k + 1) % 3]) ++begin[std::min(t[k], t[(k + 1) % 3]) + 1];
-    for (size_t v = 0; v < nv; ++v) begin[v + 1] += begin[v];
-    std::vector<uint32_t> high(begin[nv]), fill(begin.begin(), begin.end() - 1);
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = t[k], b = t[(k + 1) % 3];
-            if (a == b) continue;
-            high[fill[std::min(a, b)]++] = std::max(a, b);
-            parent[root(a)] = root(b);
-        }
-    std::vector<uint8_t> open_root(nv, 0);
-    for (uint32_t v = 0; v < nv; ++v) {
-        std::sort(high.begin() + begin[v], high.begin() + begin[v + 1]);
-        for (uint32_t i = begin[v]; i < begin[v + 1];) {
-            uint32_t j = i;
-            while (j < begin[v + 1] && high[j] == high[i]) ++j;
-            if (j - i != 2) open_root[root(v)] = 1; // boundary (1 face) or non-manifold (3+)
-            i = j;
-        }
-    }
+    const bool known = mesh.on_open_part.size() == mesh.triangles.size();
+    open_part_.assign(nv, known ? 0 : 1);
+    for (size_t f = 0; known && f < mesh.triangles.size(); ++f)
+        if (mesh.on_open_part[f])
+            for (uint32_t v : mesh.triangles[f]) open_part_[v] = 1;
     ray_length_ = 4 * mesh.diagonal() + 1e-300; // from anywhere on the mesh to beyond it
-    open_part_.resize(nv);
-    for (uint32_t v = 0; v < nv; ++v) open_part_[v] = open_root[root(v)];
 }
 
 bool RadiusLimiter::back_exposed(const Eigen::Vector3d& p, const Eigen::Vector3d& n, uint32_t vertex) const {

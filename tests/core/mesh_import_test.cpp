@@ -184,3 +184,19 @@ TEST(MeshImport, ContentHashTellsMeshesApart) {
     EXPECT_EQ(a.content_hash(), meshgen::prepare(meshgen::box(1, 1, 1, 1), "c").mesh.content_hash());
     EXPECT_NE(a.content_hash(), b.content_hash());
 }
+
+TEST(MeshImport, OpenPartsAreMarkedPerTriangleAndClosedPartsAreNot) {
+    // A closed cube and an open sheet in one mesh, joined by nothing.
+    auto cube = meshgen::box(1, 1, 1, 1);
+    std::vector<Eigen::Vector3d> p = cube.positions;
+    std::vector<Triangle> t = cube.triangles;
+    const uint32_t base = uint32_t(p.size());
+    for (const auto& v : {Eigen::Vector3d(3, 0, 0), Eigen::Vector3d(4, 0, 0), Eigen::Vector3d(3, 1, 0)}) p.push_back(v);
+    t.push_back({base, base + 1, base + 2});
+    const ImportedMesh m = prepare_mesh("cube and sheet", std::move(p), std::move(t));
+    ASSERT_EQ(m.mesh.on_open_part.size(), m.mesh.triangles.size());
+    for (size_t f = 0; f < m.mesh.triangles.size(); ++f) {
+        const bool sheet = m.mesh.positions[m.mesh.triangles[f][0]].x() > 2;
+        EXPECT_EQ(m.mesh.on_open_part[f], sheet ? 1 : 0) << "face " << f;
+    }
+}

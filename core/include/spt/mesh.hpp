@@ -21,6 +21,8 @@ struct TriangleMesh {
     std::vector<Eigen::Vector3d> normals;   ///< unit outward vertex normals; zero where !normal_valid
     std::vector<uint8_t> normal_valid;      ///< 1 where the vertex has a computable normal
     std::vector<uint32_t> welded_index;     ///< for each vertex as the file had it, its welded vertex
+    std::vector<uint8_t> on_open_part;      ///< per triangle: 1 if its part (faces joined by edges) has a
+                                            ///< boundary or non-manifold edge; empty: unknown, treated as open
 
     /// Axis-aligned bounds of the vertex positions (min, max); zero box if empty.
     std::pair<Eigen::Vector3d, Eigen::Vector3d> bounds() const;

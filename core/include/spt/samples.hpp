@@ -83,7 +83,7 @@ public:
     float limit(const Eigen::Vector3f& p, const Eigen::Vector3f& n, float r_max, uint32_t vertex) const;
     /// True if the back of the surface at (p, n) can be seen from outside the mesh: a ray
     /// from p into the back half-space (along -n or 45 degrees off it) leaves the mesh
-    /// without crossing a face. Only parts with boundary or non-manifold edges are tested.
+    /// without crossing a face. Only vertices of parts with boundary or non-manifold edges are tested.
     bool back_exposed(const Eigen::Vector3d& p, const Eigen::Vector3d& n, uint32_t vertex) const;
     /// The protrusion allowance, model units.
     double protrusion() const { return protrusion_; }
@@ -96,7 +96,7 @@ private:
     std::unique_ptr<detail::TriangleBvh> bvh_;
     double protrusion_;
     double ray_length_ = 0;
-    std::vector<uint8_t> open_part_; // per vertex: its connected part has a boundary or non-manifold edge
+    std::vector<uint8_t> open_part_; // per vertex: one of its faces is on an open part (TriangleMesh::on_open_part)
 };
 
 /// How far the radius search looks, relative to the radius the rule asks for: room for a
