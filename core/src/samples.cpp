@@ -75,17 +75,16 @@ RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
     for (size_t f = 0; known && f < mesh.triangles.size(); ++f)
         if (mesh.on_open_part[f])
             for (uint32_t v : mesh.triangles[f]) open_part_[v] = 1;
-    ray_length_ = 4 * mesh.diagonal() + 1e-300; // from anywhere on the mesh to beyond it
+    ray_length_ = 4 * mesh.diagonal() + 1e-300; // from any point on the mesh to beyond it
 }
 
 bool RadiusLimiter::back_exposed(const Eigen::Vector3d& p, const Eigen::Vector3d& n, uint32_t vertex) const {
     if (vertex >= open_part_.size() || !open_part_[vertex]) return false;
-    const double far = ray_length_ + 4 * (p - mesh_.positions[vertex]).norm();
     const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
     const double c = std::sqrt(0.5);
     const Eigen::Vector3d dirs[] = {-n, c * (-n + t1), c * (-n - t1), c * (-n + t2), c * (-n - t2)};
     for (const auto& d : dirs)
-        if (!bvh_->segment_hits(p, p + far * d, 1e-9)) return true;
+        if (!bvh_->segment_hits(p, p + ray_length_ * d, 1e-9)) return true;
     return false;
 }
 
