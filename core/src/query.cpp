@@ -5,6 +5,10 @@
 #include "spt/sphere_block.hpp"
 #include "query_internal.hpp"
 #include <algorithm>
+#include <cstring>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 #include <cmath>
 #include <limits>
 
@@ -30,6 +34,7 @@ void prepare_scratch(QueryScratch& s, const CollisionModel& a, const CollisionMo
     if (s.ga_.size() < 3 * la) s.ga_.resize(3 * la), s.ia_.resize(la);
     if (s.gb_.size() < 3 * lb) s.gb_.resize(3 * lb), s.ib_.resize(lb);
     if (s.stack_.capacity() < 256) s.stack_.reserve(256);
+    if (s.visits_.size() < 256) s.visits_.resize(256);
     if (exact) {
         const size_t nv = b.exact().positions.size(), nt = b.exact().triangles.size();
         if (s.bverts_.size() < nv) s.bverts_.resize(nv), s.vert_stamp_.resize(nv, 0);
@@ -43,6 +48,11 @@ void prepare_scratch(QueryScratch& s, const CollisionModel& a, const CollisionMo
     }
     s.pairs_.clear();
     s.tri_pairs_.clear();
+}
+
+Eigen::Vector3f QueryRun::b_node_centre(uint32_t j) const {
+    const CompactNode& n = B.tree().nodes()[j];
+    return f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t;
 }
 
 void QueryRun::move_block(uint32_t j) {
@@ -133,71 +143,181 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     return hits;
 }
 
-float QueryRun::gap_a(uint32_t k, const Eigen::Vector3f& other, const float* reach) const {
-    const CompactNode& n = A.tree().nodes()[k];
-    return (Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) - other).norm() - (reach ? reach[k] : n.bv_radius);
+namespace {
+
+typedef float v4f __attribute__((vector_size(16)));
+typedef int32_t v4i __attribute__((vector_size(16)));
+
+v4f splat(float x) { return v4f{x, x, x, x}; }
+v4f sqrt4(v4f v) {
+#if defined(__SSE__)
+    return v4f(_mm_sqrt_ps(__m128(v)));
+#else
+    return v4f{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
+#endif
 }
 
-float QueryRun::gap_b(uint32_t k, const Eigen::Vector3f& other, const float* reach) const {
-    const CompactNode& n = B.tree().nodes()[k];
-    const Eigen::Vector3f c = f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t;
-    return (c - other).norm() - (reach ? reach[k] : n.bv_radius);
+// Lane of the smallest value among the lanes set in `mask`, or -1 if none is set.
+int lane_of_min(v4f v, v4i mask) {
+    v4f m = v < __builtin_shuffle(v, v4i{1, 0, 3, 2}) ? v : __builtin_shuffle(v, v4i{1, 0, 3, 2});
+    m = m < __builtin_shuffle(m, v4i{2, 3, 0, 1}) ? m : __builtin_shuffle(m, v4i{2, 3, 0, 1});
+    const v4i hit = (v == m) & mask;
+    for (int k = 0; k < 4; ++k)
+        if (hit[k]) return k;
+    return -1;
 }
+
+constexpr uint32_t kActive = 0x80000000u; // a stack reference to an active node
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// The children of inner node i, with each inner child replaced by its own two
+// children: two to four nodes tested in one 4-lane step, so a walk to a leaf takes
+// half the steps. Lanes past `count` hold NaN centres, which fail every test.
+struct Grandchildren {
+    v4f x, y, z, r;
+    uint32_t ref[4];
+    uint32_t count = 0;
+    Grandchildren(const std::vector<CompactNode>& nodes, uint32_t i, const float* reach) {
+        static const CompactNode none = {{kNaN, kNaN, kNaN}, 0, 0, 0, 0, 0};
+        const CompactNode* n[4] = {&none, &none, &none, &none};
+        float lr[4] = {0, 0, 0, 0};
+        auto add = [&](uint32_t c) {
+            n[count] = &nodes[c];
+            lr[count] = reach ? reach[c] : nodes[c].bv_radius;
+            ref[count++] = nodes[c].is_active() ? (kActive | c) : c;
+        };
+        for (uint32_t c : {i + 1, nodes[i].first}) {
+            if (nodes[c].is_active()) {
+                add(c);
+            } else {
+                add(c + 1);
+                add(nodes[c].first);
+            }
+        }
+        // Built from scalars, not loaded from the scalar stores above (a wide load of
+        // narrow stores stalls).
+        x = v4f{n[0]->center[0], n[1]->center[0], n[2]->center[0], n[3]->center[0]};
+        y = v4f{n[0]->center[1], n[1]->center[1], n[2]->center[1], n[3]->center[1]};
+        z = v4f{n[0]->center[2], n[1]->center[2], n[2]->center[2], n[3]->center[2]};
+        r = v4f{lr[0], lr[1], lr[2], lr[3]};
+    }
+};
+
+// The stack is a scratch vector used up to `size`; it grows (rarely) by doubling.
+struct VisitStack {
+    std::vector<detail::NodePairVisit>& buf;
+    size_t size = 0;
+    void make_room(size_t n) {
+        if (size + n > buf.size()) buf.resize(2 * buf.size() + n);
+    }
+};
+
+// Field by field: a visit built whole on the stack and copied with wide moves makes
+// the copy wait on narrower stores (store forwarding fails; this doubled the time of
+// a walk to a contact).
+void push_visit(VisitStack& stack, uint32_t a, uint32_t b, float ax, float ay, float az, const Eigen::Vector3f& cb,
+                float ra, float rb, float d2) {
+    detail::NodePairVisit& v = stack.buf[stack.size++];
+    v.a = a, v.b = b;
+    v.ca[0] = ax, v.ca[1] = ay, v.ca[2] = az;
+    v.cb[0] = cb.x(), v.cb[1] = cb.y(), v.cb[2] = cb.z();
+    v.ra = ra, v.rb = rb, v.d2 = d2;
+}
+
+} // namespace
 
 void QueryRun::run() {
     const auto &an = A.tree().nodes(), &bn = B.tree().nodes();
     if (an.empty() || bn.empty()) return;
     const bool bounds = o.level == QueryLevel::Bounds;
+    const bool any = o.mode == QueryMode::Any, deepest = o.mode == QueryMode::Deepest;
     const float* reach_a = bounds ? A.bounds_reach().data() : nullptr;
     const float* reach_b = bounds ? B.bounds_reach().data() : nullptr;
-    auto& stack = s.stack_;
-    stack.clear();
-    stack.push_back({0, 0});
-    while (!stack.empty()) {
-        const auto [i, j] = stack.back();
-        stack.pop_back();
-        ++res.counters.node_pairs;
-        const CompactNode &na = an[i], &nb = bn[j];
-        const Eigen::Vector3f ca(na.center[0], na.center[1], na.center[2]);
-        const Eigen::Vector3f cb = f.R * Eigen::Vector3f(nb.center[0], nb.center[1], nb.center[2]) + f.t;
-        const float ra = reach_a ? reach_a[i] : na.bv_radius, rb = reach_b ? reach_b[j] : nb.bv_radius;
-        const float sum = ra + rb + o.inflate;
-        const float d2 = (ca - cb).squaredNorm();
+    const float pad = o.inflate + f.margin;
+    VisitStack stack{s.visits_};
+    stack.make_room(1);
+    {
+        const CompactNode &root_a = an[0], &root_b = bn[0];
+        const Eigen::Vector3f ca(root_a.center[0], root_a.center[1], root_a.center[2]);
+        const Eigen::Vector3f cb = f.R * Eigen::Vector3f(root_b.center[0], root_b.center[1], root_b.center[2]) + f.t;
+        const float ra = reach_a ? reach_a[0] : root_a.bv_radius;
+        const float rb = reach_b ? reach_b[0] : root_b.bv_radius;
         ++res.counters.bound_tests;
-        const float prune = sum + f.margin;
-        if (d2 > prune * prune) continue;
+        const float d2 = (ca - cb).squaredNorm(), prune = ra + rb + pad;
+        if (d2 > prune * prune) return;
+        push_visit(stack, root_a.is_active() ? kActive : 0, root_b.is_active() ? kActive : 0, ca.x(), ca.y(), ca.z(),
+                   cb, ra, rb, d2);
+    }
+    // Every pair on the stack overlaps: it was tested when pushed, four children at a
+    // time, and the same distances order the descent.
+    while (stack.size != 0) {
+        const detail::NodePairVisit& top = stack.buf[--stack.size];
+        const uint32_t ref_a = top.a, ref_b = top.b;
+        const Eigen::Vector3f ca(top.ca[0], top.ca[1], top.ca[2]), cb(top.cb[0], top.cb[1], top.cb[2]);
+        const float ra = top.ra, rb = top.rb, d2 = top.d2;
+        ++res.counters.node_pairs;
         // Deepest: no sphere below this pair can be deeper than the bounds' overlap.
-        if (o.mode == QueryMode::Deepest && have_best && !(prune - std::sqrt(d2) > float(res.deepest.depth))) continue;
-        const bool leaf_a = na.is_active(), leaf_b = nb.is_active();
+        if (deepest && have_best && !(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth))) continue;
+        const bool leaf_a = ref_a & kActive, leaf_b = ref_b & kActive;
         if (leaf_a && leaf_b) {
+            const uint32_t i = ref_a & ~kActive, j = ref_b & ~kActive;
+            // B's centre moved as the brute-force reference moves it (4-lane rounding differs by ulps).
+            const Eigen::Vector3f cb_leaf = b_node_centre(j);
             if (bounds) {
-                if (!(d2 < sum * sum)) continue;
+                const float sum = ra + rb + o.inflate, d2_leaf = (ca - cb_leaf).squaredNorm();
+                if (!(d2_leaf < sum * sum)) continue;
                 res.collide = true;
-                record(i, j, ca, cb, sum, na.bv_radius, d2);
-                if (o.mode == QueryMode::Any) return;
+                record(i, j, ca, cb_leaf, sum, an[i].bv_radius, d2_leaf);
+                if (any) return;
                 continue;
             }
-            if (sphere_leaf_pair(i, j, ca, cb)) {
+            if (sphere_leaf_pair(i, j, ca, cb_leaf)) {
                 res.collide = true;
-                if (o.mode == QueryMode::Any) return;
+                if (any) return;
             }
             continue;
         }
-        // Descend the larger sphere (paper: both children are visited). Any takes the nearer
-        // child first so a contact comes sooner (query_microbench: 18% faster; for deepest the
-        // ordering cost more than it saved).
-        const bool order = o.mode == QueryMode::Any;
-        if (leaf_b || (!leaf_a && ra >= rb)) {
-            const uint32_t l = i + 1, r = na.first;
-            const bool right_first = order && gap_a(r, cb, reach_a) < gap_a(l, cb, reach_a);
-            stack.push_back({right_first ? l : r, j});
-            stack.push_back({right_first ? r : l, j});
-        } else {
-            const uint32_t l = j + 1, r = nb.first;
-            const bool right_first = order && gap_b(r, ca, reach_b) < gap_b(l, ca, reach_b);
-            stack.push_back({i, right_first ? l : r});
-            stack.push_back({i, right_first ? r : l});
+        // Descend the larger sphere (paper: both children are visited; here the
+        // grandchildren of an inner child too).
+        const bool side_a = leaf_b || (!leaf_a && ra >= rb);
+        const Grandchildren w = side_a ? Grandchildren(an, ref_a, reach_a) : Grandchildren(bn, ref_b, reach_b);
+        v4f x = w.x, y = w.y, z = w.z;
+        Eigen::Vector3f other = cb;
+        if (!side_a) { // B's children into A's frame
+            const Eigen::Matrix3f& R = f.R;
+            const v4f bx = x, by = y, bz = z;
+            x = splat(R(0, 0)) * bx + splat(R(0, 1)) * by + splat(R(0, 2)) * bz + splat(f.t.x());
+            y = splat(R(1, 0)) * bx + splat(R(1, 1)) * by + splat(R(1, 2)) * bz + splat(f.t.y());
+            z = splat(R(2, 0)) * bx + splat(R(2, 1)) * by + splat(R(2, 2)) * bz + splat(f.t.z());
+            other = ca;
         }
+        const v4f dx = x - splat(other.x()), dy = y - splat(other.y()), dz = z - splat(other.z());
+        const v4f dd = dx * dx + dy * dy + dz * dz;
+        const v4f r = w.r;
+        const v4f limit = r + splat((side_a ? rb : ra) + pad);
+        const v4i pass = dd <= limit * limit; // false for an empty lane (NaN centre)
+        float lx[4], ly[4], lz[4], ld2[4], lr[4];
+        int32_t lpass[4];
+        std::memcpy(lx, &x, sizeof lx), std::memcpy(ly, &y, sizeof ly), std::memcpy(lz, &z, sizeof lz);
+        std::memcpy(ld2, &dd, sizeof ld2), std::memcpy(lr, &r, sizeof lr), std::memcpy(lpass, &pass, sizeof lpass);
+        res.counters.bound_tests += w.count;
+        // Any: the nearest child is pushed last, so it is taken first and a contact comes sooner.
+        int nearest = -1;
+        if (any) {
+            const v4f inf = splat(std::numeric_limits<float>::infinity());
+            nearest = lane_of_min(pass ? sqrt4(dd) - r : inf, pass);
+        }
+        stack.make_room(4);
+        auto push = [&](int k) {
+            if (side_a)
+                push_visit(stack, w.ref[k], ref_b, lx[k], ly[k], lz[k], cb, lr[k], rb, ld2[k]);
+            else
+                push_visit(stack, ref_a, w.ref[k], ca.x(), ca.y(), ca.z(), Eigen::Vector3f(lx[k], ly[k], lz[k]), ra,
+                           lr[k], ld2[k]);
+        };
+        for (int k = 0; k < 4; ++k)
+            if (lpass[k] && k != nearest) push(k);
+        if (nearest >= 0) push(nearest);
     }
 }
 

@@ -24,8 +24,7 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
                 if (!bn[j].is_active()) continue;
                 ++run.res.counters.bound_tests;
                 const Eigen::Vector3f ca(an[i].center[0], an[i].center[1], an[i].center[2]);
-                const Eigen::Vector3f cb =
-                    run.f.R * Eigen::Vector3f(bn[j].center[0], bn[j].center[1], bn[j].center[2]) + run.f.t;
+                const Eigen::Vector3f cb = run.b_node_centre(j);
                 const float sum = an[i].bv_radius + bn[j].bv_radius + options.inflate;
                 const float d2 = (ca - cb).squaredNorm();
                 if (!(d2 < sum * sum)) continue;

@@ -22,10 +22,9 @@ struct QueryRun {
     QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const QueryOptions& options,
              QueryScratch& scratch);
     void run();
-    // Gap between a child of A (or B) and the other node's centre: its distance less its reach.
-    float gap_a(uint32_t k, const Eigen::Vector3f& other, const float* reach) const;
-    float gap_b(uint32_t k, const Eigen::Vector3f& other, const float* reach) const;
     void move_block(uint32_t node_b);
+    // Centre of B's compact node j in A's frame.
+    Eigen::Vector3f b_node_centre(uint32_t j) const;
     const Eigen::Vector3d& b_vertex(uint32_t v);
     const float* b_tri_sphere(uint32_t tri);
     bool triangle_pair(uint32_t ta, uint32_t tb);

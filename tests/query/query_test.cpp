@@ -76,6 +76,51 @@ TEST(Query, EveryLevelAndModeMatchesBruteForceOnSmallMeshes) {
     }
 }
 
+// The walk tests the grandchildren of a node in one step; trees whose children are a
+// mix of active and inner nodes at every level, or that are a single active node,
+// are where a lane could go missing.
+TEST(Query, OneSidedAndSingleLeafTreesMatchBruteForce) {
+    const test::Object& b = box();
+    const SampleSet& samples = torus().doc.samples;
+    const uint32_t n = uint32_t(samples.size());
+    SptDocument doc = torus().doc;
+    SamplingTree one("single leaf", n);
+    one.assign_radii(samples, {});
+    one.compute_bounds(samples, BoundsMethod::Tight);
+    SamplingTree deep("one-sided", n);
+    NodeId node = root_id();
+    for (uint32_t i = 0; i < 45; ++i) { // peel off 3 samples a level: 45 levels deep
+        ASSERT_TRUE(deep.split(node, {3 * i, 3 * i + 1, 3 * i + 2}, samples));
+        node = right_child(node);
+    }
+    doc.trees = {one, deep};
+    std::mt19937 rng(5);
+    QueryScratch s1, s2;
+    int collisions = 0;
+    for (const std::string tree : {"single leaf", "one-sided"}) {
+        const CollisionModel a(doc, torus().mesh, tree);
+        for (int it = 0; it < 30; ++it) {
+            const Pose p = random_pose(rng, 0.9 + 0.05 * it);
+            for (QueryLevel level : {QueryLevel::Bounds, QueryLevel::Spheres}) {
+                const QueryResult ref = collide_brute_force(a, b.model, p, opts(level, QueryMode::All), s2);
+                const std::set<std::pair<uint32_t, uint32_t>> ref_pairs = sphere_pairs(s2);
+                EXPECT_EQ(collide_relative(a, b.model, p, opts(level, QueryMode::Any), s1).collide, ref.collide);
+                EXPECT_EQ(collide_relative(a, b.model, p, opts(level, QueryMode::All), s1).collide, ref.collide);
+                EXPECT_EQ(sphere_pairs(s1), ref_pairs) << tree << " level " << int(level) << " pose " << it;
+                // B against A too: the one-sided tree on the transformed side.
+                const Pose q = p.inverse();
+                EXPECT_EQ(collide_relative(b.model, a, q, opts(level, QueryMode::Any), s1).collide, ref.collide);
+                const QueryResult deep_ab = collide_relative(a, b.model, p, opts(level, QueryMode::Deepest), s1);
+                const QueryResult ref_deep = collide_brute_force(a, b.model, p, opts(level, QueryMode::Deepest), s2);
+                EXPECT_EQ(deep_ab.deepest.depth, ref_deep.deepest.depth);
+                collisions += ref.collide;
+            }
+        }
+    }
+    EXPECT_GT(collisions, 20);
+    EXPECT_LT(collisions, 100);
+}
+
 TEST(Query, ExactFindsTrianglesCrossingWhereNoSpheresOverlap) {
     // Two coarse boxes (2 triangles a face) with small spheres: a corner of B pokes
     // through the middle of A's face, far from every sample.

@@ -26,6 +26,17 @@ struct TrianglePair {
     uint32_t a = 0, b = 0; ///< triangle indices in each mesh
 };
 
+namespace detail {
+// A node pair on the traversal stack: its bounding spheres overlap. a and b are
+// CompactNode indices, the top bit set for an active node; centres in A's frame.
+struct NodePairVisit {
+    uint32_t a, b;
+    float ca[3], cb[3];
+    float ra, rb; // radii the pair was tested with
+    float d2;     // squared centre distance
+};
+} // namespace detail
+
 /// Scratch buffers of one query at a time.
 class QueryScratch {
 public:
@@ -39,7 +50,8 @@ private:
     friend void prepare_scratch(QueryScratch&, const CollisionModel&, const CollisionModel&, bool);
     friend QueryResult collide_brute_force(const CollisionModel&, const CollisionModel&, const Pose&,
                                            const QueryOptions&, QueryScratch&);
-    std::vector<std::pair<uint32_t, uint32_t>> stack_;
+    std::vector<std::pair<uint32_t, uint32_t>> stack_;   // triangle-tree walk (level exact)
+    std::vector<detail::NodePairVisit> visits_;          // sampling-tree walk
     std::vector<float> bx_, by_, bz_;          // B's spheres in A's frame (lazy, by node)
     std::vector<uint32_t> node_stamp_;         // epoch at which B's node block was moved
     std::vector<Eigen::Vector3d> bverts_;      // B's vertices in A's frame (lazy)
