@@ -130,15 +130,22 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     auto sphere_a = [&](uint32_t k) { return cull ? s.ia_[k] : na.first + k; };
     auto sphere_b = [&](uint32_t k) { return cull ? s.ib_[k] : nb.first + k; };
     auto centre = [](const float* x, const float* y, const float* z, uint32_t k) { return Eigen::Vector3f(x[k], y[k], z[k]); };
+    if (o.mode != QueryMode::All) { // any and deepest want only the closest pair (the first, on ties)
+        for (uint32_t p = 0; p < count_a; ++p)
+            for (uint32_t q = 0; q < count_b; ++q)
+                if (d2[size_t(p) * stride + q] == best) {
+                    record(sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach, na.ss_radius,
+                           best);
+                    return 1;
+                }
+    }
     uint32_t hits = 0;
     for (uint32_t p = 0; p < count_a; ++p)
         for (uint32_t q = 0; q < count_b; ++q) {
             const float v = d2[size_t(p) * stride + q];
             if (!(v < limit2)) continue;
             ++hits;
-            // Any and Deepest want only the smallest distance; All wants each pair.
-            if (o.mode == QueryMode::All || v == best)
-                record(sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach, na.ss_radius, v);
+            record(sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach, na.ss_radius, v);
         }
     return hits;
 }
