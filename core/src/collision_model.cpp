@@ -37,10 +37,9 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         const Eigen::Vector3d &a = e.positions[t[0]], &b = e.positions[t[1]], &c = e.positions[t[2]];
         const Eigen::Vector3d centre = (a + b + c) / 3.0;
         const double r = std::max({(a - centre).norm(), (b - centre).norm(), (c - centre).norm()});
-        e.tri_sphere[4 * f + 0] = float(centre.x()), e.tri_sphere[4 * f + 1] = float(centre.y());
-        e.tri_sphere[4 * f + 2] = float(centre.z());
         // The float centre moved by rounding: grow the radius by that distance.
-        const Eigen::Vector3d fc(e.tri_sphere[4 * f], e.tri_sphere[4 * f + 1], e.tri_sphere[4 * f + 2]);
+        const Eigen::Vector3d fc = detail::float_rounded(centre);
+        e.tri_sphere[4 * f + 0] = float(fc.x()), e.tri_sphere[4 * f + 1] = float(fc.y()), e.tri_sphere[4 * f + 2] = float(fc.z());
         e.tri_sphere[4 * f + 3] = round_up(r + (fc - centre).norm());
         reach_ = std::max({reach_, a.norm(), b.norm(), c.norm()});
     }

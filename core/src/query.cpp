@@ -246,7 +246,7 @@ void QueryRun::run() {
     {
         const CompactNode &root_a = an[0], &root_b = bn[0];
         const Eigen::Vector3f ca(root_a.center[0], root_a.center[1], root_a.center[2]);
-        const Eigen::Vector3f cb = f.R * Eigen::Vector3f(root_b.center[0], root_b.center[1], root_b.center[2]) + f.t;
+        const Eigen::Vector3f cb = b_node_centre(0);
         const float ra = reach_a ? reach_a[0] : root_a.bv_radius;
         const float rb = reach_b ? reach_b[0] : root_b.bv_radius;
         ++res.counters.bound_tests;
