@@ -55,7 +55,7 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
         if (!n.is_active()) continue;
         max_leaf_ = std::max(max_leaf_, n.count);
         for (uint32_t k = n.first; k < n.first + n.count; ++k)
-            reach_ = std::max(reach_, Eigen::Vector3d(tree_.x()[k], tree_.y()[k], tree_.z()[k]).norm() + n.ss_radius);
+            reach_ = std::max(reach_, tree_.sphere_centre(n, k).cast<double>().norm() + n.ss_radius);
     }
     const auto& nodes = tree_.nodes();
     bounds_reach_.assign(nodes.size(), 0);

@@ -18,7 +18,7 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) {
     size_t total = 0;
     for (const TreeNode* n : all) total += n->samples.size();
     const size_t padded = total + 8;
-    x_.assign(padded, 0), y_.assign(padded, 0), z_.assign(padded, 0);
+    centres_.assign(3 * total + 8, 0);
     nx_.assign(padded, 0), ny_.assign(padded, 0), nz_.assign(padded, 0);
     sample_index_.assign(total, 0);
     nodes_.reserve(all.size());
@@ -41,9 +41,11 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) {
         if (n->active) {
             c.first = uint32_t(sphere);
             c.count = uint32_t(n->samples.size());
-            for (uint32_t s : n->samples) {
+            float* block = centres_.data() + 3 * sphere;
+            for (uint32_t k = 0; k < c.count; ++k) {
+                const uint32_t s = n->samples[k];
                 const Eigen::Vector3f ctr = sphere_center(samples.points[s], samples.normals[s], n->ss_radius);
-                x_[sphere] = ctr.x(), y_[sphere] = ctr.y(), z_[sphere] = ctr.z();
+                block[k] = ctr.x(), block[c.count + k] = ctr.y(), block[2 * c.count + k] = ctr.z();
                 nx_[sphere] = to_snorm8(samples.normals[s].x());
                 ny_[sphere] = to_snorm8(samples.normals[s].y());
                 nz_[sphere] = to_snorm8(samples.normals[s].z());
@@ -61,7 +63,7 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) {
 }
 
 size_t CompactTree::memory_bytes() const {
-    return nodes_.capacity() * sizeof(CompactNode) + (x_.capacity() + y_.capacity() + z_.capacity()) * sizeof(float) +
+    return nodes_.capacity() * sizeof(CompactNode) + centres_.capacity() * sizeof(float) +
            (nx_.capacity() + ny_.capacity() + nz_.capacity()) + sample_index_.capacity() * sizeof(uint32_t);
 }
 

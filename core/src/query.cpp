@@ -25,12 +25,9 @@ QueryFrame::QueryFrame(const CollisionModel& a, const CollisionModel& b, const P
 }
 
 void prepare_scratch(QueryScratch& s, const CollisionModel& a, const CollisionModel& b, bool exact) {
-    const CompactTree& tb = b.tree();
-    const size_t nb_spheres = tb.sphere_count() + 8;
-    if (s.bx_.size() < nb_spheres) s.bx_.resize(nb_spheres), s.by_.resize(nb_spheres), s.bz_.resize(nb_spheres);
-    if (s.node_stamp_.size() < tb.nodes().size()) s.node_stamp_.resize(tb.nodes().size(), 0);
     const size_t la = a.max_leaf() + 8, lb = b.max_leaf() + 8;
     if (s.d2_.size() < la * lb) s.d2_.resize(la * lb);
+    if (s.moved_b_.size() < 3 * lb) s.moved_b_.resize(3 * lb);
     if (s.ga_.size() < 3 * la) s.ga_.resize(3 * la), s.ia_.resize(la);
     if (s.gb_.size() < 3 * lb) s.gb_.resize(3 * lb), s.ib_.resize(lb);
     if (s.stack_.capacity() < 256) s.stack_.reserve(256);
@@ -41,7 +38,6 @@ void prepare_scratch(QueryScratch& s, const CollisionModel& a, const CollisionMo
         if (s.btri_.size() < 4 * nt) s.btri_.resize(4 * nt), s.tri_stamp_.resize(nt, 0);
     }
     if (++s.epoch_ == 0) { // wrapped: forget every stamp
-        std::fill(s.node_stamp_.begin(), s.node_stamp_.end(), 0);
         std::fill(s.vert_stamp_.begin(), s.vert_stamp_.end(), 0);
         std::fill(s.tri_stamp_.begin(), s.tri_stamp_.end(), 0);
         s.epoch_ = 1;
@@ -55,25 +51,24 @@ Eigen::Vector3f QueryRun::b_node_centre(uint32_t j) const {
     return f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t;
 }
 
-void QueryRun::move_block(uint32_t j) {
-    if (s.node_stamp_[j] == s.epoch_) return;
-    s.node_stamp_[j] = s.epoch_;
+void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
     const CompactNode& n = B.tree().nodes()[j];
-    const float *x = B.tree().x(), *y = B.tree().y(), *z = B.tree().z();
+    const float* c = B.tree().centres(n);
+    const float *bx = c, *by = c + n.count, *bz = c + 2 * n.count;
     const Eigen::Matrix3f& r = f.R;
-    for (uint32_t k = n.first; k < n.first + n.count; ++k) {
-        s.bx_[k] = r(0, 0) * x[k] + r(0, 1) * y[k] + r(0, 2) * z[k] + f.t.x();
-        s.by_[k] = r(1, 0) * x[k] + r(1, 1) * y[k] + r(1, 2) * z[k] + f.t.y();
-        s.bz_[k] = r(2, 0) * x[k] + r(2, 1) * y[k] + r(2, 2) * z[k] + f.t.z();
+    for (uint32_t k = 0; k < n.count; ++k) {
+        x[k] = r(0, 0) * bx[k] + r(0, 1) * by[k] + r(0, 2) * bz[k] + f.t.x();
+        y[k] = r(1, 0) * bx[k] + r(1, 1) * by[k] + r(1, 2) * bz[k] + f.t.y();
+        z[k] = r(2, 0) * bx[k] + r(2, 1) * by[k] + r(2, 2) * bz[k] + f.t.z();
     }
 }
 
-void QueryRun::record(uint32_t a, uint32_t b, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float reach,
-                      float ra, float d2) {
+void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
+                      const Eigen::Vector3f& cb, float reach, float ra, float d2) {
     const float dist = std::sqrt(d2);
     const float depth = reach - dist;
     if (o.mode == QueryMode::All) {
-        s.pairs_.push_back({a, b, depth, reach});
+        s.pairs_.push_back({a, b, node_a, node_b, depth, reach});
         return;
     }
     if (have_best && !(depth > res.deepest.depth)) return;
@@ -89,9 +84,13 @@ void QueryRun::record(uint32_t a, uint32_t b, const Eigen::Vector3f& ca, const E
 uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb) {
     const CompactTree &ta = A.tree(), &tb = B.tree();
     const CompactNode &na = ta.nodes()[i], &nb = tb.nodes()[j];
-    move_block(j);
-    const float *ax = ta.x() + na.first, *ay = ta.y() + na.first, *az = ta.z() + na.first;
-    const float *bx = s.bx_.data() + nb.first, *by = s.by_.data() + nb.first, *bz = s.bz_.data() + nb.first;
+    // Lazy update: B's spheres are moved only here, for the leaf the walk reached,
+    // into a small buffer that stays in L1 (a whole-model copy would not).
+    const size_t lb = s.moved_b_.size() / 3;
+    float *bx = s.moved_b_.data(), *by = bx + lb, *bz = by + lb;
+    move_leaf(j, bx, by, bz);
+    const float* block_a = ta.centres(na);
+    const float *ax = block_a, *ay = block_a + na.count, *az = block_a + 2 * na.count;
     uint32_t count_a = na.count, count_b = nb.count;
     const bool cull = o.normal_culling;
     if (cull) {
@@ -99,20 +98,20 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
         Eigen::Vector3f u = cb - ca;
         const float len = u.norm();
         const float limit = -o.cull_cos * 127.0f; // normals are snorm8
-        const size_t la = s.ia_.size(), lb = s.ib_.size();
+        const size_t la = s.ia_.size();
         float *gax = s.ga_.data(), *gay = gax + la, *gaz = gay + la;
         float *gbx = s.gb_.data(), *gby = gbx + lb, *gbz = gby + lb;
         if (len > 0) {
             u /= len;
             const Eigen::Vector3f ub = -(f.R.transpose() * u);
             count_a = 0;
-            for (uint32_t k = na.first; k < na.first + na.count; ++k)
+            for (uint32_t p = 0, k = na.first; p < na.count; ++p, ++k)
                 if (ta.nx()[k] * u.x() + ta.ny()[k] * u.y() + ta.nz()[k] * u.z() >= limit)
-                    gax[count_a] = ta.x()[k], gay[count_a] = ta.y()[k], gaz[count_a] = ta.z()[k], s.ia_[count_a++] = k;
+                    gax[count_a] = ax[p], gay[count_a] = ay[p], gaz[count_a] = az[p], s.ia_[count_a++] = k;
             count_b = 0;
-            for (uint32_t k = nb.first; k < nb.first + nb.count; ++k)
+            for (uint32_t q = 0, k = nb.first; q < nb.count; ++q, ++k)
                 if (tb.nx()[k] * ub.x() + tb.ny()[k] * ub.y() + tb.nz()[k] * ub.z() >= limit)
-                    gbx[count_b] = s.bx_[k], gby[count_b] = s.by_[k], gbz[count_b] = s.bz_[k], s.ib_[count_b++] = k;
+                    gbx[count_b] = bx[q], gby[count_b] = by[q], gbz[count_b] = bz[q], s.ib_[count_b++] = k;
             ax = gax, ay = gay, az = gaz, bx = gbx, by = gby, bz = gbz;
         } else {
             for (uint32_t k = 0; k < na.count; ++k) s.ia_[k] = na.first + k;
@@ -134,8 +133,8 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
         for (uint32_t p = 0; p < count_a; ++p)
             for (uint32_t q = 0; q < count_b; ++q)
                 if (d2[size_t(p) * stride + q] == best) {
-                    record(sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach, na.ss_radius,
-                           best);
+                    record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach,
+                           na.ss_radius, best);
                     return 1;
                 }
     }
@@ -145,7 +144,8 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
             const float v = d2[size_t(p) * stride + q];
             if (!(v < limit2)) continue;
             ++hits;
-            record(sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach, na.ss_radius, v);
+            record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach, na.ss_radius,
+                   v);
         }
     return hits;
 }
@@ -274,7 +274,7 @@ void QueryRun::run() {
                 const float sum = ra + rb + o.inflate, d2_leaf = (ca - cb_leaf).squaredNorm();
                 if (!(d2_leaf < sum * sum)) continue;
                 res.collide = true;
-                record(i, j, ca, cb_leaf, sum, an[i].bv_radius, d2_leaf);
+                record(i, j, i, j, ca, cb_leaf, sum, an[i].bv_radius, d2_leaf);
                 if (any) return;
                 continue;
             }

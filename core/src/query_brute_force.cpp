@@ -2,15 +2,10 @@
 #include "query_internal.hpp"
 #include "spt/sphere_block.hpp"
 #include "spt/tri_tri.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace spt {
-
-void sphere_radii(const CompactTree& t, std::vector<float>& out) {
-    out.assign(t.sphere_count(), 0);
-    for (const CompactNode& n : t.nodes())
-        for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k) out[k] = n.ss_radius;
-}
 
 QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                 const QueryOptions& options, QueryScratch& scratch) {
@@ -29,27 +24,35 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
                 const float d2 = (ca - cb).squaredNorm();
                 if (!(d2 < sum * sum)) continue;
                 run.res.collide = true;
-                run.record(i, j, ca, cb, sum, an[i].bv_radius, d2);
+                run.record(i, j, i, j, ca, cb, sum, an[i].bv_radius, d2);
             }
     } else if (options.level == QueryLevel::Spheres) {
-        for (uint32_t j = 0; j < bn.size(); ++j)
-            if (bn[j].is_active()) run.move_block(j);
-        std::vector<float> ra, rb;
-        sphere_radii(a.tree(), ra);
-        sphere_radii(b.tree(), rb);
-        const uint32_t nb = uint32_t(b.tree().sphere_count());
-        std::vector<float> row(sphere_block_stride(nb));
-        const QueryScratch& s = scratch;
-        for (uint32_t i = 0; i < a.tree().sphere_count() && !done(); ++i) {
-            const float *x = a.tree().x() + i, *y = a.tree().y() + i, *z = a.tree().z() + i;
-            sphere_block_d2(x, y, z, 1, s.bx_.data(), s.by_.data(), s.bz_.data(), nb, row.data());
+        // Every sphere as one column per coordinate, B's moved as the tree query moves them.
+        const size_t na = a.tree().sphere_count(), nb = b.tree().sphere_count();
+        std::vector<float> ax(na), ay(na), az(na), bx(nb + 8), by(nb + 8), bz(nb + 8), ra(na), rb(nb);
+        std::vector<uint32_t> node_a(na), node_b(nb);
+        for (uint32_t i = 0; i < an.size(); ++i)
+            for (uint32_t k = an[i].first; an[i].is_active() && k < an[i].first + an[i].count; ++k) {
+                const Eigen::Vector3f c = a.tree().sphere_centre(an[i], k);
+                ax[k] = c.x(), ay[k] = c.y(), az[k] = c.z(), ra[k] = an[i].ss_radius, node_a[k] = i;
+            }
+        for (uint32_t j = 0; j < bn.size(); ++j) {
+            if (!bn[j].is_active()) continue;
+            const uint32_t k = bn[j].first;
+            run.move_leaf(j, &bx[k], &by[k], &bz[k]);
+            std::fill(rb.begin() + k, rb.begin() + k + bn[j].count, bn[j].ss_radius);
+            std::fill(node_b.begin() + k, node_b.begin() + k + bn[j].count, j);
+        }
+        std::vector<float> row(sphere_block_stride(uint32_t(nb)));
+        for (uint32_t i = 0; i < na && !done(); ++i) {
+            sphere_block_d2(&ax[i], &ay[i], &az[i], 1, bx.data(), by.data(), bz.data(), uint32_t(nb), row.data());
             run.res.counters.sphere_tests += nb;
             for (uint32_t k = 0; k < nb && !done(); ++k) {
                 const float reach = ra[i] + rb[k] + options.inflate;
                 if (!(row[k] < reach * reach)) continue;
                 run.res.collide = true;
-                run.record(i, k, Eigen::Vector3f(*x, *y, *z), Eigen::Vector3f(s.bx_[k], s.by_[k], s.bz_[k]), reach,
-                           ra[i], row[k]);
+                run.record(node_a[i], node_b[k], i, k, Eigen::Vector3f(ax[i], ay[i], az[i]),
+                           Eigen::Vector3f(bx[k], by[k], bz[k]), reach, ra[i], row[k]);
             }
         }
     } else {

@@ -22,7 +22,9 @@ struct QueryRun {
     QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const QueryOptions& options,
              QueryScratch& scratch);
     void run();
-    void move_block(uint32_t node_b);
+    // B's spheres of active node j in A's frame, into columns x, y, z (count floats each);
+    // the one place B's spheres are moved, so every query rounds them alike.
+    void move_leaf(uint32_t j, float* x, float* y, float* z) const;
     // Centre of B's compact node j in A's frame.
     Eigen::Vector3f b_node_centre(uint32_t j) const;
     const Eigen::Vector3d& b_vertex(uint32_t v);
@@ -33,8 +35,9 @@ struct QueryRun {
     // Tests the spheres of active nodes i (A) and j (B); returns how many pairs it recorded
     // (mode all: every overlapping pair; any and deepest: the closest one, or none).
     uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb);
-    void record(uint32_t a, uint32_t b, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float reach, float ra,
-                float d2);
+    // Records a colliding pair: spheres a, b of active nodes node_a, node_b (at `bounds`, the nodes).
+    void record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
+                const Eigen::Vector3f& cb, float reach, float ra, float d2);
 
     const CollisionModel& A;
     const CollisionModel& B;
@@ -45,8 +48,5 @@ struct QueryRun {
     bool have_best = false;
     QueryResult res;
 };
-
-// Radius of each sphere of a tree (the radius of the node holding it).
-void sphere_radii(const CompactTree& t, std::vector<float>& out);
 
 } // namespace spt

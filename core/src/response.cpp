@@ -10,7 +10,9 @@ Eigen::Vector3d node_centre(const CompactTree& t, uint32_t i) {
     const CompactNode& n = t.nodes()[i];
     return {n.center[0], n.center[1], n.center[2]};
 }
-Eigen::Vector3d sphere_centre(const CompactTree& t, uint32_t k) { return {t.x()[k], t.y()[k], t.z()[k]}; }
+Eigen::Vector3d sphere_centre(const CompactTree& t, uint32_t node, uint32_t k) {
+    return t.sphere_centre(t.nodes()[node], k).cast<double>();
+}
 
 BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                              const Eigen::Vector3d& back, const QueryOptions& options, QueryScratch& scratch) {
@@ -76,8 +78,8 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
         const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
         double step = 0, reach_max = 0;
         for (const SpherePair& pair : scratch.pairs()) {
-            const Eigen::Vector3d ca = bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.a);
-            const Eigen::Vector3d cb0 = bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.b);
+            const Eigen::Vector3d ca = bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
+            const Eigen::Vector3d cb0 = bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
             const Eigen::Vector3d w = rot * cb0 + p.translation - ca;
             const double reach = pair.reach, half_b = w.dot(back), c = w.squaredNorm() - reach * reach;
             step = std::max(step, -half_b + std::sqrt(std::max(0.0, half_b * half_b - c)));

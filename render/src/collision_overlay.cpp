@@ -8,7 +8,7 @@ std::vector<Sphere> world_spheres(const CompactTree& compact, const Eigen::Affin
     for (const CompactNode& n : compact.nodes()) {
         if (!n.is_active()) continue;
         for (uint32_t k = n.first; k < n.first + n.count; ++k)
-            out[k] = {pose * Eigen::Vector3f(compact.x()[k], compact.y()[k], compact.z()[k]), n.ss_radius};
+            out[k] = {pose * compact.sphere_centre(n, k), n.ss_radius};
     }
     return out;
 }

@@ -27,9 +27,10 @@ TEST(CompactTree, LeftChildFollowsParentAndRightIsIndexed) {
         for (uint32_t k = 0; k < n.count; ++k) {
             const uint32_t sample = c.sample_index()[n.first + k];
             const Eigen::Vector3f ctr = sphere_center(s.points[sample], s.normals[sample], src.ss_radius);
-            EXPECT_EQ(c.x()[n.first + k], ctr.x());
-            EXPECT_EQ(c.y()[n.first + k], ctr.y());
-            EXPECT_EQ(c.z()[n.first + k], ctr.z());
+            EXPECT_EQ(c.sphere_centre(n, n.first + k), ctr);
+            EXPECT_EQ(c.centres(n)[k], ctr.x()); // block: x's, y's, z's
+            EXPECT_EQ(c.centres(n)[n.count + k], ctr.y());
+            EXPECT_EQ(c.centres(n)[2 * n.count + k], ctr.z());
             EXPECT_NEAR(c.nx()[n.first + k] / 127.0f, s.normals[sample].x(), 0.005f);
         }
         spheres += n.count;

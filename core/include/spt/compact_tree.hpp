@@ -1,9 +1,10 @@
 #pragma once
 /// The query layout of a sampling tree: nodes in depth-first order in one array
-/// (left child follows its parent, the right child is an index), sampling spheres
-/// of each active node as a contiguous range of structure-of-arrays columns, so a
-/// query streams 8 spheres at a time. Size is linear in the samples whatever the
-/// tree's shape. Object frame, float32 model units.
+/// (left child follows its parent, the right child is an index); the sampling-sphere
+/// centres of each active node in one block (its x's, then y's, then z's), so a leaf
+/// pair reads two or three cache lines a side and streams 8 spheres at a time. Size
+/// is linear in the samples whatever the tree's shape. Object frame, float32 model units.
+#include <Eigen/Core>
 #include "spt/sampling_tree.hpp"
 #include <cstdint>
 #include <vector>
@@ -32,10 +33,14 @@ public:
 
     /// Nodes, root first, depth-first.
     const std::vector<CompactNode>& nodes() const { return nodes_; }
-    /// Sphere centre columns; each padded by 8 so 8-wide loads never read past the end.
-    const float* x() const { return x_.data(); }
-    const float* y() const { return y_.data(); }
-    const float* z() const { return z_.data(); }
+    /// Centres of active node n's spheres: n.count x's, then n.count y's, then n.count z's.
+    /// The array is padded by 8 floats so 8-wide loads from any block stay inside it.
+    const float* centres(const CompactNode& n) const { return centres_.data() + 3 * size_t(n.first); }
+    /// Centre of sphere k of active node n (n.first <= k < n.first + n.count).
+    Eigen::Vector3f sphere_centre(const CompactNode& n, uint32_t k) const {
+        const float* c = centres(n) + (k - n.first);
+        return {c[0], c[n.count], c[2 * n.count]};
+    }
     /// Sample normals as snorm8 columns (value/127).
     const int8_t* nx() const { return nx_.data(); }
     const int8_t* ny() const { return ny_.data(); }
@@ -49,7 +54,7 @@ public:
 
 private:
     std::vector<CompactNode> nodes_;
-    std::vector<float> x_, y_, z_;
+    std::vector<float> centres_;
     std::vector<int8_t> nx_, ny_, nz_;
     std::vector<uint32_t> sample_index_;
     size_t sphere_count_ = 0;

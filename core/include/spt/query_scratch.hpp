@@ -17,6 +17,7 @@ struct QueryResult;
 /// A colliding pair found by a query in mode `all`.
 struct SpherePair {
     uint32_t a = 0, b = 0; ///< sphere indices (node indices at level `bounds`) in each CompactTree
+    uint32_t node_a = 0, node_b = 0; ///< the active nodes holding them (CompactTree node indices)
     float depth = 0;       ///< reach - |c1 - c2|, model units
     float reach = 0;       ///< r1 + r2 (+ inflate), model units
 };
@@ -52,8 +53,7 @@ private:
                                            const QueryOptions&, QueryScratch&);
     std::vector<std::pair<uint32_t, uint32_t>> stack_;   // triangle-tree walk (level exact)
     std::vector<detail::NodePairVisit> visits_;          // sampling-tree walk
-    std::vector<float> bx_, by_, bz_;          // B's spheres in A's frame (lazy, by node)
-    std::vector<uint32_t> node_stamp_;         // epoch at which B's node block was moved
+    std::vector<float> moved_b_;               // one leaf of B in A's frame (x, y, z columns)
     std::vector<Eigen::Vector3d> bverts_;      // B's vertices in A's frame (lazy)
     std::vector<uint32_t> vert_stamp_;
     std::vector<float> btri_;                  // B's triangle bounding spheres in A's frame (lazy)
