@@ -169,9 +169,13 @@ int lane_of_min(v4f v, v4i mask) {
     v4f m = v < __builtin_shuffle(v, v4i{1, 0, 3, 2}) ? v : __builtin_shuffle(v, v4i{1, 0, 3, 2});
     m = m < __builtin_shuffle(m, v4i{2, 3, 0, 1}) ? m : __builtin_shuffle(m, v4i{2, 3, 0, 1});
     const v4i hit = (v == m) & mask;
-    for (int k = 0; k < 4; ++k)
-        if (hit[k]) return k;
-    return -1;
+#if defined(__SSE__)
+    const int bits = _mm_movemask_ps(__m128(hit));
+#else
+    int bits = 0;
+    for (int k = 0; k < 4; ++k) bits |= (hit[k] & 1) << k;
+#endif
+    return bits ? __builtin_ctz(unsigned(bits)) : -1; // no branch per lane
 }
 
 constexpr uint32_t kActive = 0x80000000u; // a stack reference to an active node
@@ -179,27 +183,33 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 // The children of inner node i, with each inner child replaced by its own two
 // children: two to four nodes tested in one 4-lane step, so a walk to a leaf takes
-// half the steps. Lanes past `count` hold NaN centres, which fail every test.
+// half the steps. Lanes 0-1 come from the left child, 2-3 from the right; a child
+// that is active fills one lane and leaves the other empty (a NaN centre fails every
+// test). Chosen by selects, not branches: whether a child is a leaf is a coin toss
+// near the bottom of the tree, and a mispredicted branch costs more than the step.
 struct Grandchildren {
     v4f x, y, z, r;
     uint32_t ref[4];
-    uint32_t count = 0;
+    uint32_t count = 4;
     Grandchildren(const std::vector<CompactNode>& nodes, uint32_t i, const float* reach) {
         static const CompactNode none = {{kNaN, kNaN, kNaN}, 0, 0, 0, 0, 0};
-        const CompactNode* n[4] = {&none, &none, &none, &none};
-        float lr[4] = {0, 0, 0, 0};
-        auto add = [&](uint32_t c) {
-            n[count] = &nodes[c];
-            lr[count] = reach ? reach[c] : nodes[c].bv_radius;
-            ref[count++] = nodes[c].is_active() ? (kActive | c) : c;
-        };
-        for (uint32_t c : {i + 1, nodes[i].first}) {
-            if (nodes[c].is_active()) {
-                add(c);
-            } else {
-                add(c + 1);
-                add(nodes[c].first);
-            }
+        const CompactNode* base = nodes.data();
+        const CompactNode* n[4];
+        uint32_t idx[4];
+        const uint32_t child[2] = {i + 1, base[i].first};
+        for (int h = 0; h < 2; ++h) {
+            const uint32_t c = child[h];
+            const bool active = base[c].count != 0;
+            idx[2 * h] = active ? c : c + 1;
+            idx[2 * h + 1] = active ? 0 : base[c].first; // 0: any valid index for the empty lane
+            n[2 * h] = base + idx[2 * h];
+            n[2 * h + 1] = active ? &none : base + idx[2 * h + 1];
+            count -= active;
+        }
+        float lr[4];
+        for (int k = 0; k < 4; ++k) {
+            ref[k] = idx[k] | (n[k]->count != 0 ? kActive : 0);
+            lr[k] = reach ? reach[idx[k]] : n[k]->bv_radius;
         }
         // Built from scalars, not loaded from the scalar stores above (a wide load of
         // narrow stores stalls).
@@ -314,17 +324,19 @@ void QueryRun::run() {
             const v4f inf = splat(std::numeric_limits<float>::infinity());
             nearest = lane_of_min(pass ? sqrt4(dd) - r : inf, pass);
         }
-        stack.make_room(4);
-        auto push = [&](int k) {
+        // Every lane is written and kept only if it passed: whether a lane passes is
+        // data, and a branch on it mispredicts often.
+        stack.make_room(5);
+        auto push = [&](int k, bool keep) {
             if (side_a)
                 push_visit(stack, w.ref[k], ref_b, lx[k], ly[k], lz[k], cb, lr[k], rb, ld2[k]);
             else
                 push_visit(stack, ref_a, w.ref[k], ca.x(), ca.y(), ca.z(), Eigen::Vector3f(lx[k], ly[k], lz[k]), ra,
                            lr[k], ld2[k]);
+            stack.size -= !keep;
         };
-        for (int k = 0; k < 4; ++k)
-            if (lpass[k] && k != nearest) push(k);
-        if (nearest >= 0) push(nearest);
+        for (int k = 0; k < 4; ++k) push(k, lpass[k] && k != nearest);
+        push(nearest >= 0 ? nearest : 0, nearest >= 0);
     }
 }
 
