@@ -164,17 +164,23 @@ v4f sqrt4(v4f v) {
 #endif
 }
 
+// Bit k set when lane k is true.
+int movemask(v4i m) {
+#if defined(__SSE__)
+    return _mm_movemask_ps(__m128(m));
+#else
+    int bits = 0;
+    for (int k = 0; k < 4; ++k) bits |= (m[k] & 1) << k;
+    return bits;
+#endif
+}
+
 // Lane of the smallest value among the lanes set in `mask`, or -1 if none is set.
 int lane_of_min(v4f v, v4i mask) {
     v4f m = v < __builtin_shuffle(v, v4i{1, 0, 3, 2}) ? v : __builtin_shuffle(v, v4i{1, 0, 3, 2});
     m = m < __builtin_shuffle(m, v4i{2, 3, 0, 1}) ? m : __builtin_shuffle(m, v4i{2, 3, 0, 1});
     const v4i hit = (v == m) & mask;
-#if defined(__SSE__)
-    const int bits = _mm_movemask_ps(__m128(hit));
-#else
-    int bits = 0;
-    for (int k = 0; k < 4; ++k) bits |= (hit[k] & 1) << k;
-#endif
+    const int bits = movemask(hit);
     return bits ? __builtin_ctz(unsigned(bits)) : -1; // no branch per lane
 }
 
@@ -314,9 +320,8 @@ void QueryRun::run() {
         const v4f limit = r + splat((side_a ? rb : ra) + pad);
         const v4i pass = dd <= limit * limit; // false for an empty lane (NaN centre)
         float lx[4], ly[4], lz[4], ld2[4], lr[4];
-        int32_t lpass[4];
         std::memcpy(lx, &x, sizeof lx), std::memcpy(ly, &y, sizeof ly), std::memcpy(lz, &z, sizeof lz);
-        std::memcpy(ld2, &dd, sizeof ld2), std::memcpy(lr, &r, sizeof lr), std::memcpy(lpass, &pass, sizeof lpass);
+        std::memcpy(ld2, &dd, sizeof ld2), std::memcpy(lr, &r, sizeof lr);
         res.counters.bound_tests += w.count;
         // Any: the nearest child is pushed last, so it is taken first and a contact comes sooner.
         int nearest = -1;
@@ -324,19 +329,20 @@ void QueryRun::run() {
             const v4f inf = splat(std::numeric_limits<float>::infinity());
             nearest = lane_of_min(pass ? sqrt4(dd) - r : inf, pass);
         }
-        // Every lane is written and kept only if it passed: whether a lane passes is
-        // data, and a branch on it mispredicts often.
-        stack.make_room(5);
-        auto push = [&](int k, bool keep) {
+        // The passing lanes are walked as the bits of a mask: a branch on each lane's
+        // test mispredicts often, and writing every lane regardless costs more stores
+        // than it saves on walks that prune most lanes.
+        stack.make_room(4);
+        auto push = [&](int k) {
             if (side_a)
                 push_visit(stack, w.ref[k], ref_b, lx[k], ly[k], lz[k], cb, lr[k], rb, ld2[k]);
             else
                 push_visit(stack, ref_a, w.ref[k], ca.x(), ca.y(), ca.z(), Eigen::Vector3f(lx[k], ly[k], lz[k]), ra,
                            lr[k], ld2[k]);
-            stack.size -= !keep;
         };
-        for (int k = 0; k < 4; ++k) push(k, lpass[k] && k != nearest);
-        push(nearest >= 0 ? nearest : 0, nearest >= 0);
+        const unsigned first = nearest >= 0 ? 1u << nearest : 0u;
+        for (unsigned bits = unsigned(movemask(pass)) & ~first; bits; bits &= bits - 1) push(__builtin_ctz(bits));
+        if (nearest >= 0) push(nearest);
     }
 }
 
