@@ -52,14 +52,25 @@ Eigen::Vector3f QueryRun::b_node_centre(uint32_t j) const {
 }
 
 void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
+    typedef float v4 __attribute__((vector_size(16)));
     const CompactNode& n = B.tree().nodes()[j];
     const float* c = B.tree().centres(n);
     const float *bx = c, *by = c + n.count, *bz = c + 2 * n.count;
     const Eigen::Matrix3f& r = f.R;
-    for (uint32_t k = 0; k < n.count; ++k) {
-        x[k] = r(0, 0) * bx[k] + r(0, 1) * by[k] + r(0, 2) * bz[k] + f.t.x();
-        y[k] = r(1, 0) * bx[k] + r(1, 1) * by[k] + r(1, 2) * bz[k] + f.t.y();
-        z[k] = r(2, 0) * bx[k] + r(2, 1) * by[k] + r(2, 2) * bz[k] + f.t.z();
+    auto s4 = [](float v) { return v4{v, v, v, v}; };
+    const v4 r00 = s4(r(0, 0)), r01 = s4(r(0, 1)), r02 = s4(r(0, 2)), tx = s4(f.t.x());
+    const v4 r10 = s4(r(1, 0)), r11 = s4(r(1, 1)), r12 = s4(r(1, 2)), ty = s4(f.t.y());
+    const v4 r20 = s4(r(2, 0)), r21 = s4(r(2, 1)), r22 = s4(r(2, 2)), tz = s4(f.t.z());
+    // Four spheres at a time; the last group reads past the block into the next one (or
+    // the array's padding) and writes up to 3 floats past count, which callers allow.
+    // Each lane rounds exactly as the scalar expression would (no fused multiply-add).
+    for (uint32_t k = 0; k < n.count; k += 4) {
+        v4 px, py, pz;
+        std::memcpy(&px, bx + k, sizeof px), std::memcpy(&py, by + k, sizeof py), std::memcpy(&pz, bz + k, sizeof pz);
+        const v4 ox = r00 * px + r01 * py + r02 * pz + tx;
+        const v4 oy = r10 * px + r11 * py + r12 * pz + ty;
+        const v4 oz = r20 * px + r21 * py + r22 * pz + tz;
+        std::memcpy(x + k, &ox, sizeof ox), std::memcpy(y + k, &oy, sizeof oy), std::memcpy(z + k, &oz, sizeof oz);
     }
 }
 

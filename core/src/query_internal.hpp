@@ -22,8 +22,9 @@ struct QueryRun {
     QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const QueryOptions& options,
              QueryScratch& scratch);
     void run();
-    // B's spheres of active node j in A's frame, into columns x, y, z (count floats each);
-    // the one place B's spheres are moved, so every query rounds them alike.
+    // B's spheres of active node j in A's frame, into columns x, y, z (count floats each,
+    // rounded up to 4: each column needs 3 floats of room past count); the one place
+    // B's spheres are moved, so every query rounds them alike.
     void move_leaf(uint32_t j, float* x, float* y, float* z) const;
     // Centre of B's compact node j in A's frame.
     Eigen::Vector3f b_node_centre(uint32_t j) const;
