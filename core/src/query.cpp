@@ -287,7 +287,8 @@ void QueryRun::run() {
             if (stack.size == 0) break;
             const detail::NodePairVisit& top = stack.buf[--stack.size];
             ref_a = top.a, ref_b = top.b;
-            ca = Eigen::Vector3f(top.ca[0], top.ca[1], top.ca[2]), cb = Eigen::Vector3f(top.cb[0], top.cb[1], top.cb[2]);
+            ca = Eigen::Vector3f(top.ca[0], top.ca[1], top.ca[2]);
+            cb = Eigen::Vector3f(top.cb[0], top.cb[1], top.cb[2]);
             ra = top.ra, rb = top.rb, d2 = top.d2;
         }
         carried = false;
@@ -336,8 +337,8 @@ void QueryRun::run() {
         std::memcpy(lx, &x, sizeof lx), std::memcpy(ly, &y, sizeof ly), std::memcpy(lz, &z, sizeof lz);
         std::memcpy(ld2, &dd, sizeof ld2), std::memcpy(lr, &r, sizeof lr);
         res.counters.bound_tests += w.count;
-        // Any: the nearest child is pushed last, so it is taken first and a contact comes
-        // sooner. Nearest by power, |c - p|^2 - r^2 (p the other centre): it orders lanes
+        // Any: the nearest child is taken next (carried on below, the others pushed), so a
+        // contact comes sooner. Nearest by power, |c - p|^2 - r^2 (p the other centre): it orders lanes
         // about as well as the gap |c - p| - r and keeps a square root off the path
         // from one step to the next.
         int nearest = -1;

@@ -3,6 +3,7 @@
 #include "spt/query.hpp"
 #include <gtest/gtest.h>
 #include <algorithm>
+#include <array>
 #include <set>
 #include <thread>
 
@@ -21,9 +22,10 @@ const test::Object& box() {
     return *o;
 }
 
-std::set<std::pair<uint32_t, uint32_t>> sphere_pairs(const QueryScratch& s) {
-    std::set<std::pair<uint32_t, uint32_t>> out;
-    for (const auto& p : s.pairs()) out.insert({p.a, p.b});
+// Sphere pairs with the active nodes that hold them (node = sphere at level bounds).
+std::set<std::array<uint32_t, 4>> sphere_pairs(const QueryScratch& s) {
+    std::set<std::array<uint32_t, 4>> out;
+    for (const auto& p : s.pairs()) out.insert({p.a, p.b, p.node_a, p.node_b});
     return out;
 }
 std::set<std::pair<uint32_t, uint32_t>> tri_pairs(const QueryScratch& s) {
@@ -103,7 +105,7 @@ TEST(Query, OneSidedAndSingleLeafTreesMatchBruteForce) {
             const Pose p = random_pose(rng, 0.9 + 0.05 * it);
             for (QueryLevel level : {QueryLevel::Bounds, QueryLevel::Spheres}) {
                 const QueryResult ref = collide_brute_force(a, b.model, p, opts(level, QueryMode::All), s2);
-                const std::set<std::pair<uint32_t, uint32_t>> ref_pairs = sphere_pairs(s2);
+                const auto ref_pairs = sphere_pairs(s2);
                 EXPECT_EQ(collide_relative(a, b.model, p, opts(level, QueryMode::Any), s1).collide, ref.collide);
                 EXPECT_EQ(collide_relative(a, b.model, p, opts(level, QueryMode::All), s1).collide, ref.collide);
                 EXPECT_EQ(sphere_pairs(s1), ref_pairs) << tree << " level " << int(level) << " pose " << it;
