@@ -78,8 +78,10 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
         const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
         double step = 0, reach_max = 0;
         for (const SpherePair& pair : scratch.pairs()) {
-            const Eigen::Vector3d ca = bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
-            const Eigen::Vector3d cb0 = bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
+            const Eigen::Vector3d ca =
+                bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
+            const Eigen::Vector3d cb0 =
+                bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
             const Eigen::Vector3d w = rot * cb0 + p.translation - ca;
             const double reach = pair.reach, half_b = w.dot(back), c = w.squaredNorm() - reach * reach;
             step = std::max(step, -half_b + std::sqrt(std::max(0.0, half_b * half_b - c)));

@@ -4,8 +4,8 @@
 /// centres of each active node in one block (its x's, then y's, then z's), so a leaf
 /// pair reads two or three cache lines a side and streams 8 spheres at a time. Size
 /// is linear in the samples whatever the tree's shape. Object frame, float32 model units.
-#include <Eigen/Core>
 #include "spt/sampling_tree.hpp"
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
