@@ -21,7 +21,8 @@ QueryFrame::QueryFrame(const CollisionModel& a, const CollisionModel& b, const P
     t = td.cast<float>();
     // Float moves of B's centres are off by a few ulps of |t| + |x|; pruning and the
     // exact level's prefilters add this so rounding can never prune a real contact.
-    margin = float(1e-5 * (td.norm() + a.reach() + b.reach()));
+    // |t| bounded by its 1-norm: no square root on the way to the first test.
+    margin = float(1e-5 * (td.cwiseAbs().sum() + a.reach() + b.reach()));
 }
 
 void prepare_scratch(QueryScratch& s, const CollisionModel& a, const CollisionModel& b, bool exact) {
@@ -389,7 +390,6 @@ QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, c
         run.run_triangles();
         if (options.mode == QueryMode::Deepest && run.res.collide) run.run();
     }
-    if (!run.have_best) run.res.deepest = Contact{};
     return run.res;
 }
 

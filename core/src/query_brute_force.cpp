@@ -68,7 +68,6 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
                 if (mode == QueryMode::All) scratch.tri_pairs_.push_back({p, q});
             }
     }
-    if (!run.have_best) run.res.deepest = Contact{};
     return run.res;
 }
 

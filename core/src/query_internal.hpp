@@ -47,7 +47,7 @@ struct QueryRun {
     QueryFrame f;
     bool exact;
     bool have_best = false;
-    QueryResult res;
+    QueryResult res; // res.deepest is written only by record(), so it stays default without a contact
 };
 
 } // namespace spt
