@@ -195,8 +195,9 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 // children: two to four nodes tested in one 4-lane step, so a walk to a leaf takes
 // half the steps. Lanes 0-1 come from the left child, 2-3 from the right; a child
 // that is active fills one lane and leaves the other empty (a NaN centre fails every
-// test). Chosen by selects, not branches: whether a child is a leaf is a coin toss
-// near the bottom of the tree, and a mispredicted branch costs more than the step.
+// test). Fixed slots instead of packing the lanes: packing branched on whether each
+// child is a leaf, a coin toss near the bottom of the tree, and a mispredicted branch
+// costs more than the step.
 struct Grandchildren {
     v4f x, y, z, r;
     uint32_t ref[4];
