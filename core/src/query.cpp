@@ -263,27 +263,17 @@ void QueryRun::run() {
     const float* reach_b = bounds ? B.bounds_reach().data() : nullptr;
     const float pad = o.inflate + f.margin;
     VisitStack stack{s.visits_};
-    stack.make_room(1);
-    {
-        const CompactNode &root_a = an[0], &root_b = bn[0];
-        const Eigen::Vector3f ca(root_a.center[0], root_a.center[1], root_a.center[2]);
-        const Eigen::Vector3f cb = b_node_centre(0);
-        const float ra = reach_a ? reach_a[0] : root_a.bv_radius;
-        const float rb = reach_b ? reach_b[0] : root_b.bv_radius;
-        ++res.counters.bound_tests;
-        const float d2 = (ca - cb).squaredNorm(), prune = ra + rb + pad;
-        if (d2 > prune * prune) return;
-        push_visit(stack, root_a.is_active() ? kActive : 0, root_b.is_active() ? kActive : 0, ca.x(), ca.y(), ca.z(),
-                   cb, ra, rb, d2);
-    }
     // Every pair on the stack overlaps: it was tested when pushed, four children at a
     // time, and the same distances order the descent.
-    // In mode any the nearest child goes on as the current pair in registers instead
-    // of through the stack: a store and a load less between one step and the next.
-    uint32_t ref_a = 0, ref_b = 0;
-    Eigen::Vector3f ca, cb;
-    float ra = 0, rb = 0, d2 = 0;
-    bool carried = false;
+    // The pair in hand (the root first, then in mode any the nearest child) stays in
+    // registers instead of going through the stack: a store and a load less a step.
+    uint32_t ref_a = an[0].is_active() ? kActive : 0, ref_b = bn[0].is_active() ? kActive : 0;
+    Eigen::Vector3f ca(an[0].center[0], an[0].center[1], an[0].center[2]), cb = b_node_centre(0);
+    float ra = reach_a ? reach_a[0] : an[0].bv_radius, rb = reach_b ? reach_b[0] : bn[0].bv_radius;
+    float d2 = (ca - cb).squaredNorm();
+    ++res.counters.bound_tests;
+    if (const float prune = ra + rb + pad; d2 > prune * prune) return;
+    bool carried = true;
     for (;;) {
         if (!carried) {
             if (stack.size == 0) break;
