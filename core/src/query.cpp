@@ -93,7 +93,7 @@ void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, 
     c.point = ca.cast<double>() + c.normal * (double(ra) - 0.5 * depth);
 }
 
-uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb) {
+uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca) {
     const CompactTree &ta = A.tree(), &tb = B.tree();
     const CompactNode &na = ta.nodes()[i], &nb = tb.nodes()[j];
     // Lazy update: B's spheres are moved only here, for the leaf the walk reached,
@@ -107,7 +107,7 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     const bool cull = o.normal_culling;
     if (cull) {
         // u: from A's node towards B's node. A keeps n.u >= -cos; B, in its own frame, n.(-u) >= -cos.
-        Eigen::Vector3f u = cb - ca;
+        Eigen::Vector3f u = b_node_centre(j) - ca;
         const float len = u.norm();
         const float limit = -o.cull_cos * 127.0f; // normals are snorm8
         const size_t la = s.ia_.size();
@@ -290,9 +290,9 @@ void QueryRun::run() {
         const bool leaf_a = ref_a & kActive, leaf_b = ref_b & kActive;
         if (leaf_a && leaf_b) {
             const uint32_t i = ref_a & ~kActive, j = ref_b & ~kActive;
-            // B's centre moved as the brute-force reference moves it (4-lane rounding differs by ulps).
-            const Eigen::Vector3f cb_leaf = b_node_centre(j);
             if (bounds) {
+                // B's centre moved as the brute-force reference moves it (4-lane rounding differs by ulps).
+                const Eigen::Vector3f cb_leaf = b_node_centre(j);
                 const float sum = ra + rb + o.inflate, d2_leaf = (ca - cb_leaf).squaredNorm();
                 if (!(d2_leaf < sum * sum)) continue;
                 res.collide = true;
@@ -300,7 +300,7 @@ void QueryRun::run() {
                 if (any) return;
                 continue;
             }
-            if (sphere_leaf_pair(i, j, ca, cb_leaf)) {
+            if (sphere_leaf_pair(i, j, ca)) {
                 res.collide = true;
                 if (any) return;
             }

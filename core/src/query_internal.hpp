@@ -33,9 +33,10 @@ struct QueryRun {
     bool triangle_pair(uint32_t ta, uint32_t tb);
     // Level `exact`: walks the triangle trees; sets res.collide (and, in mode all, the triangle pairs).
     void run_triangles();
-    // Tests the spheres of active nodes i (A) and j (B); returns how many pairs it recorded
-    // (mode all: every overlapping pair; any and deepest: the closest one, or none).
-    uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb);
+    // Tests the spheres of active nodes i (A) and j (B), ca being i's centre; returns how
+    // many pairs it recorded (mode all: every overlapping pair; any and deepest: the
+    // closest one, or none).
+    uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca);
     // Records a colliding pair: spheres a, b of active nodes node_a, node_b (at `bounds`, the nodes).
     void record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
                 const Eigen::Vector3f& cb, float reach, float ra, float d2);
