@@ -39,7 +39,7 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         const double r = std::max({(a - centre).norm(), (b - centre).norm(), (c - centre).norm()});
         // The float centre moved by rounding: grow the radius by that distance.
         const Eigen::Vector3d fc = detail::float_rounded(centre);
-        e.tri_sphere[4 * f + 0] = float(fc.x()), e.tri_sphere[4 * f + 1] = float(fc.y()), e.tri_sphere[4 * f + 2] = float(fc.z());
+        for (int k = 0; k < 3; ++k) e.tri_sphere[4 * f + k] = float(fc[k]);
         e.tri_sphere[4 * f + 3] = round_up(r + (fc - centre).norm());
         reach_ = std::max({reach_, a.norm(), b.norm(), c.norm()});
     }

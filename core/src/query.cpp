@@ -13,6 +13,24 @@
 #include <limits>
 
 namespace spt {
+namespace {
+
+typedef float v4f __attribute__((vector_size(16)));
+typedef int32_t v4i __attribute__((vector_size(16)));
+
+v4f splat(float x) { return v4f{x, x, x, x}; }
+
+// Four points of B's frame into A's, in place; the one expression every move of B
+// uses, so leaf spheres and node centres round alike (no fused multiply-add).
+void b_to_a(const QueryFrame& f, v4f& x, v4f& y, v4f& z) {
+    const Eigen::Matrix3f& R = f.R;
+    const v4f bx = x, by = y, bz = z;
+    x = splat(R(0, 0)) * bx + splat(R(0, 1)) * by + splat(R(0, 2)) * bz + splat(f.t.x());
+    y = splat(R(1, 0)) * bx + splat(R(1, 1)) * by + splat(R(1, 2)) * bz + splat(f.t.y());
+    z = splat(R(2, 0)) * bx + splat(R(2, 1)) * by + splat(R(2, 2)) * bz + splat(f.t.z());
+}
+
+} // namespace
 
 QueryFrame::QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a) {
     Rd = b_in_a.rotation.toRotationMatrix();
@@ -53,25 +71,16 @@ Eigen::Vector3f QueryRun::b_node_centre(uint32_t j) const {
 }
 
 void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
-    typedef float v4 __attribute__((vector_size(16)));
     const CompactNode& n = B.tree().nodes()[j];
     const float* c = B.tree().centres(n);
     const float *bx = c, *by = c + n.count, *bz = c + 2 * n.count;
-    const Eigen::Matrix3f& r = f.R;
-    auto s4 = [](float v) { return v4{v, v, v, v}; };
-    const v4 r00 = s4(r(0, 0)), r01 = s4(r(0, 1)), r02 = s4(r(0, 2)), tx = s4(f.t.x());
-    const v4 r10 = s4(r(1, 0)), r11 = s4(r(1, 1)), r12 = s4(r(1, 2)), ty = s4(f.t.y());
-    const v4 r20 = s4(r(2, 0)), r21 = s4(r(2, 1)), r22 = s4(r(2, 2)), tz = s4(f.t.z());
     // Four spheres at a time; the last group reads past the block into the next one (or
     // the array's padding) and writes up to 3 floats past count, which callers allow.
-    // Each lane rounds exactly as the scalar expression would (no fused multiply-add).
     for (uint32_t k = 0; k < n.count; k += 4) {
-        v4 px, py, pz;
+        v4f px, py, pz;
         std::memcpy(&px, bx + k, sizeof px), std::memcpy(&py, by + k, sizeof py), std::memcpy(&pz, bz + k, sizeof pz);
-        const v4 ox = r00 * px + r01 * py + r02 * pz + tx;
-        const v4 oy = r10 * px + r11 * py + r12 * pz + ty;
-        const v4 oz = r20 * px + r21 * py + r22 * pz + tz;
-        std::memcpy(x + k, &ox, sizeof ox), std::memcpy(y + k, &oy, sizeof oy), std::memcpy(z + k, &oz, sizeof oz);
+        b_to_a(f, px, py, pz);
+        std::memcpy(x + k, &px, sizeof px), std::memcpy(y + k, &py, sizeof py), std::memcpy(z + k, &pz, sizeof pz);
     }
 }
 
@@ -164,10 +173,6 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
 
 namespace {
 
-typedef float v4f __attribute__((vector_size(16)));
-typedef int32_t v4i __attribute__((vector_size(16)));
-
-v4f splat(float x) { return v4f{x, x, x, x}; }
 // Bit k set when lane k is true.
 int movemask(v4i m) {
 #if defined(__SSE__)
@@ -313,11 +318,7 @@ void QueryRun::run() {
         v4f x = w.x, y = w.y, z = w.z;
         Eigen::Vector3f other = cb;
         if (!side_a) { // B's children into A's frame
-            const Eigen::Matrix3f& R = f.R;
-            const v4f bx = x, by = y, bz = z;
-            x = splat(R(0, 0)) * bx + splat(R(0, 1)) * by + splat(R(0, 2)) * bz + splat(f.t.x());
-            y = splat(R(1, 0)) * bx + splat(R(1, 1)) * by + splat(R(1, 2)) * bz + splat(f.t.y());
-            z = splat(R(2, 0)) * bx + splat(R(2, 1)) * by + splat(R(2, 2)) * bz + splat(f.t.z());
+            b_to_a(f, x, y, z);
             other = ca;
         }
         const v4f dx = x - splat(other.x()), dy = y - splat(other.y()), dz = z - splat(other.z());
@@ -330,9 +331,9 @@ void QueryRun::run() {
         std::memcpy(ld2, &dd, sizeof ld2), std::memcpy(lr, &r, sizeof lr);
         res.counters.bound_tests += w.count;
         // Any: the nearest child is taken next (carried on below, the others pushed), so a
-        // contact comes sooner. Nearest by power, |c - p|^2 - r^2 (p the other centre): it orders lanes
-        // about as well as the gap |c - p| - r and keeps a square root off the path
-        // from one step to the next.
+        // contact comes sooner. Nearest by power, |c - p|^2 - r^2 (p the other centre):
+        // it orders lanes about as well as the gap |c - p| - r and keeps a square root
+        // off the path from one step to the next.
         int nearest = -1;
         if (any) {
             const v4f inf = splat(std::numeric_limits<float>::infinity());

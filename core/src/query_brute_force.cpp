@@ -36,7 +36,8 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
                 const Eigen::Vector3f c = a.tree().sphere_centre(an[i], k);
                 ax[k] = c.x(), ay[k] = c.y(), az[k] = c.z(), ra[k] = an[i].ss_radius, node_a[k] = i;
             }
-        for (uint32_t j = 0; j < bn.size(); ++j) { // in sphere order: what a leaf spills past its count, the next overwrites
+        // In sphere order: what a leaf's move spills past its count, the next leaf overwrites.
+        for (uint32_t j = 0; j < bn.size(); ++j) {
             if (!bn[j].is_active()) continue;
             const uint32_t k = bn[j].first;
             run.move_leaf(j, &bx[k], &by[k], &bz[k]);

@@ -24,7 +24,7 @@ struct QueryRun {
     void run();
     // B's spheres of active node j in A's frame, into columns x, y, z (count floats each,
     // rounded up to 4: each column needs 3 floats of room past count); the one place
-    // B's spheres are moved, so every query rounds them alike.
+    // B's spheres are moved, so the walk and the brute-force reference round them alike.
     void move_leaf(uint32_t j, float* x, float* y, float* z) const;
     // Centre of B's compact node j in A's frame.
     Eigen::Vector3f b_node_centre(uint32_t j) const;
