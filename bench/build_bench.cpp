@@ -3,6 +3,7 @@
 #include "meshgen.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
+#include "sampling/surface_samples.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the test binaries: temporary directories and real meshes.
 #include "spt/convert.hpp"
+#include "sampling/surface_samples.hpp"
 #include <filesystem>
 #include <unistd.h>
 #include <random>

@@ -7,8 +7,9 @@
 #include "spt/convert.hpp"
 #include "spt/query.hpp"
 #include "spt/response.hpp"
-#include "spt/shapes.hpp"
-#include "spt/sphere_block.hpp"
+#include "mesh/shapes.hpp"
+#include "geometry/sphere_block.hpp"
+#include "query/brute_force.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -1,8 +1,8 @@
 // Google Benchmark micro-benchmarks: the tree traversal and the sphere-block test.
 #include "spt/convert.hpp"
 #include "spt/query.hpp"
-#include "spt/shapes.hpp"
-#include "spt/sphere_block.hpp"
+#include "mesh/shapes.hpp"
+#include "geometry/sphere_block.hpp"
 #include <benchmark/benchmark.h>
 #include <random>
 

@@ -3,7 +3,7 @@
 #include "spt/collision_model.hpp"
 #include "spt/convert.hpp"
 #include "spt/pose.hpp"
-#include "spt/shapes.hpp"
+#include "mesh/shapes.hpp"
 #include <memory>
 #include <random>
 

@@ -1,4 +1,5 @@
 #include "query_fixtures.hpp"
+#include "query/brute_force.hpp"
 #include "spt/error.hpp"
 #include "spt/query.hpp"
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 #include "query_fixtures.hpp"
-#include "spt/tri_tri.hpp"
+#include "geometry/tri_tri.hpp"
+#include "query/exact_data.hpp"
 #include <gtest/gtest.h>
 
 namespace spt {

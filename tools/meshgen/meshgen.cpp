@@ -1,6 +1,6 @@
 #include "meshgen.hpp"
 #include "spt/error.hpp"
-#include "spt/shapes.hpp"
+#include "mesh/shapes.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>

@@ -2,17 +2,11 @@
 /// Per-query working memory. The caller owns one per thread and reuses it: a
 /// query grows it only when it meets a larger model, so repeated queries
 /// allocate nothing.
-#include <Eigen/Core>
 #include <cstdint>
-#include <utility>
+#include <memory>
 #include <vector>
 
 namespace spt {
-
-class CollisionModel;
-struct Pose;
-struct QueryOptions;
-struct QueryResult;
 
 /// A colliding pair found by a query in mode `all`.
 struct SpherePair {
@@ -28,42 +22,32 @@ struct TrianglePair {
 };
 
 namespace detail {
-// A node pair on the traversal stack: its bounding spheres overlap. a and b are
-// CompactNode indices, the top bit set for an active node; centres in A's frame.
-struct NodePairVisit {
-    uint32_t a, b;
-    float ca[3], cb[3];
-    float ra, rb; // radii the pair was tested with
-    float d2;     // squared centre distance
-};
-} // namespace detail
+struct ScratchBuffers;
+}
 
-/// Scratch buffers of one query at a time.
+/// Working memory of one query at a time; give each thread its own.
 class QueryScratch {
 public:
+    /// Empty buffers; the first query sizes them.
+    QueryScratch();
+    /// Frees the buffers.
+    ~QueryScratch();
+    QueryScratch(const QueryScratch&) = delete;
+    QueryScratch& operator=(const QueryScratch&) = delete;
+    /// Takes over the buffers; the source may only be destroyed or assigned to.
+    QueryScratch(QueryScratch&&) noexcept;
+    /// Takes over the buffers; the source may only be destroyed or assigned to.
+    QueryScratch& operator=(QueryScratch&&) noexcept;
+
     /// Sphere (or leaf) pairs of the last query in mode `all`.
-    const std::vector<SpherePair>& pairs() const { return pairs_; }
+    const std::vector<SpherePair>& pairs() const;
     /// Triangle pairs of the last `exact` query in mode `all`.
-    const std::vector<TrianglePair>& triangle_pairs() const { return tri_pairs_; }
+    const std::vector<TrianglePair>& triangle_pairs() const;
+    /// The buffers themselves (layout private to the library).
+    detail::ScratchBuffers& buffers() { return *b_; }
 
 private:
-    friend struct QueryRun;
-    friend void prepare_scratch(QueryScratch&, const CollisionModel&, const CollisionModel&, bool);
-    friend QueryResult collide_brute_force(const CollisionModel&, const CollisionModel&, const Pose&,
-                                           const QueryOptions&, QueryScratch&);
-    std::vector<std::pair<uint32_t, uint32_t>> stack_;   // triangle-tree walk (level exact)
-    std::vector<detail::NodePairVisit> visits_;          // sampling-tree walk
-    std::vector<float> moved_b_;               // one leaf of B in A's frame (x, y, z columns)
-    std::vector<Eigen::Vector3d> bverts_;      // B's vertices in A's frame (lazy)
-    std::vector<uint32_t> vert_stamp_;
-    std::vector<float> btri_;                  // B's triangle bounding spheres in A's frame (lazy)
-    std::vector<uint32_t> tri_stamp_;
-    std::vector<float> d2_;                    // distance matrix of one leaf pair
-    std::vector<float> ga_, gb_;               // culled spheres gathered (x, y, z blocks)
-    std::vector<uint32_t> ia_, ib_;            // their sphere indices
-    std::vector<SpherePair> pairs_;
-    std::vector<TrianglePair> tri_pairs_;
-    uint32_t epoch_ = 0;
+    std::unique_ptr<detail::ScratchBuffers> b_;
 };
 
 } // namespace spt

@@ -89,11 +89,4 @@ private:
     std::map<NodeId, TreeNode> nodes_;
 };
 
-/// Radius that `rule` gives a node holding `members`.
-float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples, const RadiusRule& rule);
-
-/// Bounding sphere of the sampling spheres of `members` under `method`.
-void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const SampleSet& samples,
-                   BoundsMethod method);
-
 } // namespace spt

@@ -1,0 +1,119 @@
+#include "spt/convert.hpp"
+#include "spt/error.hpp"
+#include "sampling/radius_class.hpp"
+#include "sampling/surface_samples.hpp"
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace spt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+MeshInfo info_of(const TriangleMesh& mesh) {
+    return {mesh.name, uint32_t(mesh.positions.size()), uint32_t(mesh.triangles.size()), mesh.content_hash(),
+            mesh.diagonal()};
+}
+
+// Radius each sample's active node actually uses.
+std::vector<float> radius_in_use(const SamplingTree& tree, size_t n) {
+    std::vector<float> r(n, 0);
+    for (const TreeNode* node : tree.active_nodes())
+        for (uint32_t s : node->samples) r[s] = node->ss_radius;
+    return r;
+}
+
+// Largest uncovered depth that vertex samples alone leave on a face: every point of a face
+// is within (longest edge)/sqrt(3) of a corner, whose sphere lies flat under it.
+double vertex_only_gap(const TriangleMesh& mesh, const SampleSet& s, const std::vector<float>& radius) {
+    std::vector<float> at_vertex(mesh.positions.size(), 0);
+    for (size_t i = 0; i < s.size(); ++i) at_vertex[s.source_index(i)] = radius[i];
+    double worst = 0;
+    for (const auto& t : mesh.triangles) {
+        const auto &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+        const double rho = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / std::sqrt(3.0);
+        const double r = std::min({at_vertex[t[0]], at_vertex[t[1]], at_vertex[t[2]]});
+        worst = std::max(worst, std::sqrt(rho * rho + r * r) - r);
+    }
+    return worst;
+}
+
+} // namespace
+
+SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats) {
+    ConvertStats local;
+    ConvertStats& st = stats ? *stats : local;
+    if (options.tolerance && (!(*options.tolerance > 0) || !std::isfinite(*options.tolerance)))
+        throw Error(ErrorKind::Usage, "--tolerance must be a positive length");
+    // Two objects meet: their errors add. Within a tolerance each object keeps its gaps to
+    // half of it and its protrusion to an eighth, so a pair stays well within it.
+    const double protrusion =
+        options.protrusion ? *options.protrusion
+                           : (options.tolerance ? *options.tolerance / 8 : kDefaultProtrusion * mesh.diagonal());
+    if (!(protrusion > 0) || !std::isfinite(protrusion)) throw Error(ErrorKind::Usage, "protrusion must be positive");
+
+    auto t0 = Clock::now();
+    const RadiusLimiter limiter(mesh, protrusion);
+    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius);
+    if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
+    st.vertex_samples = vertex_samples.size();
+    const RadiusRule& rule = options.build.radius;
+
+    SptDocument doc;
+    doc.mesh = info_of(mesh);
+    if (!options.tolerance) {
+        doc.samples = vertex_samples;
+        st.sample_seconds = seconds_since(t0);
+        t0 = Clock::now();
+        doc.trees.push_back(build_tree(options.tree_name, doc.samples, options.build));
+        st.build_seconds = seconds_since(t0);
+        st.worst_predicted_gap = vertex_only_gap(mesh, doc.samples, radius_in_use(doc.trees[0], doc.samples.size()));
+        const double automatic = kAutoTolerance * mesh.diagonal();
+        if (!options.auto_tolerance || st.worst_predicted_gap <= automatic) return doc;
+        // Vertices alone leave holes (large flat faces): sample the faces too.
+        ConvertOptions with_faces = options;
+        with_faces.tolerance = automatic;
+        ConvertStats again;
+        SptDocument sampled = make_document(mesh, with_faces, &again);
+        again.automatic_tolerance = automatic;
+        again.sample_seconds += st.sample_seconds, again.build_seconds += st.build_seconds;
+        st = again;
+        return sampled;
+    }
+
+    // The builder keeps active nodes radius-coherent, so a node's radius is at least
+    // 1/kRadiusClassRatio of each member's own radius: faces are sampled for that radius.
+    const double eps = *options.tolerance / 2;
+    SampleSet s = vertex_samples;
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+        add_face_samples(s, limiter, f, eps, rule, 1.0f / kRadiusClassRatio);
+    st.sample_seconds = seconds_since(t0);
+    t0 = Clock::now();
+    BuildOptions coherent = options.build;
+    coherent.radius_coherent = true;
+    SamplingTree tree = build_tree(options.tree_name, s, coherent);
+    st.build_seconds = seconds_since(t0);
+    // Check the assumption against the radii the tree gave.
+    const std::vector<float> used = radius_in_use(tree, s.size());
+    bool holds = true;
+    for (size_t i = vertex_samples.size(); i < s.size(); ++i)
+        holds = holds && used[i] >= rule.for_sample(s.spacing[i], s.max_radius[i]) / kRadiusClassRatio * (1 - 1e-6f);
+    st.worst_predicted_gap = holds ? eps : INFINITY;
+    doc.samples = std::move(s);
+    st.face_samples = doc.samples.size() - vertex_samples.size();
+    doc.trees.push_back(std::move(tree));
+    return doc;
+}
+
+SptDocument load_or_convert(const std::string& path, const ConvertOptions& options) {
+    char magic[6] = {};
+    std::ifstream(path, std::ios::binary).read(magic, 6);
+    if (std::memcmp(magic, "SPTREE", 6) == 0) return load_spt(path);
+    const ImportedMesh m = import_mesh(path);
+    return make_document(m.mesh, options);
+}
+
+} // namespace spt

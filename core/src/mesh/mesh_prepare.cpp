@@ -1,0 +1,230 @@
+// Turns raw triangles into a TriangleMesh: weld, topology report, orientation fix, normals.
+#include "spt/error.hpp"
+#include "spt/mesh.hpp"
+#include "mesh/weld.hpp"
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <queue>
+#include <sstream>
+
+namespace spt {
+namespace {
+
+struct HalfEdge {
+    uint64_t key;  // (min << 32) | max
+    uint32_t face;
+    bool forward;  // face walks min -> max
+};
+
+std::vector<HalfEdge> collect_edges(const std::vector<Triangle>& tris) {
+    std::vector<HalfEdge> edges;
+    edges.reserve(tris.size() * 3);
+    for (uint32_t f = 0; f < tris.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = tris[f][k], b = tris[f][(k + 1) % 3];
+            const uint64_t lo = std::min(a, b), hi = std::max(a, b);
+            edges.push_back({(lo << 32) | hi, f, a < b});
+        }
+    std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return x.key != y.key ? x.key < y.key : x.face < y.face;
+    });
+    return edges;
+}
+
+double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) {
+    // Relative to the first vertex, so far-from-origin parts keep precision.
+    const Eigen::Vector3d o = m.positions[m.triangles[faces[0]][0]];
+    double v = 0;
+    for (uint32_t f : faces) {
+        const auto& t = m.triangles[f];
+        v += (m.positions[t[0]] - o).dot((m.positions[t[1]] - o).cross(m.positions[t[2]] - o));
+    }
+    return v / 6.0;
+}
+
+void compute_normals(TriangleMesh& m, ImportReport& report, double area_eps) {
+    const size_t n = m.positions.size();
+    m.normals.assign(n, Eigen::Vector3d::Zero());
+    m.normal_valid.assign(n, 0);
+    for (const auto& t : m.triangles) {
+        const Eigen::Vector3d& p0 = m.positions[t[0]];
+        const Eigen::Vector3d& p1 = m.positions[t[1]];
+        const Eigen::Vector3d& p2 = m.positions[t[2]];
+        const Eigen::Vector3d fn = (p1 - p0).cross(p2 - p0);
+        const double len = fn.norm();
+        if (!(len > area_eps)) continue; // degenerate: no direction to contribute
+        const Eigen::Vector3d unit = fn / len;
+        const Eigen::Vector3d* p[3] = {&p0, &p1, &p2};
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::Vector3d e1 = (*p[(k + 1) % 3] - *p[k]).normalized();
+            const Eigen::Vector3d e2 = (*p[(k + 2) % 3] - *p[k]).normalized();
+            const double angle = std::acos(std::clamp(e1.dot(e2), -1.0, 1.0));
+            m.normals[t[k]] += angle * unit;
+        }
+    }
+    for (size_t i = 0; i < n; ++i) {
+        const double len = m.normals[i].norm();
+        if (len > 1e-12 && std::isfinite(len)) {
+            m.normals[i] /= len;
+            m.normal_valid[i] = 1;
+        } else {
+            m.normals[i].setZero();
+        }
+    }
+    report.vertices_without_normal = size_t(std::count(m.normal_valid.begin(), m.normal_valid.end(), 0));
+}
+
+} // namespace
+
+ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positions, std::vector<Triangle> triangles,
+                          const ImportOptions& options) {
+    ImportedMesh out;
+    TriangleMesh& m = out.mesh;
+    ImportReport& r = out.report;
+    m.name = std::move(name);
+    r.file_vertices = positions.size();
+
+    for (size_t i = 0; i < positions.size(); ++i)
+        if (!positions[i].allFinite())
+            throw_bad_input(m.name, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    for (size_t f = 0; f < triangles.size(); ++f)
+        for (uint32_t v : triangles[f])
+            if (v >= positions.size())
+                throw_bad_input(m.name, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                                            " of " + std::to_string(positions.size()));
+    if (triangles.empty()) throw_bad_input(m.name, "no triangles (points, lines or an empty file)");
+
+    // Weld by position: files often split vertices at seams, and STL is unindexed.
+    Eigen::Vector3d lo = positions[0], hi = positions[0];
+    for (const auto& p : positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const double diag = (hi - lo).norm();
+    m.welded_index = detail::weld_positions(positions, options.weld_tolerance * diag, m.positions);
+    r.vertices = m.positions.size();
+    r.welded = r.file_vertices - r.vertices;
+
+    // Faces that collapse to a point or a segment after welding cannot be triangles.
+    const double area_eps = 1e-14 * diag * diag;
+    m.triangles.reserve(triangles.size());
+    for (const auto& t : triangles) {
+        const Triangle w{m.welded_index[t[0]], m.welded_index[t[1]], m.welded_index[t[2]]};
+        if (w[0] == w[1] || w[1] == w[2] || w[0] == w[2]) {
+            ++r.degenerate_faces;
+            continue;
+        }
+        const double area2 = (m.positions[w[1]] - m.positions[w[0]]).cross(m.positions[w[2]] - m.positions[w[0]]).norm();
+        if (!(area2 > area_eps)) ++r.degenerate_faces; // kept for topology, ignored for normals
+        m.triangles.push_back(w);
+    }
+    if (m.triangles.empty()) throw_bad_input(m.name, "every face is degenerate");
+    r.faces = m.triangles.size();
+
+    // Topology from sorted half-edges.
+    const auto edges = collect_edges(m.triangles);
+    std::vector<std::vector<std::pair<uint32_t, bool>>> manifold_nbrs(m.triangles.size()); // (face, same_direction)
+    std::vector<uint32_t> comp_parent(m.triangles.size());
+    std::iota(comp_parent.begin(), comp_parent.end(), 0);
+    auto find = [&](uint32_t x) {
+        while (comp_parent[x] != x) x = comp_parent[x] = comp_parent[comp_parent[x]];
+        return x;
+    };
+    std::vector<uint8_t> face_on_open_edge(m.triangles.size(), 0);
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        const size_t uses = j - i;
+        if (uses == 1) ++r.boundary_edges;
+        if (uses >= 3) ++r.nonmanifold_edges;
+        if (uses != 2)
+            for (size_t k = i; k < j; ++k) face_on_open_edge[edges[k].face] = 1;
+        for (size_t k = i + 1; k < j; ++k) comp_parent[find(edges[k].face)] = find(edges[i].face);
+        if (uses == 2) {
+            const bool same = edges[i].forward == edges[i + 1].forward; // same direction: inconsistent
+            manifold_nbrs[edges[i].face].push_back({edges[i + 1].face, same});
+            manifold_nbrs[edges[i + 1].face].push_back({edges[i].face, same});
+        }
+        i = j;
+    }
+    std::vector<std::vector<uint32_t>> components;
+    {
+        std::vector<int64_t> comp_of_root(m.triangles.size(), -1);
+        for (uint32_t f = 0; f < m.triangles.size(); ++f) {
+            const uint32_t root = find(f);
+            if (comp_of_root[root] < 0) {
+                comp_of_root[root] = int64_t(components.size());
+                components.emplace_back();
+            }
+            components[size_t(comp_of_root[root])].push_back(f);
+        }
+    }
+    r.components = components.size();
+    r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
+    m.on_open_part.assign(m.triangles.size(), 0);
+    for (const auto& comp : components)
+        if (std::any_of(comp.begin(), comp.end(), [&](uint32_t f) { return face_on_open_edge[f] != 0; }))
+            for (uint32_t f : comp) m.on_open_part[f] = 1;
+
+    if (options.fix_orientation) {
+        // Breadth-first over manifold edges: a neighbour walking the shared edge the same
+        // way is wound the other way round. Keep whichever orientation flips fewer faces.
+        std::vector<int8_t> flip(m.triangles.size(), -1);
+        size_t non_orientable = 0;
+        for (uint32_t seed = 0; seed < m.triangles.size(); ++seed) {
+            if (flip[seed] >= 0) continue;
+            std::vector<uint32_t> patch{seed};
+            flip[seed] = 0;
+            std::queue<uint32_t> q;
+            q.push(seed);
+            while (!q.empty()) {
+                const uint32_t f = q.front();
+                q.pop();
+                for (auto [g, same] : manifold_nbrs[f]) {
+                    const int8_t want = int8_t(flip[f] ^ (same ? 1 : 0));
+                    if (flip[g] < 0) {
+                        flip[g] = want;
+                        patch.push_back(g);
+                        q.push(g);
+                    } else if (flip[g] != want) {
+                        ++non_orientable;
+                    }
+                }
+            }
+            const size_t flips = size_t(std::count_if(patch.begin(), patch.end(), [&](uint32_t f) { return flip[f] == 1; }));
+            const bool invert = flips * 2 > patch.size();
+            for (uint32_t f : patch)
+                if ((flip[f] == 1) != invert) {
+                    std::swap(m.triangles[f][1], m.triangles[f][2]);
+                    ++r.flipped_faces;
+                }
+        }
+        if (r.flipped_faces)
+            r.fixes.push_back("re-wound " + std::to_string(r.flipped_faces) + " faces to agree with their neighbours");
+        if (non_orientable)
+            r.warnings.push_back("surface is not orientable (" + std::to_string(non_orientable / 2) +
+                                 " edges disagree after re-winding)");
+        // A closed part with negative volume is inside out.
+        for (const auto& comp : components) {
+            if (!m.on_open_part[comp[0]] && signed_volume(m, comp) < 0) {
+                for (uint32_t f : comp) std::swap(m.triangles[f][1], m.triangles[f][2]);
+                ++r.inverted_components;
+            }
+        }
+        if (r.inverted_components)
+            r.fixes.push_back("turned " + std::to_string(r.inverted_components) + " inside-out closed part(s) right side out");
+    }
+    if (r.boundary_edges)
+        r.warnings.push_back("mesh is open: " + std::to_string(r.boundary_edges) +
+                             " boundary edges (inside/outside of open parts is a guess)");
+    if (r.nonmanifold_edges)
+        r.warnings.push_back("mesh is non-manifold: " + std::to_string(r.nonmanifold_edges) + " edges have 3 or more faces");
+    if (r.degenerate_faces)
+        r.warnings.push_back(std::to_string(r.degenerate_faces) + " degenerate faces ignored for normals");
+
+    compute_normals(m, r, area_eps);
+    if (r.vertices_without_normal)
+        r.warnings.push_back(std::to_string(r.vertices_without_normal) +
+                             " vertices have no computable normal and are left out of sampling");
+    return out;
+}
+
+} // namespace spt

@@ -1,0 +1,96 @@
+#include "spt/collision_model.hpp"
+#include "spt/error.hpp"
+#include "base/float_round.hpp"
+#include "query/exact_data.hpp"
+#include "query/triangle_tree.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace spt {
+namespace {
+
+using detail::round_up;
+
+const SamplingTree& pick_tree(const SptDocument& doc, const std::string& name) {
+    if (doc.trees.empty()) throw_bad_input(doc.mesh.name, "the document holds no sampling tree");
+    if (name.empty()) return doc.trees.front();
+    const SamplingTree* t = doc.tree(name);
+    if (!t) throw_bad_input(doc.mesh.name, "no tree named '" + name + "'");
+    return *t;
+}
+
+} // namespace
+
+CollisionModel::CollisionModel(const SptDocument& doc, const std::string& tree_name) { init(doc, tree_name); }
+
+CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh, const std::string& tree_name) {
+    init(doc, tree_name);
+    const std::string mismatch = check_mesh_matches(doc.mesh, mesh);
+    if (!mismatch.empty()) throw_bad_input(mesh.name, mismatch);
+    auto data = std::make_shared<ExactData>();
+    ExactData& e = *data;
+    e.positions = mesh.positions;
+    e.triangles = mesh.triangles;
+    const size_t nt = e.triangles.size();
+    e.tri_sphere.assign(nt * 4, 0);
+    for (uint32_t f = 0; f < nt; ++f) {
+        const auto& t = e.triangles[f];
+        const Eigen::Vector3d &a = e.positions[t[0]], &b = e.positions[t[1]], &c = e.positions[t[2]];
+        const Eigen::Vector3d centre = (a + b + c) / 3.0;
+        const double r = std::max({(a - centre).norm(), (b - centre).norm(), (c - centre).norm()});
+        // The float centre moved by rounding: grow the radius by that distance.
+        const Eigen::Vector3d fc = detail::float_rounded(centre);
+        for (int k = 0; k < 3; ++k) e.tri_sphere[4 * f + k] = float(fc[k]);
+        e.tri_sphere[4 * f + 3] = round_up(r + (fc - centre).norm());
+        reach_ = std::max({reach_, a.norm(), b.norm(), c.norm()});
+    }
+    detail::build_triangle_tree(e);
+    exact_ = std::move(data);
+}
+
+bool CollisionModel::has_mesh() const { return exact_ && !exact_->triangles.empty(); }
+
+const ExactData& CollisionModel::exact() const {
+    static const ExactData kNone;
+    return exact_ ? *exact_ : kNone;
+}
+
+void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) {
+    const SamplingTree& t = pick_tree(doc, tree_name);
+    tree_ = CompactTree(t, doc.samples);
+    diagonal_ = doc.mesh.diagonal;
+    reach_ = 0;
+    for (const CompactNode& n : tree_.nodes()) {
+        if (!n.is_active()) continue;
+        max_leaf_ = std::max(max_leaf_, n.count);
+        for (uint32_t k = n.first; k < n.first + n.count; ++k)
+            reach_ = std::max(reach_, tree_.sphere_centre(n, k).cast<double>().norm() + n.ss_radius);
+    }
+    const auto& nodes = tree_.nodes();
+    bounds_reach_.assign(nodes.size(), 0);
+    for (size_t i = nodes.size(); i-- > 0;) { // children follow their parent
+        const CompactNode& n = nodes[i];
+        double r = n.bv_radius;
+        if (!n.is_active())
+            for (uint32_t child : {uint32_t(i + 1), n.first}) {
+                const CompactNode& m = nodes[child];
+                const Eigen::Vector3d d(m.center[0] - n.center[0], m.center[1] - n.center[1], m.center[2] - n.center[2]);
+                r = std::max(r, d.norm() + bounds_reach_[child]);
+            }
+        bounds_reach_[i] = n.is_active() ? n.bv_radius : round_up(r);
+    }
+    // Node spheres too: continuous detection grows every tested sphere by the motion of its farthest point.
+    for (const CompactNode& n : tree_.nodes())
+        reach_ = std::max(reach_, Eigen::Vector3d(n.center[0], n.center[1], n.center[2]).norm() + n.bv_radius);
+}
+
+size_t CollisionModel::memory_bytes() const {
+    const ExactData& e = exact();
+    return tree_.memory_bytes() + e.positions.capacity() * sizeof(Eigen::Vector3d) +
+           e.triangles.capacity() * sizeof(Triangle) +
+           e.tri_nodes.capacity() * sizeof(TriangleNode) + e.tri_order.capacity() * sizeof(uint32_t) +
+           e.tri_sphere.capacity() * sizeof(float);
+}
+
+} // namespace spt

@@ -1,0 +1,55 @@
+#pragma once
+// Pieces of the query shared by query.cpp, the brute-force reference, response and CCD.
+#include "spt/query.hpp"
+#include "query/scratch.hpp"
+
+namespace spt {
+
+// B's pose in A's frame, in double and float, and the rounding margin.
+struct QueryFrame {
+    QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a);
+    Eigen::Matrix3d Rd;
+    Eigen::Vector3d td;
+    Eigen::Matrix3f R;
+    Eigen::Vector3f t;
+    float margin = 0;
+};
+
+// Grows the scratch for this pair of models and starts a new epoch of lazy stamps.
+void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const CollisionModel& b, bool exact);
+
+// One query in progress.
+struct QueryRun {
+    QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const QueryOptions& options,
+             QueryScratch& scratch);
+    void run();
+    // B's spheres of active node j in A's frame, into columns x, y, z (count floats each,
+    // rounded up to 4: each column needs 3 floats of room past count); the one place
+    // B's spheres are moved, so the walk and the brute-force reference round them alike.
+    void move_leaf(uint32_t j, float* x, float* y, float* z) const;
+    // Centre of B's compact node j in A's frame.
+    Eigen::Vector3f b_node_centre(uint32_t j) const;
+    const Eigen::Vector3d& b_vertex(uint32_t v);
+    const float* b_tri_sphere(uint32_t tri);
+    bool triangle_pair(uint32_t ta, uint32_t tb);
+    // Level `exact`: walks the triangle trees; sets res.collide (and, in mode all, the triangle pairs).
+    void run_triangles();
+    // Tests the spheres of active nodes i (A) and j (B), ca being i's centre; returns how
+    // many pairs it recorded (mode all: every overlapping pair; any and deepest: the
+    // closest one, or none).
+    uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca);
+    // Records a colliding pair: spheres a, b of active nodes node_a, node_b (at `bounds`, the nodes).
+    void record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
+                const Eigen::Vector3f& cb, float reach, float ra, float d2);
+
+    const CollisionModel& A;
+    const CollisionModel& B;
+    const QueryOptions& o;
+    detail::ScratchBuffers& s;
+    QueryFrame f;
+    bool exact;
+    bool have_best = false;
+    QueryResult res; // res.deepest is written only by record(), so it stays default without a contact
+};
+
+} // namespace spt

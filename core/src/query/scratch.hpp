@@ -1,0 +1,35 @@
+#pragma once
+// The buffers behind QueryScratch: grown to the largest models met, reused by every query.
+#include "spt/query_scratch.hpp"
+#include <Eigen/Core>
+#include <utility>
+#include <vector>
+
+namespace spt::detail {
+
+// A node pair on the traversal stack: its bounding spheres overlap. a and b are
+// CompactNode indices, the top bit set for an active node; centres in A's frame.
+struct NodePairVisit {
+    uint32_t a, b;
+    float ca[3], cb[3];
+    float ra, rb; // radii the pair was tested with
+    float d2;     // squared centre distance
+};
+
+struct ScratchBuffers {
+    std::vector<std::pair<uint32_t, uint32_t>> stack;  // triangle-tree walk (level exact)
+    std::vector<NodePairVisit> visits;                 // sampling-tree walk
+    std::vector<float> moved_b;              // one leaf of B in A's frame (x, y, z columns)
+    std::vector<Eigen::Vector3d> bverts;     // B's vertices in A's frame (lazy)
+    std::vector<uint32_t> vert_stamp;
+    std::vector<float> btri;                 // B's triangle bounding spheres in A's frame (lazy)
+    std::vector<uint32_t> tri_stamp;
+    std::vector<float> d2;                   // distance matrix of one leaf pair
+    std::vector<float> ga, gb;               // culled spheres gathered (x, y, z blocks)
+    std::vector<uint32_t> ia, ib;            // their sphere indices
+    std::vector<SpherePair> pairs;
+    std::vector<TrianglePair> tri_pairs;
+    uint32_t epoch = 0;
+};
+
+} // namespace spt::detail

@@ -1,0 +1,59 @@
+// Caps sampling-sphere radii so that no sphere pokes out of the mesh by more than an allowance.
+#include "sampling/radius_limiter.hpp"
+#include "geometry/triangle_bvh.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt {
+
+RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
+    : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion) {
+    // A vertex is on an open part if one of its faces is (prepare_mesh found the parts).
+    const size_t nv = mesh.positions.size();
+    const bool known = mesh.on_open_part.size() == mesh.triangles.size();
+    open_part_.assign(nv, known ? 0 : 1);
+    for (size_t f = 0; known && f < mesh.triangles.size(); ++f)
+        if (mesh.on_open_part[f])
+            for (uint32_t v : mesh.triangles[f]) open_part_[v] = 1;
+    ray_length_ = 4 * mesh.diagonal() + 1e-300; // from any point on the mesh to beyond it
+}
+
+bool RadiusLimiter::back_exposed(const Eigen::Vector3d& p, const Eigen::Vector3d& n, uint32_t vertex) const {
+    if (vertex >= open_part_.size() || !open_part_[vertex]) return false;
+    const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    const double c = std::sqrt(0.5);
+    const Eigen::Vector3d dirs[] = {-n, c * (-n + t1), c * (-n - t1), c * (-n + t2), c * (-n - t2)};
+    for (const auto& d : dirs)
+        if (!bvh_->segment_hits(p, p + ray_length_ * d, 1e-9)) return true;
+    return false;
+}
+
+RadiusLimiter::~RadiusLimiter() = default;
+
+bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r) const {
+    if (r <= protrusion_) return false;
+    const Eigen::Vector3d c = p - r * n;
+    // The tangent point p is at distance r; a surface nearer than r - allowance means the
+    // sphere pokes out there by more than the allowance.
+    if (bvh_->any_within(c, (r - protrusion_) * (r - protrusion_))) return true;
+    // A centre beyond a wall thinner than the allowance passes the test above; the segment
+    // from the tangent point to the centre then crosses the surface. The start is skipped
+    // so the faces at p itself do not count.
+    return bvh_->segment_hits(p, c, 1e-6);
+}
+
+float RadiusLimiter::limit(const Eigen::Vector3f& pf, const Eigen::Vector3f& nf, float r_max, uint32_t vertex) const {
+    const Eigen::Vector3d p = pf.cast<double>(), n = nf.cast<double>();
+    if (back_exposed(p, n, vertex)) r_max = std::min(r_max, float(protrusion_ / 2));
+    // Protrusion grows with r (a centre that passes through a thin part counts as outside),
+    // so the largest allowed radius is found by bisection.
+    if (!protrudes(p, n, r_max)) return r_max;
+    double lo = std::min<double>(protrusion_, r_max), hi = r_max;
+    for (int i = 0; i < 20 && hi > lo * 1.01; ++i) {
+        const double mid = (lo + hi) / 2;
+        (protrudes(p, n, mid) ? hi : lo) = mid;
+    }
+    return float(lo);
+}
+
+} // namespace spt

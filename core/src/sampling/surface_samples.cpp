@@ -1,0 +1,113 @@
+// Vertex samples and tolerance-driven face samples of a mesh.
+#include "sampling/surface_samples.hpp"
+#include "sampling/encoding.hpp"
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace spt {
+
+SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule) {
+    const size_t n = mesh.positions.size();
+    std::vector<double> edge_sum(n, 0);
+    std::vector<uint32_t> edge_count(n, 0);
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            // Each interior edge is seen twice, once per face: the mean is unaffected.
+            const uint32_t a = t[k], b = t[(k + 1) % 3];
+            const double len = (mesh.positions[a] - mesh.positions[b]).norm();
+            edge_sum[a] += len, edge_sum[b] += len;
+            ++edge_count[a], ++edge_count[b];
+        }
+    SampleSet s;
+    for (auto* v : {&s.spacing, &s.max_radius}) v->reserve(n);
+    s.points.reserve(n), s.normals.reserve(n), s.sources.reserve(n);
+    for (uint32_t v = 0; v < n; ++v) {
+        if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
+        const float spacing = float(edge_sum[v] / edge_count[v]);
+        const Eigen::Vector3f p = mesh.positions[v].cast<float>();
+        const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
+        s.add(p, nrm, v, spacing, limiter.limit(p, nrm, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), v));
+    }
+    return s;
+}
+
+double max_face_sample_gap(double radius, double eps) {
+    // A point at in-plane distance h from a face sample is sqrt(h^2 + r^2) - r outside its sphere.
+    return std::sqrt(eps * eps + 2.0 * radius * eps);
+}
+
+namespace {
+
+// Adaptive sampling of one triangle on a dyadic barycentric grid: a sub-triangle is fine
+// when every point of it is close enough to one of its corners for that corner's sphere.
+struct FaceSampler {
+    static constexpr int kLevels = 20; // finest grid: 2^-20 of the triangle
+    static constexpr int64_t kGrid = int64_t(1) << kLevels;
+    SampleSet& out;
+    const RadiusLimiter& limiter;
+    uint32_t face;
+    Eigen::Vector3d a, b, c;
+    Eigen::Vector3f normal;
+    uint32_t corner_vertex; // any vertex of the face: it names the face's connected part
+    float spacing;
+    RadiusRule rule;
+    float factor;
+    double eps;
+    std::map<std::pair<int64_t, int64_t>, float> radius_at; // assumed radius of each corner sample
+
+    Eigen::Vector3d point(int64_t i, int64_t j) const {
+        return a + (double(i) / kGrid) * (b - a) + (double(j) / kGrid) * (c - a);
+    }
+    float corner(int64_t i, int64_t j) {
+        auto it = radius_at.find({i, j});
+        if (it != radius_at.end()) return it->second;
+        const Eigen::Vector3f p = point(i, j).cast<float>();
+        const float cap = limiter.limit(p, normal, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), corner_vertex);
+        out.add(p, normal, face | kFaceSampleBit, spacing, cap);
+        const float r = factor * rule.for_sample(spacing, out.max_radius.back());
+        radius_at[{i, j}] = r;
+        return r;
+    }
+    // Longest-edge bisection follows the triangle's shape, so a long thin face is refined
+    // along its length only.
+    void refine(std::array<std::pair<int64_t, int64_t>, 3> v, int level) {
+        float r = INFINITY;
+        for (auto [i, j] : v) r = std::min(r, corner(i, j));
+        const Eigen::Vector3d p[3] = {point(v[0].first, v[0].second), point(v[1].first, v[1].second),
+                                      point(v[2].first, v[2].second)};
+        int k = 0; // edge k runs from v[k] to v[k+1]
+        double longest = 0;
+        for (int e = 0; e < 3; ++e) {
+            const double len = (p[(e + 1) % 3] - p[e]).norm();
+            if (len > longest) longest = len, k = e;
+        }
+        // Every point of a triangle is within (longest edge)/sqrt(3) of a corner.
+        const double rho = longest / std::sqrt(3.0);
+        if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
+        const auto a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
+        if (((a.first + b.first) | (a.second + b.second)) & 1) return; // finest grid reached
+        const std::pair<int64_t, int64_t> m{(a.first + b.first) / 2, (a.second + b.second) / 2};
+        refine({a, m, c}, level + 1);
+        refine({m, b, c}, level + 1);
+    }
+};
+
+} // namespace
+
+void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
+                      const RadiusRule& rule, float radius_factor) {
+    const TriangleMesh& mesh = limiter.mesh();
+    const auto& t = mesh.triangles[face];
+    const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    const Eigen::Vector3d fn = (b - a).cross(c - a);
+    if (!(fn.norm() > 0)) return;
+    // Spacing stands for the mesh's own resolution (it sets default radii), not the grid's.
+    const float spacing = float(((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0);
+    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), t[0], spacing, rule, radius_factor, eps, {}};
+    const int64_t g = FaceSampler::kGrid;
+    fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
+}
+
+} // namespace spt

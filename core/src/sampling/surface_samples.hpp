@@ -1,0 +1,26 @@
+#pragma once
+// Vertex samples and tolerance-driven face samples of a mesh.
+#include "spt/samples.hpp"
+#include "sampling/radius_limiter.hpp"
+
+namespace spt {
+
+/// How far the radius search looks, relative to the radius the rule asks for: room for a
+/// node's median spacing to exceed a member's own. Beyond it max_radius is not explored.
+constexpr float kRadiusSearchHeadroom = 2.0f;
+
+/// One sample per vertex with a valid normal; spacing = mean length of its edges,
+/// max_radius from `limiter`, searched up to kRadiusSearchHeadroom x rule.for_sample.
+SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {});
+
+/// Adds face samples (face normals) on `triangle`, refining adaptively until every point of
+/// it lies within reach of a face sample whose sphere leaves it at most `eps` uncovered,
+/// assuming each sample's radius is `radius_factor` x rule.for_sample(spacing, max_radius).
+void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
+                      const RadiusRule& rule, float radius_factor);
+
+/// Largest in-plane distance between face samples that keeps the uncovered depth
+/// under spheres of radius r within eps: sqrt(h^2 + r^2) - r <= eps.
+double max_face_sample_gap(double radius, double eps);
+
+} // namespace spt

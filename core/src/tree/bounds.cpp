@@ -1,0 +1,66 @@
+#include "tree/bounds.hpp"
+#include "base/float_round.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt::detail {
+namespace {
+
+// Largest |centre - c_i| + r_i: the radius a ball around `centre` needs. With equal radii
+// (every leaf, most inner nodes) one square root per run is enough.
+double enclosing_radius(const Eigen::Vector3d& centre, const Eigen::Vector3f* c, const float* r, size_t n,
+                        bool equal_radii) {
+    if (equal_radii) {
+        // Differences in double: in float they err by the coordinates' magnitude, which can
+        // far exceed a small node's radius.
+        double d2 = 0;
+        for (size_t i = 0; i < n; ++i) d2 = std::max(d2, (c[i].cast<double>() - centre).squaredNorm());
+        return std::sqrt(d2) + r[0];
+    }
+    double best = 0;
+    for (size_t i = 0; i < n; ++i) best = std::max(best, (c[i].cast<double>() - centre).norm() + r[i]);
+    return best;
+}
+
+} // namespace
+
+void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const Eigen::Vector3f* p, size_t n,
+               const Ball& hint, BoundsMethod method, const Eigen::AlignedBox3f* centre_box) {
+    if (n == 0) {
+        node.center.setZero();
+        node.bv_radius = 0;
+        return;
+    }
+    if (method == BoundsMethod::Paper) {
+        Eigen::Vector3f lo = p[0], hi = p[0];
+        for (size_t i = 1; i < n; ++i) lo = lo.cwiseMin(p[i]), hi = hi.cwiseMax(p[i]);
+        node.center = (lo + hi) / 2;
+        node.bv_radius = (hi - lo).maxCoeff() / 2;
+        return;
+    }
+    // Tight: try a few centres, each with the exact radius that encloses every sphere.
+    // Centres are rounded to float first, so the radius measured is the stored centre's.
+    std::vector<Eigen::Vector3d> candidates;
+    auto add = [&](const Eigen::Vector3d& x) { candidates.push_back(float_rounded(x)); };
+    Eigen::AlignedBox3f box;
+    if (centre_box) box = *centre_box;
+    else for (size_t i = 0; i < n; ++i) box.extend(c[i]);
+    add(box.center().cast<double>());
+    if (hint.radius >= 0) add(hint.center);
+    const bool equal_radii = std::all_of(r, r + n, [&](float x) { return x == r[0]; });
+    if (n <= 32 && equal_radii) {
+        // Equal radii: the smallest ball of the centres grown by r is the smallest enclosing ball.
+        std::vector<Eigen::Vector3d> pts(n);
+        for (size_t i = 0; i < n; ++i) pts[i] = c[i].cast<double>();
+        add(smallest_ball(std::move(pts)).center);
+    }
+    double rad = INFINITY;
+    for (const auto& cand : candidates) {
+        const double cr = enclosing_radius(cand, c, r, n, equal_radii);
+        // Candidates hold float values, so the radius measured is the stored centre's.
+        if (cr < rad) rad = cr, node.center = Eigen::Vector3f(float(cand.x()), float(cand.y()), float(cand.z()));
+    }
+    node.bv_radius = round_up(rad);
+}
+
+} // namespace spt::detail

@@ -1,0 +1,264 @@
+#include "spt/sampling_tree.hpp"
+#include "tree/bounds.hpp"
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace spt {
+
+SamplingTree::SamplingTree(std::string name, uint32_t sample_count) : name_(std::move(name)) {
+    TreeNode root;
+    root.samples.resize(sample_count);
+    for (uint32_t i = 0; i < sample_count; ++i) root.samples[i] = i;
+    nodes_.emplace(root.id, std::move(root));
+}
+
+SamplingTree::SamplingTree(std::string name, std::vector<TreeNode> nodes) : name_(std::move(name)) {
+    for (auto& n : nodes) nodes_[n.id] = std::move(n);
+}
+
+const TreeNode* SamplingTree::find(NodeId id) const {
+    auto it = nodes_.find(id);
+    return it == nodes_.end() ? nullptr : &it->second;
+}
+
+TreeNode* SamplingTree::find_mutable(NodeId id) {
+    auto it = nodes_.find(id);
+    return it == nodes_.end() ? nullptr : &it->second;
+}
+
+void SamplingTree::put(TreeNode node) { nodes_[node.id] = std::move(node); }
+
+std::vector<const TreeNode*> SamplingTree::nodes() const {
+    std::vector<const TreeNode*> out;
+    out.reserve(nodes_.size());
+    for (const auto& [id, n] : nodes_) out.push_back(&n);
+    return out;
+}
+
+std::vector<const TreeNode*> SamplingTree::active_nodes() const {
+    std::vector<const TreeNode*> out;
+    for (const auto& [id, n] : nodes_)
+        if (n.active) out.push_back(&n);
+    return out;
+}
+
+int SamplingTree::depth() const {
+    int d = 0;
+    for (const auto& [id, n] : nodes_) d = std::max(d, node_depth(id));
+    return d;
+}
+
+float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples, const RadiusRule& rule) {
+    if (rule.fixed > 0) return rule.fixed;
+    if (members.empty()) return 0;
+    // The median spacing makes neighbouring spheres overlap; the smallest allowed radius
+    // keeps every sphere of the node from poking out of the mesh.
+    std::vector<float> s(members.size());
+    float cap = INFINITY;
+    for (size_t i = 0; i < members.size(); ++i) {
+        s[i] = samples.spacing[members[i]];
+        if (!samples.max_radius.empty()) cap = std::min(cap, samples.max_radius[members[i]]);
+    }
+    std::nth_element(s.begin(), s.begin() + long(s.size() / 2), s.end());
+    const float r = std::min(rule.scale * s[s.size() / 2], cap);
+    return r > 0 ? r : 1e-6f;
+}
+
+void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const SampleSet& samples, BoundsMethod method) {
+    std::vector<Eigen::Vector3f> c(members.size()), p(members.size());
+    std::vector<float> r(members.size(), node.ss_radius);
+    for (size_t i = 0; i < members.size(); ++i) {
+        p[i] = samples.points[members[i]];
+        c[i] = sphere_center(p[i], samples.normals[members[i]], node.ss_radius);
+    }
+    detail::bound_run(node, c.data(), r.data(), p.data(), members.size(), {}, method);
+}
+
+void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule) {
+    // Children have larger ids than parents: walking ids downwards finishes children first.
+    for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
+        TreeNode& n = it->second;
+        if (n.active) {
+            n.ss_radius = node_radius(n.samples, samples, rule);
+        } else {
+            const TreeNode* l = find(left_child(n.id));
+            const TreeNode* r = find(right_child(n.id));
+            n.ss_radius = std::max(l ? l->ss_radius : 0.0f, r ? r->ss_radius : 0.0f);
+        }
+    }
+}
+
+namespace {
+
+// Appends an active node's sampling spheres (centres, radii) and their surface points.
+void append_spheres(const TreeNode& n, const SampleSet& samples, std::vector<Eigen::Vector3f>& c,
+                    std::vector<float>& r, std::vector<Eigen::Vector3f>& p) {
+    for (uint32_t s : n.samples) {
+        p.push_back(samples.points[s]);
+        c.push_back(sphere_center(samples.points[s], samples.normals[s], n.ss_radius));
+        r.push_back(n.ss_radius);
+    }
+}
+
+} // namespace
+
+void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
+    // Lay the samples out leaf by leaf so that every node covers one contiguous run.
+    std::vector<Eigen::Vector3f> c, p;
+    std::vector<float> r;
+    c.reserve(samples.size()), p.reserve(samples.size()), r.reserve(samples.size());
+    struct Result {
+        detail::Ball ball;
+        Eigen::AlignedBox3f box; // of the sphere centres below
+    };
+    std::function<Result(TreeNode&)> visit = [&](TreeNode& n) -> Result {
+        const size_t begin = c.size();
+        Result out;
+        detail::Ball hint;
+        if (n.active) {
+            append_spheres(n, samples, c, r, p);
+            for (size_t k = begin; k < c.size(); ++k) out.box.extend(c[k]);
+        } else {
+            for (NodeId child : {left_child(n.id), right_child(n.id)})
+                if (TreeNode* ch = find_mutable(child)) {
+                    const Result sub = visit(*ch);
+                    hint = detail::merge_balls(hint, sub.ball);
+                    out.box.extend(sub.box);
+                }
+        }
+        detail::bound_run(n, c.data() + begin, r.data() + begin, p.data() + begin, c.size() - begin, hint, method,
+                          &out.box);
+        out.ball = {n.center.cast<double>(), double(n.bv_radius)};
+        return out;
+    };
+    if (TreeNode* root = find_mutable(root_id())) visit(*root);
+}
+
+void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMethod method) {
+    // Gather the samples below each node on the path and re-bound it.
+    for (NodeId id = from; id != 0; id = parent_of(id)) {
+        TreeNode* n = find_mutable(id);
+        if (!n) continue;
+        if (!n->active) {
+            const TreeNode* l = find(left_child(id));
+            const TreeNode* r = find(right_child(id));
+            n->ss_radius = std::max(l ? l->ss_radius : 0.0f, r ? r->ss_radius : 0.0f);
+        }
+        std::vector<Eigen::Vector3f> c, p;
+        std::vector<float> rad;
+        std::function<void(const TreeNode&)> collect = [&](const TreeNode& t) {
+            if (t.active) {
+                append_spheres(t, samples, c, rad, p);
+                return;
+            }
+            if (const TreeNode* l = find(left_child(t.id))) collect(*l);
+            if (const TreeNode* r = find(right_child(t.id))) collect(*r);
+        };
+        collect(*n);
+        detail::Ball hint;
+        if (!n->active)
+            for (NodeId child : {left_child(id), right_child(id)})
+                if (const TreeNode* ch = find(child)) hint = detail::merge_balls(hint, {ch->center.cast<double>(), ch->bv_radius});
+        detail::bound_run(*n, c.data(), rad.data(), p.data(), c.size(), hint, method);
+    }
+}
+
+EditResult SamplingTree::split(NodeId id, const std::vector<uint32_t>& selection, const SampleSet& samples,
+                               const RadiusRule& rule, BoundsMethod bounds) {
+    TreeNode* n = find_mutable(id);
+    if (!n) return {false, "node " + std::to_string(id) + " does not exist"};
+    if (!n->active) return {false, "node " + std::to_string(id) + " is already split; select an active node"};
+    if (node_depth(id) >= kMaxNodeDepth)
+        return {false, "node " + std::to_string(id) + " is at the deepest level ids allow (" +
+                           std::to_string(kMaxNodeDepth) + ")"};
+    std::vector<uint32_t> sel = selection;
+    std::sort(sel.begin(), sel.end());
+    TreeNode left, right;
+    left.id = left_child(id);
+    right.id = right_child(id);
+    std::set_intersection(n->samples.begin(), n->samples.end(), sel.begin(), sel.end(), std::back_inserter(left.samples));
+    std::set_difference(n->samples.begin(), n->samples.end(), left.samples.begin(), left.samples.end(),
+                        std::back_inserter(right.samples));
+    if (left.samples.empty()) return {false, "the selection holds none of node " + std::to_string(id) + "'s samples"};
+    if (right.samples.empty())
+        return {false, "the selection holds all of node " + std::to_string(id) + "'s samples; nothing would be left"};
+    left.ss_radius = node_radius(left.samples, samples, rule);
+    right.ss_radius = node_radius(right.samples, samples, rule);
+    bound_samples(left, left.samples, samples, bounds);
+    bound_samples(right, right.samples, samples, bounds);
+    n->active = false;
+    n->samples.clear();
+    n->samples.shrink_to_fit();
+    put(std::move(left));
+    put(std::move(right));
+    refresh_path(id, samples, bounds);
+    return {};
+}
+
+void SamplingTree::remove_subtree(NodeId id) {
+    for (NodeId child : {left_child(id), right_child(id)}) {
+        if (node_depth(id) >= kMaxNodeDepth || !find(child)) continue;
+        remove_subtree(child);
+        nodes_.erase(child);
+    }
+}
+
+EditResult SamplingTree::merge(NodeId id, const SampleSet& samples, const RadiusRule& rule, BoundsMethod bounds) {
+    TreeNode* n = find_mutable(id);
+    if (!n) return {false, "node " + std::to_string(id) + " does not exist"};
+    if (n->active) return {false, "node " + std::to_string(id) + " is active; there is nothing to merge"};
+    std::vector<uint32_t> all;
+    for (const auto& [nid, t] : nodes_) {
+        if (!t.active || nid <= id) continue;
+        NodeId a = nid;
+        while (a > id) a = parent_of(a);
+        if (a == id) all.insert(all.end(), t.samples.begin(), t.samples.end());
+    }
+    std::sort(all.begin(), all.end());
+    remove_subtree(id);
+    n = find_mutable(id);
+    n->active = true;
+    n->samples = std::move(all);
+    n->ss_radius = node_radius(n->samples, samples, rule);
+    refresh_path(id, samples, bounds);
+    return {};
+}
+
+std::string SamplingTree::validate(uint32_t sample_count) const {
+    auto where = [](NodeId id) { return "node " + std::to_string(id) + ": "; };
+    if (!find(root_id())) return "tree has no root node";
+    std::vector<uint8_t> seen(sample_count, 0);
+    for (const auto& [id, n] : nodes_) {
+        if (id == 0 || id != n.id) return where(id) + "invalid id";
+        if (node_depth(id) > kMaxNodeDepth) return where(id) + "deeper than " + std::to_string(kMaxNodeDepth) + " levels";
+        if (id != root_id()) {
+            const TreeNode* parent = find(parent_of(id));
+            if (!parent) return where(id) + "parent " + std::to_string(parent_of(id)) + " is missing";
+            if (parent->active) return where(id) + "parent " + std::to_string(parent_of(id)) + " is active";
+        }
+        if (!n.center.allFinite() || !std::isfinite(n.bv_radius) || n.bv_radius < 0)
+            return where(id) + "bounding sphere is not finite and non-negative";
+        if (!std::isfinite(n.ss_radius) || !(n.ss_radius > 0)) return where(id) + "sampling-sphere radius must be > 0";
+        if (n.active) {
+            if (n.samples.empty()) return where(id) + "active node holds no samples";
+            for (size_t i = 0; i < n.samples.size(); ++i) {
+                const uint32_t s = n.samples[i];
+                if (s >= sample_count)
+                    return where(id) + "sample index " + std::to_string(s) + " out of range (" +
+                           std::to_string(sample_count) + " samples)";
+                if (i && s <= n.samples[i - 1]) return where(id) + "sample indices are not strictly increasing";
+                if (seen[s]) return where(id) + "sample " + std::to_string(s) + " is in two active nodes";
+                seen[s] = 1;
+            }
+        } else {
+            if (!n.samples.empty()) return where(id) + "inactive node holds samples";
+            if (!find(left_child(id)) || !find(right_child(id))) return where(id) + "inactive node lacks a child";
+        }
+    }
+    for (uint32_t s = 0; s < sample_count; ++s)
+        if (!seen[s]) return "sample " + std::to_string(s) + " is in no active node";
+    return {};
+}
+
+} // namespace spt

@@ -1,0 +1,179 @@
+#include "spt/tree_builder.hpp"
+#include "sampling/radius_class.hpp"
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace spt {
+namespace {
+
+// The builder partitions these records in place, so every pass reads memory in order.
+struct Item {
+    float p[3];
+    uint32_t sample;
+    int radius_class; // of the sample's own radius under the build's rule
+};
+
+struct Bounds3 {
+    float lo[3] = {INFINITY, INFINITY, INFINITY};
+    float hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    void extend(const float* p) {
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+    }
+    void extend(const Bounds3& b) {
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], b.lo[a]), hi[a] = std::max(hi[a], b.hi[a]);
+    }
+    bool empty() const { return lo[0] > hi[0]; }
+    // Half the diagonal: the radius of a sphere around the box.
+    float radius() const {
+        if (empty()) return 0;
+        const float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+        return 0.5f * std::sqrt(dx * dx + dy * dy + dz * dz);
+    }
+};
+
+struct Builder {
+    const BuildOptions& options;
+    std::vector<Item> items;
+    std::vector<TreeNode> out;
+
+    Bounds3 box_of(size_t b, size_t e) const {
+        Bounds3 box;
+        for (size_t i = b; i < e; ++i) box.extend(items[i].p);
+        return box;
+    }
+
+    // Index in [b, e) where the right part starts.
+    size_t split_median(size_t b, size_t e, const Bounds3& box) {
+        int axis = 0;
+        for (int a = 1; a < 3; ++a)
+            if (box.hi[a] - box.lo[a] > box.hi[axis] - box.lo[axis]) axis = a;
+        const size_t mid = b + (e - b) / 2;
+        std::nth_element(items.begin() + long(b), items.begin() + long(mid), items.begin() + long(e),
+                         [axis](const Item& x, const Item& y) {
+                             return x.p[axis] != y.p[axis] ? x.p[axis] < y.p[axis] : x.sample < y.sample;
+                         });
+        return mid;
+    }
+
+    size_t split_volume(size_t b, size_t e, const Bounds3& box) {
+        constexpr int kBins = 16;
+        std::array<std::array<Bounds3, kBins>, 3> bins;
+        std::array<std::array<uint32_t, kBins>, 3> counts{};
+        float scale[3];
+        for (int a = 0; a < 3; ++a) {
+            const float extent = box.hi[a] - box.lo[a];
+            scale[a] = extent > 0 ? kBins / extent : 0;
+        }
+        auto bin_of = [&](const Item& it, int a) {
+            return std::min(kBins - 1, int((it.p[a] - box.lo[a]) * scale[a]));
+        };
+        // Large nodes choose their plane from an even subsample: the cost estimate barely
+        // changes, and the top levels stop dominating the build time. The partition is exact.
+        const size_t stride = std::max<size_t>(1, (e - b) / 1024);
+        for (size_t i = b; i < e; i += stride)
+            for (int a = 0; a < 3; ++a) {
+                const int k = bin_of(items[i], a);
+                bins[a][k].extend(items[i].p);
+                ++counts[a][k];
+            }
+        // A plane costs the children's bounding-sphere volumes (r^3), each weighted by its
+        // sample count: the expected sphere tests if a query lands in a child in proportion
+        // to its volume. Unweighted volumes peel off slivers and deepen the tree.
+        float best_cost = INFINITY;
+        int best_axis = -1, best_plane = 0;
+        size_t total = 0;
+        for (uint32_t c : counts[0]) total += c;
+        for (int a = 0; a < 3; ++a) {
+            if (scale[a] == 0) continue;
+            std::array<float, kBins> left_cost{};
+            std::array<size_t, kBins> left_n{};
+            Bounds3 acc;
+            size_t n = 0;
+            for (int k = 0; k < kBins - 1; ++k) {
+                acc.extend(bins[a][k]);
+                n += counts[a][k];
+                const float r = acc.radius();
+                left_cost[k] = float(n) * r * r * r;
+                left_n[k] = n;
+            }
+            acc = Bounds3();
+            for (int k = kBins - 1; k > 0; --k) {
+                acc.extend(bins[a][k]);
+                const size_t nl = left_n[k - 1];
+                if (nl == 0 || nl == total) continue;
+                const float r = acc.radius();
+                const float cost = left_cost[k - 1] + float(total - nl) * r * r * r;
+                if (cost < best_cost) best_cost = cost, best_axis = a, best_plane = k;
+            }
+        }
+        if (best_axis < 0) return split_median(b, e, box);
+        auto mid = std::partition(items.begin() + long(b), items.begin() + long(e),
+                                  [&](const Item& it) { return bin_of(it, best_axis) < best_plane; });
+        return size_t(mid - items.begin());
+    }
+
+    void build(size_t b, size_t e, NodeId id) {
+        TreeNode node;
+        node.id = id;
+        // Active nodes must be radius-coherent. Grouping by radius class a few levels above
+        // the leaves (rather than peeling classes off full leaves) keeps the leaves full.
+        if (options.radius_coherent && node_depth(id) < kMaxNodeDepth && e - b <= 4 * size_t(options.leaf_size)) {
+            int hi = items[b].radius_class, lo = hi;
+            for (size_t i = b; i < e; ++i)
+                hi = std::max(hi, items[i].radius_class), lo = std::min(lo, items[i].radius_class);
+            if (hi != lo) {
+                const int cut = lo + (hi - lo + 1) / 2;
+                const auto mid = std::partition(items.begin() + long(b), items.begin() + long(e),
+                                                [cut](const Item& it) { return it.radius_class >= cut; });
+                node.active = false;
+                out.push_back(std::move(node));
+                build(b, size_t(mid - items.begin()), left_child(id));
+                build(size_t(mid - items.begin()), e, right_child(id));
+                return;
+            }
+        }
+        if (e - b <= options.leaf_size || node_depth(id) >= kMaxNodeDepth) {
+            node.samples.reserve(e - b);
+            for (size_t i = b; i < e; ++i) node.samples.push_back(items[i].sample);
+            std::sort(node.samples.begin(), node.samples.end());
+            out.push_back(std::move(node));
+            return;
+        }
+        const Bounds3 box = box_of(b, e);
+        // Near the leaves a few samples remain and the binned sweep costs more than it can
+        // save; the median of the longest axis is as good there.
+        const bool small = e - b <= 4 * size_t(options.leaf_size);
+        size_t mid = options.strategy == SplitStrategy::Median || small ? split_median(b, e, box)
+                                                                        : split_volume(b, e, box);
+        if (mid <= b || mid >= e) mid = split_median(b, e, box);
+        node.active = false;
+        out.push_back(std::move(node));
+        build(b, mid, left_child(id));
+        build(mid, e, right_child(id));
+    }
+};
+
+} // namespace
+
+SamplingTree build_tree(std::string name, const SampleSet& samples, const BuildOptions& options) {
+    if (samples.size() == 0) return SamplingTree(std::move(name), 0u);
+    BuildOptions fixed = options;
+    fixed.leaf_size = std::max<uint32_t>(1, options.leaf_size);
+    Builder builder{fixed, std::vector<Item>(samples.size()), {}};
+    for (uint32_t i = 0; i < samples.size(); ++i) {
+        const auto& p = samples.points[i];
+        const float own = options.radius.for_sample(samples.spacing[i], samples.max_radius.empty() ? INFINITY
+                                                                                            : samples.max_radius[i]);
+        builder.items[i] = {{p.x(), p.y(), p.z()}, i, radius_class(own)};
+    }
+    builder.out.reserve(2 * samples.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1);
+    builder.build(0, samples.size(), root_id());
+    SamplingTree tree(std::move(name), std::move(builder.out));
+    tree.assign_radii(samples, options.radius);
+    tree.compute_bounds(samples, options.bounds);
+    return tree;
+}
+
+} // namespace spt

@@ -1,0 +1,165 @@
+#include "meshgen.hpp"
+#include "spt/samples.hpp"
+#include "test_support.hpp"
+#include "mesh/shapes.hpp"
+#include "sampling/encoding.hpp"
+#include "sampling/surface_samples.hpp"
+#include <gtest/gtest.h>
+#include <random>
+
+using namespace spt;
+
+TEST(Samples, OctahedralNormalRoundTripIsWithinATenthOfAMilliradian) {
+    std::mt19937 rng(7);
+    std::normal_distribution<float> g;
+    double worst = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const Eigen::Vector3f n = Eigen::Vector3f(g(rng), g(rng), g(rng)).normalized();
+        const Eigen::Vector3d d = decode_normal(encode_normal(n)).cast<double>();
+        // The angle from the cross product: acos near 1 would measure float noise instead.
+        worst = std::max(worst, std::atan2(n.cast<double>().cross(d).norm(), n.cast<double>().dot(d)));
+    }
+    EXPECT_LT(worst, 1e-4);
+    for (const Eigen::Vector3f& axis : std::vector<Eigen::Vector3f>{Eigen::Vector3f::UnitX(), -Eigen::Vector3f::UnitZ()})
+        EXPECT_LT((decode_normal(encode_normal(axis)) - axis).norm(), 1e-6f);
+}
+
+TEST(Samples, SnappedNormalSurvivesEncodingUnchanged) {
+    SampleSet s;
+    s.add({0, 0, 0}, Eigen::Vector3f(0.3f, -0.5f, 0.8f).normalized(), 0, 1);
+    EXPECT_EQ(encode_normal(s.normals[0]), encode_normal(decode_normal(encode_normal(s.normals[0]))));
+    EXPECT_EQ(decode_normal(encode_normal(s.normals[0])), s.normals[0]);
+}
+
+TEST(Samples, SphereTouchesTheSurfaceFromInside) {
+    const Eigen::Vector3f p(1, 2, 3), n(0, 0, 1);
+    EXPECT_EQ(sphere_center(p, n, 0.5f), Eigen::Vector3f(1, 2, 2.5f));
+}
+
+TEST(Samples, LengthsStoreAsBfloat16CapsRoundedDown) {
+    for (float v : {0.0f, 1e-9f, 0.1f, 3.14159f, 1e30f}) {
+        EXPECT_LE(decode_length(encode_length(v, true)), v);
+        EXPECT_NEAR(decode_length(encode_length(v, false)), v, v * 0.004f);
+        EXPECT_NEAR(decode_length(encode_length(v, true)), v, v * 0.008f);
+    }
+    EXPECT_TRUE(std::isinf(decode_length(encode_length(INFINITY, true))));
+}
+
+TEST(RadiusLimiter, ThinPlateCapsRadiusAtHalfItsThicknessPlusAllowance) {
+    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 0.1, 8), "plate");
+    const double allowance = 0.01;
+    const RadiusLimiter limiter(m.mesh, allowance);
+    const float r = limiter.limit({0.1f, 0.2f, 0.05f}, {0, 0, 1}, 1.0f, 0);
+    EXPECT_NEAR(r, (0.1 + allowance) / 2, 0.01 * 0.055 + 1e-4);
+}
+
+TEST(RadiusLimiter, FlatInteriorKeepsTheRequestedRadius) {
+    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 8), "cube");
+    const RadiusLimiter limiter(m.mesh, 0.001);
+    EXPECT_EQ(limiter.limit({0, 0, 1}, {0, 0, 1}, 0.5f, 0), 0.5f);
+}
+
+TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
+    // A sphere tangent at a corner along the diagonal pokes out of all three faces by
+    // r (1 - 1/sqrt 3); the cap keeps that within the allowance.
+    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 1), "cube");
+    const double allowance = 0.01;
+    const RadiusLimiter limiter(m.mesh, allowance);
+    const Eigen::Vector3f corner(1, 1, 1), n = corner.normalized();
+    const float r = limiter.limit(corner, n, 1.0f, 0);
+    EXPECT_NEAR(r * (1 - 1 / std::sqrt(3.0)), allowance, allowance * 0.02);
+}
+
+TEST(RadiusLimiter, SphereThroughAThinRodIsCaughtFromOutside) {
+    // Far larger than the rod: the centre passes through and lies outside the body.
+    const ImportedMesh m = meshgen::prepare(meshgen::cylinder(0.05, 2.0, 24), "rod");
+    const RadiusLimiter limiter(m.mesh, 0.005);
+    const float r = limiter.limit({0.05f, 0, 1.0f}, {1, 0, 0}, 1.0f, 0);
+    EXPECT_LT(r, 0.06f);
+    EXPECT_GT(r, 0.04f);
+}
+
+TEST(Samples, VerticesWithoutNormalAreLeftOut) {
+    auto raw = meshgen::box(1, 1, 1, 1);
+    raw.positions.push_back({9, 9, 9});
+    const ImportedMesh m = meshgen::prepare(raw, "stray");
+    const SampleSet s = test::vertex_samples(m.mesh);
+    EXPECT_EQ(s.size(), 8u);
+    for (size_t i = 0; i < s.size(); ++i) {
+        EXPECT_FALSE(s.is_face_sample(i));
+        EXPECT_TRUE(m.mesh.normal_valid[s.source_index(i)]);
+        EXPECT_NEAR(s.spacing[i], (1.0 + 1.0 + std::sqrt(2.0)) / 3.0 * 1.0, 0.2);
+    }
+}
+
+TEST(Samples, FaceGapFormulaIsExactForAFlatFace) {
+    const double r = 0.7, eps = 0.01;
+    const double h = max_face_sample_gap(r, eps);
+    EXPECT_NEAR(std::sqrt(h * h + r * r) - r, eps, 1e-12);
+}
+
+TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
+    const ImportedMesh m = meshgen::prepare(meshgen::box(3, 1, 0.5, 1), "slab");
+    SampleSet s;
+    const RadiusLimiter limiter(m.mesh, 0.01);
+    RadiusRule fixed;
+    fixed.fixed = 0.2f;
+    const double eps = 0.02, gap = max_face_sample_gap(0.2, eps);
+    std::vector<uint32_t> tris(m.mesh.triangles.size());
+    for (uint32_t f = 0; f < tris.size(); ++f) tris[f] = f, add_face_samples(s, limiter, f, eps, fixed, 1.0f);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (uint32_t f = 0; f < tris.size(); ++f) {
+        const auto& t = m.mesh.triangles[f];
+        for (int k = 0; k < 200; ++k) {
+            double a = u(rng), b = u(rng);
+            if (a + b > 1) a = 1 - a, b = 1 - b;
+            const Eigen::Vector3d p = m.mesh.positions[t[0]] + a * (m.mesh.positions[t[1]] - m.mesh.positions[t[0]]) +
+                                      b * (m.mesh.positions[t[2]] - m.mesh.positions[t[0]]);
+            double nearest = INFINITY;
+            for (size_t i = 0; i < s.size(); ++i)
+                if (s.source_index(i) == f) nearest = std::min(nearest, (s.points[i].cast<double>() - p).norm());
+            EXPECT_LE(nearest, gap * (1 + 1e-5)) << "face " << f;
+        }
+    }
+}
+
+TEST(RadiusLimiter, OpenSheetCapsRadiusAtHalfTheAllowance) {
+    // Centred behind the sheet, a sphere pokes out of the back by its diameter.
+    const TriangleMesh sheet = make_sheet(2, 4);
+    const double allowance = 0.01;
+    const RadiusLimiter limiter(sheet, allowance);
+    EXPECT_TRUE(limiter.back_exposed({0.1, 0.2, 0}, {0, 0, 1}, 0));
+    EXPECT_NEAR(limiter.limit({0.1f, 0.2f, 0}, {0, 0, 1}, 1.0f, 0), allowance / 2, 1e-6);
+}
+
+TEST(RadiusLimiter, ClosedBoxIsNeverTestedForAnExposedBack) {
+    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 2), "cube");
+    const RadiusLimiter limiter(m.mesh, 0.001);
+    EXPECT_FALSE(limiter.back_exposed({0, 0, 1}, {0, 0, 1}, 0));
+}
+
+TEST(RadiusLimiter, OpenBoxBottomSeenThroughTheOpeningIsExposedButAClosedPartBesideItIsNot) {
+    // A box without its top face, and a closed cube elsewhere in the same mesh: only the
+    // open part is treated as a sheet.
+    auto raw = meshgen::box(2, 2, 2, 1);
+    auto cube = meshgen::box(1, 1, 1, 1);
+    std::vector<Eigen::Vector3d> p = raw.positions;
+    std::vector<spt::Triangle> t;
+    for (const auto& tri : raw.triangles) {
+        bool top = true;
+        for (uint32_t v : tri) top = top && raw.positions[v].z() > 0.99;
+        if (!top) t.push_back(tri);
+    }
+    const uint32_t base = uint32_t(p.size());
+    for (const auto& q : cube.positions) p.push_back(q + Eigen::Vector3d(5, 0, 0));
+    for (auto tri : cube.triangles) t.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+    const ImportedMesh m = spt::prepare_mesh("cup and cube", std::move(p), std::move(t));
+    const RadiusLimiter limiter(m.mesh, 0.01);
+    // Find a vertex of each part (the import may reorder vertices).
+    uint32_t cup_vertex = 0, cube_vertex = 0;
+    for (uint32_t v = 0; v < m.mesh.positions.size(); ++v)
+        (m.mesh.positions[v].x() > 3 ? cube_vertex : cup_vertex) = v;
+    EXPECT_TRUE(limiter.back_exposed({0.2, 0.1, -1}, {0, 0, -1}, cup_vertex));
+    EXPECT_FALSE(limiter.back_exposed({5.1, 0.1, -0.5}, {0, 0, -1}, cube_vertex));
+}

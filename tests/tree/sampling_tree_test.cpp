@@ -1,0 +1,144 @@
+#include "meshgen.hpp"
+#include "spt/compact_tree.hpp"
+#include "spt/sampling_tree.hpp"
+#include "spt/tree_builder.hpp"
+#include "tree/bounds.hpp"
+#include "test_support.hpp"
+#include <gtest/gtest.h>
+
+using namespace spt;
+
+namespace {
+
+SampleSet line_samples(uint32_t n) {
+    SampleSet s;
+    for (uint32_t i = 0; i < n; ++i) s.add({float(i), 0, 0}, {0, 0, 1}, i, 1.0f);
+    return s;
+}
+
+} // namespace
+
+TEST(Split, LeftIsNodeAndSelectionRightIsTheRest) {
+    const SampleSet s = line_samples(10);
+    SamplingTree t("t", 10);
+    ASSERT_TRUE(t.split(1, {2, 3, 4, 42}, s));
+    EXPECT_FALSE(t.find(1)->active);
+    EXPECT_TRUE(t.find(1)->samples.empty());
+    EXPECT_EQ(t.find(2)->samples, (std::vector<uint32_t>{2, 3, 4}));
+    EXPECT_EQ(t.find(3)->samples, (std::vector<uint32_t>{0, 1, 5, 6, 7, 8, 9}));
+    EXPECT_TRUE(t.find(2)->active && t.find(3)->active);
+    EXPECT_EQ(t.validate(10), "");
+}
+
+TEST(Split, EmptySelectionIsRejectedWithReason) {
+    const SampleSet s = line_samples(4);
+    SamplingTree t("t", 4);
+    const EditResult r = t.split(1, {}, s);
+    EXPECT_FALSE(r);
+    EXPECT_NE(r.reason.find("none"), std::string::npos);
+    EXPECT_EQ(t.node_count(), 1u);
+}
+
+TEST(Split, FullSelectionIsRejectedWithReason) {
+    const SampleSet s = line_samples(4);
+    SamplingTree t("t", 4);
+    const EditResult r = t.split(1, {0, 1, 2, 3}, s);
+    EXPECT_FALSE(r);
+    EXPECT_NE(r.reason.find("all"), std::string::npos);
+}
+
+TEST(Split, InactiveOrMissingNodeIsRejected) {
+    const SampleSet s = line_samples(4);
+    SamplingTree t("t", 4);
+    ASSERT_TRUE(t.split(1, {0}, s));
+    EXPECT_FALSE(t.split(1, {1}, s));
+    EXPECT_FALSE(t.split(99, {1}, s));
+}
+
+TEST(Merge, UndoesSplitExactly) {
+    const SampleSet s = line_samples(16);
+    SamplingTree t("t", 16);
+    t.assign_radii(s, {});
+    t.compute_bounds(s, BoundsMethod::Tight);
+    const TreeNode before = *t.find(1);
+    ASSERT_TRUE(t.split(1, {1, 5, 9}, s));
+    ASSERT_TRUE(t.split(3, {0, 2}, s));
+    ASSERT_TRUE(t.merge(1, s));
+    EXPECT_EQ(t.node_count(), 1u);
+    const TreeNode& after = *t.find(1);
+    EXPECT_EQ(after.samples, before.samples);
+    EXPECT_EQ(after.center, before.center);
+    EXPECT_EQ(after.bv_radius, before.bv_radius);
+    EXPECT_EQ(after.ss_radius, before.ss_radius);
+    EXPECT_FALSE(t.merge(1, s)); // active: nothing to merge
+}
+
+TEST(Split, EveryBoundingSphereStillHoldsItsSpheresAfterEdits) {
+    const ImportedMesh m = meshgen::prepare(meshgen::torus(1, 0.3, 32, 16), "torus");
+    const SampleSet s = test::vertex_samples(m.mesh);
+    SamplingTree t("t", uint32_t(s.size()));
+    t.assign_radii(s, {});
+    t.compute_bounds(s, BoundsMethod::Tight);
+    std::vector<uint32_t> right_half, top;
+    for (uint32_t i = 0; i < s.size(); ++i) {
+        if (s.points[i].x() > 0.5f) right_half.push_back(i);
+        if (s.points[i].z() > 0.1f) top.push_back(i);
+    }
+    ASSERT_TRUE(t.split(1, right_half, s));
+    ASSERT_TRUE(t.split(3, top, s));
+    ASSERT_TRUE(t.split(2, top, s));
+    ASSERT_TRUE(t.merge(3, s));
+    for (const TreeNode* leaf : t.active_nodes())
+        for (uint32_t i : leaf->samples) {
+            const Eigen::Vector3d c = sphere_center(s.points[i], s.normals[i], leaf->ss_radius).cast<double>();
+            for (NodeId id = leaf->id; id != 0; id = parent_of(id)) {
+                const TreeNode& n = *t.find(id);
+                EXPECT_LE((c - n.center.cast<double>()).norm() + leaf->ss_radius, double(n.bv_radius))
+                    << "node " << id << " sample " << i;
+            }
+        }
+}
+
+TEST(OneSidedTree, DepthFortyStaysLinearInMemory) {
+    // Peeling one sample off at every level: paper ids reach 2^40, the layout must not.
+    const uint32_t n = 41;
+    const SampleSet s = line_samples(n);
+    SamplingTree t("deep", n);
+    NodeId node = 1;
+    for (uint32_t i = 0; i < 40; ++i) {
+        ASSERT_TRUE(t.split(node, {i}, s)) << i;
+        node = right_child(node);
+    }
+    EXPECT_EQ(t.depth(), 40);
+    EXPECT_EQ(t.node_count(), 81u);
+    EXPECT_EQ(t.validate(n), "");
+    const CompactTree c(t, s);
+    EXPECT_EQ(c.nodes().size(), 81u);
+    EXPECT_EQ(c.sphere_count(), n);
+    EXPECT_LT(c.memory_bytes(), 81 * sizeof(CompactNode) + 64 * 20);
+}
+
+TEST(Validate, FindsBrokenStructure) {
+    std::vector<TreeNode> nodes(3);
+    nodes[0].id = 1, nodes[0].active = false, nodes[0].ss_radius = 1;
+    nodes[1].id = 2, nodes[1].samples = {0}, nodes[1].ss_radius = 1;
+    nodes[2].id = 3, nodes[2].samples = {0, 1}, nodes[2].ss_radius = 1; // sample 0 twice
+    EXPECT_NE(SamplingTree("t", nodes).validate(2).find("two active nodes"), std::string::npos);
+    nodes[2].samples = {1};
+    EXPECT_EQ(SamplingTree("t", nodes).validate(2), "");
+    EXPECT_NE(SamplingTree("t", nodes).validate(3).find("no active node"), std::string::npos);
+    nodes[2].ss_radius = 0;
+    EXPECT_NE(SamplingTree("t", nodes).validate(2).find("radius"), std::string::npos);
+    nodes[2].ss_radius = 1;
+    nodes[1].center.x() = std::numeric_limits<float>::infinity();
+    EXPECT_NE(SamplingTree("t", nodes).validate(2).find("finite"), std::string::npos);
+}
+
+TEST(Radius, DefaultIsMedianSpacingTimesScaleAndFixedOverrides) {
+    SampleSet s;
+    for (int i = 0; i < 5; ++i) s.add({float(i), 0, 0}, {0, 0, 1}, uint32_t(i), float(i + 1)); // spacing 1..5
+    std::vector<uint32_t> all{0, 1, 2, 3, 4};
+    EXPECT_FLOAT_EQ(node_radius(all, s, {}), 3.0f);
+    EXPECT_FLOAT_EQ(node_radius(all, s, {0, 2.0f}), 6.0f);
+    EXPECT_FLOAT_EQ(node_radius(all, s, {0.25f, 1.0f}), 0.25f);
+}
