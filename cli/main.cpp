@@ -2,13 +2,14 @@
 // Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write (docs/cli.md).
 #include "commands.hpp"
 #include "spt/error.hpp"
+#include "spt/version.hpp"
 #include <iostream>
 #include <map>
 
 int main(int argc, char** argv) {
     CLI::App app{"spt: collision detection with sampling trees"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "spt 0.1.0");
+    app.set_version_flag("--version", "spt " SPT_VERSION_STRING);
     std::map<CLI::App*, spt::cli::Action> actions;
     auto add = [&](spt::cli::Action (*make)(CLI::App&)) {
         const size_t before = app.get_subcommands({}).size();

@@ -9,8 +9,8 @@ namespace spt {
 /// Options of a continuous query.
 struct CcdOptions {
     QueryLevel level = QueryLevel::Spheres; ///< Bounds or Spheres
-    bool normal_culling = false;
-    float cull_cos = 0.5f;
+    bool normal_culling = false;           ///< skip spheres facing away (QueryOptions::normal_culling)
+    float cull_cos = 0.5f;                 ///< culling threshold (QueryOptions::cull_cos)
     double tolerance = 0; ///< model units; 0: 1e-4 of B's diagonal
 };
 
@@ -19,7 +19,7 @@ struct CcdResult {
     bool hit = false;  ///< the model may touch during the motion
     double toi = 1;    ///< time of impact in [0, 1]; never later than the true first contact
     int queries = 0;   ///< static queries run
-    QueryCounters counters;
+    QueryCounters counters; ///< work of every static query together
 };
 
 /// B moves from b0 to b1 (poses in A's frame; translation linear, rotation slerp).

@@ -16,6 +16,7 @@ struct ExactData; // the exact level's triangles and triangle tree (private layo
 /// One object ready for queries.
 class CollisionModel {
 public:
+    /// An empty model: collides with nothing.
     CollisionModel() = default;
     /// Model of tree `tree_name` (first tree if empty) of `doc`; no `exact` level.
     explicit CollisionModel(const SptDocument& doc, const std::string& tree_name = "");

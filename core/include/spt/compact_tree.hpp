@@ -27,6 +27,7 @@ static_assert(sizeof(CompactNode) == 32, "CompactNode must stay 32 bytes");
 /// Contiguous, SIMD-friendly copy of a tree for queries; immutable once built.
 class CompactTree {
 public:
+    /// An empty layout (no nodes).
     CompactTree() = default;
     /// Lays out `tree` over `samples`; sphere centres are p - r*n with the node's radius.
     CompactTree(const SamplingTree& tree, const SampleSet& samples);
@@ -41,9 +42,11 @@ public:
         const float* c = centres(n) + (k - n.first);
         return {c[0], c[n.count], c[2 * n.count]};
     }
-    /// Sample normals as snorm8 columns (value/127).
+    /// x of each sphere's sample normal as snorm8 (value/127), sphere order.
     const int8_t* nx() const { return nx_.data(); }
+    /// y of each sphere's sample normal as snorm8 (value/127), sphere order.
     const int8_t* ny() const { return ny_.data(); }
+    /// z of each sphere's sample normal as snorm8 (value/127), sphere order.
     const int8_t* nz() const { return nz_.data(); }
     /// Sample index (into the SampleSet) of each sphere.
     const uint32_t* sample_index() const { return sample_index_.data(); }

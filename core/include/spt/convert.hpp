@@ -16,7 +16,7 @@ struct ConvertOptions {
     /// How far a sampling sphere may poke out of the mesh, model units. Default: a quarter
     /// of the tolerance if set, else kDefaultProtrusion x the mesh diagonal.
     std::optional<double> protrusion;
-    std::string tree_name = "default";
+    std::string tree_name = "default"; ///< name of the tree in the document
     /// Without a tolerance: if vertex samples alone would leave the surface uncovered deeper
     /// than kAutoTolerance x the diagonal, sample the faces to that tolerance.
     bool auto_tolerance = true;
@@ -31,12 +31,12 @@ constexpr double kAutoTolerance = 0.005;
 
 /// What make_document did beyond the document itself.
 struct ConvertStats {
-    size_t vertex_samples = 0;
-    size_t face_samples = 0;
+    size_t vertex_samples = 0;       ///< samples at mesh vertices
+    size_t face_samples = 0;         ///< samples added on faces (tolerance-driven)
     double worst_predicted_gap = 0;  ///< largest uncovered depth the final radii allow on a face, model units
     double automatic_tolerance = 0;  ///< > 0: the tolerance applied because vertices left holes
-    double sample_seconds = 0;
-    double build_seconds = 0;
+    double sample_seconds = 0;       ///< wall time of sampling and radius limiting, seconds
+    double build_seconds = 0;        ///< wall time of building the tree, seconds
 };
 
 /// Samples `mesh` and builds one tree over the samples.

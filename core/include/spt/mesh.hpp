@@ -11,6 +11,7 @@
 
 namespace spt {
 
+/// A triangle as three vertex indices, counter-clockwise seen from outside.
 using Triangle = std::array<uint32_t, 3>;
 
 /// An indexed triangle mesh in its own (object) frame.
@@ -53,8 +54,8 @@ struct ImportReport {
 
 /// A mesh and the report of how it was read.
 struct ImportedMesh {
-    TriangleMesh mesh;
-    ImportReport report;
+    TriangleMesh mesh;   ///< the prepared mesh
+    ImportReport report; ///< what import found and fixed
 };
 
 /// Options for import_mesh.

@@ -5,6 +5,7 @@
 
 namespace spt {
 
+/// A node's paper id: 1 for the root, 2i and 2i+1 for the children of i.
 using NodeId = uint64_t;
 
 /// Deepest level a node id can name (ids stay within 64 bits).

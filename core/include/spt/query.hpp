@@ -30,8 +30,8 @@ enum class QueryMode {
 
 /// Options of one query.
 struct QueryOptions {
-    QueryLevel level = QueryLevel::Spheres;
-    QueryMode mode = QueryMode::Any;
+    QueryLevel level = QueryLevel::Spheres; ///< what decides a collision
+    QueryMode mode = QueryMode::Any;        ///< what is reported
     /// Skip sampling spheres whose normal faces away from the other node (see docs/queries.md):
     /// a sphere with unit normal n is skipped when n . u < -cull_cos, u the unit direction from
     /// its node's bounding-sphere centre to the other node's.
@@ -59,9 +59,9 @@ struct Contact {
 
 /// Result of a query; the pairs of mode `all` are in the scratch.
 struct QueryResult {
-    bool collide = false;
+    bool collide = false;   ///< the models collide at the query's level
     Contact deepest;        ///< valid when collide and mode is Deepest (Any: the pair found)
-    QueryCounters counters;
+    QueryCounters counters; ///< work done
 };
 
 /// Collision query of A at pose_a against B at pose_b (world poses, model units).

@@ -14,7 +14,7 @@ namespace spt {
 
 /// One node, with the fields of the paper's CNode.
 struct TreeNode {
-    NodeId id = root_id();
+    NodeId id = root_id(); ///< paper id (node_id.hpp)
     Eigen::Vector3f center = Eigen::Vector3f::Zero(); ///< bounding-sphere centre
     float bv_radius = 0;   ///< bounding-sphere radius
     float ss_radius = 0;   ///< sampling-sphere radius (for an inner node: the largest below it)
@@ -30,8 +30,9 @@ enum class BoundsMethod {
 
 /// Why a split or merge was refused.
 struct EditResult {
-    bool ok = true;
+    bool ok = true;     ///< the edit was made
     std::string reason; ///< empty when ok
+    /// True when the edit was made.
     explicit operator bool() const { return ok; }
 };
 

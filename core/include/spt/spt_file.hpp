@@ -12,16 +12,16 @@ namespace spt {
 struct MeshInfo {
     std::string name;          ///< source file name
     uint32_t vertex_count = 0; ///< welded vertex count
-    uint32_t triangle_count = 0;
+    uint32_t triangle_count = 0; ///< triangle count
     uint64_t hash = 0;         ///< TriangleMesh::content_hash()
     double diagonal = 0;       ///< bounding-box diagonal, model units
 };
 
 /// Everything a .spt file holds.
 struct SptDocument {
-    MeshInfo mesh;
-    SampleSet samples;
-    std::vector<SamplingTree> trees;
+    MeshInfo mesh;                   ///< the mesh the samples were taken from
+    SampleSet samples;               ///< every sample, object frame
+    std::vector<SamplingTree> trees; ///< named trees over the samples, names unique
 
     /// Tree by name, or nullptr.
     const SamplingTree* tree(const std::string& name) const;

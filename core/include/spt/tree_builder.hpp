@@ -13,9 +13,9 @@ enum class SplitStrategy {
 /// Options for build_tree.
 struct BuildOptions {
     uint32_t leaf_size = 8;               ///< split until an active node holds at most this many samples
-    SplitStrategy strategy = SplitStrategy::Volume;
+    SplitStrategy strategy = SplitStrategy::Volume; ///< how a node is split
     RadiusRule radius;                    ///< sampling-sphere radius rule
-    BoundsMethod bounds = BoundsMethod::Tight;
+    BoundsMethod bounds = BoundsMethod::Tight;    ///< how bounding spheres are made
     /// Keep each active node's samples within one radius class (kRadiusClassRatio), so the
     /// node radius is at least 1/ratio of every member's own: what tolerance sampling assumes.
     bool radius_coherent = false;
