@@ -1,8 +1,10 @@
 // accuracy_bench: what accuracy costs in time. Every accuracy option of the
 // sampling-tree query against FCL, Bullet and brute force, on the same poses,
-// in one process; writes docs/accuracy-vs-time.md and one PNG plot per mesh.
+// in one process; writes docs/accuracy-vs-time.md and, per mesh, a PNG plot and the CSV of its points
+// (`--replot` redraws the PNGs from those CSVs without measuring).
 #include "peers.hpp"
 #include "plot.hpp"
+#include "plot_files.hpp"
 #include "protocol.hpp"
 #include "spt/convert.hpp"
 #include "spt/query.hpp"
@@ -10,9 +12,12 @@
 #include "mesh/shapes.hpp"
 #include "geometry/sphere_block.hpp"
 #include "query/brute_force.hpp"
+#include "spt/plot/headless_gui.hpp"
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -112,6 +117,7 @@ struct MeshResult {
     Row* fcl = nullptr;
     bench::PoseSets sets;
     double truth_seconds = 0;
+    bool plot_written = true;
 };
 
 MeshResult run_mesh(const std::string& name, const TriangleMesh& raw, int orientations, int directions, unsigned seed,
@@ -207,10 +213,9 @@ MeshResult run_mesh(const std::string& name, const TriangleMesh& raw, int orient
         out.rows.push_back(bf);
     }
     for (auto& r : rows) out.rows.push_back(std::move(r));
-    std::vector<bench::PlotPoint> pts;
-    for (const auto& r : out.rows) pts.push_back({std::max(1.0, r.t_med), r.agree_near, r.kind});
-    if (!bench::draw_plot(png_path, name + ": AGREEMENT NEAR CONTACT VS MEDIAN TIME ON RANDOM POSES", pts))
-        std::cerr << "cannot write " << png_path << "\n";
+    bench::PlotData plot{name, {}};
+    for (const auto& r : out.rows) plot.points.push_back({r.name, r.t_med, r.agree_near, r.kind});
+    out.plot_written = bench::write_plot_files(png_path, plot);
     return out;
 }
 
@@ -281,32 +286,56 @@ int main(int argc, char** argv) {
     std::string out = "docs/accuracy-vs-time.md", only;
     int orientations = 500, directions = 150;
     unsigned seed = 1;
-    bool quick = false;
+    bool quick = false, replot_only = false;
+    const char* usage =
+        "usage: accuracy_bench [--out FILE.md] [--orientations N] [--directions N] [--seed S] "
+        "[--mesh torus|bracket|wuson|engine] [--quick] [--replot]\n"
+        "  --quick: tight bounds and leaf 8 only (the configurations the targets read), no brute force\n"
+        "  --replot: measure nothing; redraw each PNG next to FILE.md (FILE-<mesh>.png) from the CSV beside it\n"
+        "exit codes: 0 ok, 1 usage, 2 bad input (a plot CSV), 3 cannot write\n";
+    auto whole = [&](const std::string& flag, const std::string& v, long long lo, long long hi) {
+        char* end = nullptr;
+        errno = 0;
+        const long long n = std::strtoll(v.c_str(), &end, 10);
+        if (v.empty() || *end != '\0' || errno != 0 || n < lo || n > hi) {
+            std::cerr << flag << " needs a whole number from " << lo << " to " << hi << ", not '" << v << "'\n" << usage;
+            std::exit(1);
+        }
+        return n;
+    };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() -> std::string {
             if (i + 1 >= argc) {
-                std::cerr << a << " needs a value\n";
+                std::cerr << a << " needs a value\n" << usage;
                 std::exit(1);
             }
             return argv[++i];
         };
         if (a == "--out") out = next();
-        else if (a == "--orientations") orientations = std::stoi(next());
-        else if (a == "--directions") directions = std::stoi(next());
-        else if (a == "--seed") seed = unsigned(std::stoul(next()));
+        else if (a == "--orientations") orientations = int(whole(a, next(), 1, 1000000));
+        else if (a == "--directions") directions = int(whole(a, next(), 1, 1000000));
+        else if (a == "--seed") seed = unsigned(whole(a, next(), 0, 4294967295LL));
         else if (a == "--mesh") only = next();
         else if (a == "--quick") quick = true;
+        else if (a == "--replot") replot_only = true;
         else {
-            std::cerr << "usage: accuracy_bench [--out FILE.md] [--orientations N] [--directions N] [--seed S] [--mesh torus|bracket|wuson|engine] [--quick]\n"
-                         "  --quick: tight bounds and leaf 8 only (the configurations the targets read), no brute force\n";
+            std::cerr << usage;
             return 1;
         }
     }
     namespace fs = std::filesystem;
     const fs::path out_path(out);
     const fs::path dir = out_path.parent_path().empty() ? fs::path(".") : out_path.parent_path();
-    fs::create_directories(dir);
+    // The plots draw text, which needs a QGuiApplication even with no window (see headless_gui.hpp).
+    const spt::plot::HeadlessGui gui;
+    if (replot_only) return bench::replot(dir, out_path.stem().string(), only);
+    std::error_code mkdir_error;
+    fs::create_directories(dir, mkdir_error);
+    if (mkdir_error) {
+        std::cerr << "error: cannot create " << dir.string() << ": " << mkdir_error.message() << "\n";
+        return 3;
+    }
     std::vector<std::pair<std::string, TriangleMesh>> meshes;
     if (only.empty() || only == "torus") meshes.emplace_back("torus", make_torus(1.0, 0.35, 160, 72));
     if (only.empty() || only == "bracket") meshes.emplace_back("bracket", make_bracket());
@@ -348,7 +377,10 @@ int main(int argc, char** argv) {
           "near-contact poses where both collide; *paper-rule* is the paper's \"move back by the deepest depth\". "
           "Memory: the query layout (`CompactTree`) for `bounds`/`spheres`, plus triangle data for `exact`. "
           "Brute force tests every sphere pair of the default model on a subset of poses (its answers equal the "
-          "`spheres, tight, vertices, leaf 8` row by construction; absent from `--quick` runs).\n\n";
+          "`spheres, tight, vertices, leaf 8` row by construction; absent from `--quick` runs).\n\n"
+       << "**Plots.** Each mesh's PNG plots *agree near* against the median time on the random poses (log scale), "
+          "with the Pareto front (configurations more accurate than every faster one); the points are in the CSV beside "
+          "the PNG, and `accuracy_bench --replot` (target `replot`) redraws the PNGs from those CSVs without measuring.\n\n";
     for (const auto& m : results) {
         md << "## " << m.name << " (" << m.triangles << " triangles, diagonal " << fmt(m.diag, 3) << ")\n\n";
         md << "Poses: " << m.sets.random.size() << " random, " << m.sets.near.size() << " near contact.\n\n";
@@ -359,10 +391,13 @@ int main(int argc, char** argv) {
     }
     std::ofstream f(out_path);
     f << md.str();
+    f.close();
     if (!f) {
-        std::cerr << "cannot write " << out << "\n";
+        std::cerr << "error: cannot write " << out << "\n";
         return 3;
     }
     std::cerr << "wrote " << out << "\n";
+    for (const auto& m : results)
+        if (!m.plot_written) return 3; // the tables are written; the plot that failed said why
     return 0;
 }
