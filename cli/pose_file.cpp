@@ -1,3 +1,4 @@
+// Pose files of `spt query`: one pose a line, tx ty tz qw qx qy qz [dx dy dz].
 #include "pose_file.hpp"
 #include "spt/error.hpp"
 #include <cmath>

@@ -1,3 +1,4 @@
+// Worker processes for `spt convert`: one file each, so a crashing reader fails that file alone.
 #include "process_pool.hpp"
 #include <cerrno>
 #include <chrono>

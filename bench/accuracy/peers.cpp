@@ -1,3 +1,4 @@
+// The measured peers: FCL (OBBRSS) and Bullet (GImpact) on the same meshes and poses.
 #include "peers.hpp"
 #include <btBulletCollisionCommon.h>
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>

@@ -1,3 +1,4 @@
+// The benchmark protocol: random and near-contact poses, motions, timing by median.
 #include "protocol.hpp"
 #include <random>
 

@@ -1,3 +1,4 @@
+// Exact orientation predicates: filter against exact arithmetic, hard near-degenerate inputs.
 #include "geometry/predicates.hpp"
 #include <gtest/gtest.h>
 #include <random>

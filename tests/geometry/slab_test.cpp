@@ -1,3 +1,4 @@
+// Slab bounds hold every point after float rounding, near and far from the origin.
 #include "geometry/slab.hpp"
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Triangle-triangle intersection: touching, coplanar, degenerate and random cases against a reference.
 #include "geometry/tri_tri.hpp"
 #include <gtest/gtest.h>
 #include <array>

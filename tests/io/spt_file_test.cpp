@@ -1,3 +1,4 @@
+// The .spt codec: round trips, atomic saves, and every kind of corrupt file refused with an offset.
 #include "meshgen.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"

@@ -1,3 +1,4 @@
+// Mesh import and preparation: welding, formats, transforms, orientation fixes, reports.
 #include "meshgen.hpp"
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"

@@ -1,3 +1,4 @@
+// Continuous detection: no contact skipped, time of impact never late.
 #include "query_fixtures.hpp"
 #include "spt/ccd.hpp"
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tree queries at every level and mode against the brute-force reference.
 #include "query_fixtures.hpp"
 #include "query/brute_force.hpp"
 #include "spt/error.hpp"

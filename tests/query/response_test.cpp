@@ -1,3 +1,4 @@
+// Backtrack: exact for the sphere model, the paper's rule, the exact level by bisection.
 #include "query_fixtures.hpp"
 #include "spt/response.hpp"
 #include <gtest/gtest.h>

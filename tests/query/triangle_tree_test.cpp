@@ -1,3 +1,4 @@
+// The exact level's triangle tree: every triangle once, bounds hold, degenerate faces left out.
 #include "query_fixtures.hpp"
 #include "geometry/tri_tri.hpp"
 #include "query/exact_data.hpp"

@@ -1,3 +1,4 @@
+// Samples: stored encodings, radius limits on thin parts, corners and open sheets, face coverage.
 #include "meshgen.hpp"
 #include "spt/samples.hpp"
 #include "test_support.hpp"

@@ -1,3 +1,4 @@
+// The query layout: child order, sphere blocks, bytes per sample.
 #include "meshgen.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/tree_builder.hpp"

@@ -1,3 +1,4 @@
+// The query layout stays within its memory budget at the default leaf size.
 #include "query/query_fixtures.hpp"
 #include "spt/compact_tree.hpp"
 #include <gtest/gtest.h>

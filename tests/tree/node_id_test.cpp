@@ -1,3 +1,4 @@
+// The paper's node ids: children and parent by shifting, depth by bit length.
 #include "spt/node_id.hpp"
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// Split and merge as the paper defines them, bounds after edits, validation.
 #include "meshgen.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/sampling_tree.hpp"

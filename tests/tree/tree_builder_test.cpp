@@ -1,3 +1,4 @@
+// The automatic builder: leaf sizes, determinism, tight bounds.
 #include "meshgen.hpp"
 #include "spt/mesh.hpp"
 #include "spt/tree_builder.hpp"

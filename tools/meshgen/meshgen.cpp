@@ -1,3 +1,4 @@
+// Procedural meshes for the bundled resources, tests and benchmarks.
 #include "meshgen.hpp"
 #include "spt/error.hpp"
 #include "mesh/shapes.hpp"

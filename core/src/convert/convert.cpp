@@ -1,3 +1,4 @@
+// Mesh to document: vertex samples, tolerance-driven face samples, one built tree.
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include "sampling/radius_class.hpp"

@@ -1,3 +1,4 @@
+// Thinnest slab of a point set (least-spread principal axis), rounded outwards to float.
 #include "geometry/slab.hpp"
 #include "base/float_round.hpp"
 #include <Eigen/Eigenvalues>

@@ -1,3 +1,4 @@
+// Box tree over triangles: nearest-surface and segment queries for radius limiting.
 #include "geometry/triangle_bvh.hpp"
 #include <algorithm>
 

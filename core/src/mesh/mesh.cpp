@@ -1,3 +1,4 @@
+// TriangleMesh bounds, diagonal and content hash.
 #include "spt/mesh.hpp"
 #include "base/hash.hpp"
 

@@ -1,3 +1,4 @@
+// Meshes made in code: torus, box, sheet, bracket; scaling into the unit cube.
 #include "mesh/shapes.hpp"
 #include <cmath>
 

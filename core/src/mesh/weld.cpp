@@ -1,3 +1,4 @@
+// Welds vertices closer than a tolerance through a hash grid.
 #include "mesh/weld.hpp"
 #include <cmath>
 #include <utility>

@@ -1,3 +1,4 @@
+// CollisionModel: the query layout, the reach that bounds motion, the exact level's triangles.
 #include "spt/collision_model.hpp"
 #include "spt/error.hpp"
 #include "base/float_round.hpp"

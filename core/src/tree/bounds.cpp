@@ -1,3 +1,4 @@
+// Bounding spheres of runs of sampling spheres: tight (contain every sphere) or the paper's.
 #include "tree/bounds.hpp"
 #include "base/float_round.hpp"
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Lays a SamplingTree out depth-first with per-leaf sphere blocks for queries.
 #include "spt/compact_tree.hpp"
 #include <algorithm>
 #include <cmath>

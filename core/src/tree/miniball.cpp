@@ -1,3 +1,4 @@
+// Smallest enclosing ball of points (Welzl) and of two balls.
 #include "tree/miniball.hpp"
 #include <Eigen/Dense>
 #include <cmath>

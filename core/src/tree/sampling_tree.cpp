@@ -1,3 +1,4 @@
+// SamplingTree: the paper's split and merge, radii, bounds and validation.
 #include "spt/sampling_tree.hpp"
 #include "tree/bounds.hpp"
 #include <algorithm>

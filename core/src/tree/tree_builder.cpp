@@ -1,3 +1,4 @@
+// Automatic sampling-tree construction: median or binned volume splits down to a leaf size.
 #include "spt/tree_builder.hpp"
 #include "sampling/radius_class.hpp"
 #include <Eigen/Geometry>
