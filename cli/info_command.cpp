@@ -22,13 +22,15 @@ nlohmann::json describe(const SptDocument& doc, const std::string& path) {
     json j;
     j["file"] = path;
     j["bytes"] = std::filesystem::file_size(path);
-    j["format_version"] = kSptVersion;
+    j["format_version"] = spt_version_for(doc);
     j["valid"] = true;
     j["mesh"] = {{"name", doc.mesh.name},
                  {"vertices", doc.mesh.vertex_count},
                  {"triangles", doc.mesh.triangle_count},
                  {"hash", doc.mesh.hash},
                  {"diagonal", doc.mesh.diagonal}};
+    const Eigen::Vector3d& o = doc.samples.origin;
+    j["local_origin"] = {o.x(), o.y(), o.z()};
     j["samples"] = {{"total", doc.samples.size()}, {"vertex", doc.samples.size() - face}, {"face", face}};
     j["trees"] = json::array();
     for (const auto& t : doc.trees) {
@@ -62,9 +64,9 @@ int run_info(const InfoArgs& a) {
         std::cout << j.dump(2) << "\n";
         return 0;
     }
-    std::cout << a.path << ": valid .spt version " << kSptVersion << ", " << j["bytes"] << " bytes\n"
+    std::cout << a.path << ": valid .spt version " << j["format_version"] << ", " << j["bytes"] << " bytes\n"
               << "mesh: " << doc.mesh.name << ", " << doc.mesh.vertex_count << " vertices, " << doc.mesh.triangle_count
-              << " triangles, diagonal " << doc.mesh.diagonal << "\n"
+              << " triangles, diagonal " << doc.mesh.diagonal << ", local origin " << j["local_origin"].dump() << "\n"
               << "samples: " << j["samples"]["total"] << " (" << j["samples"]["vertex"] << " vertex, "
               << j["samples"]["face"] << " face)\n";
     for (const auto& t : j["trees"])

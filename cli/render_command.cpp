@@ -186,10 +186,10 @@ int run_render(const RenderArgs& a) {
         }
     }
     if (tree && overlays.count("bounds"))
-        for (const WireSphere& w : bounding_spheres(*tree, a.node, a.bounds_depth, highlight_color()))
+        for (const WireSphere& w : bounding_spheres(*tree, doc->samples.origin, a.node, a.bounds_depth, highlight_color()))
             frame.wire_spheres.push_back(w);
     if (tree && show_node && !overlays.count("bounds"))
-        frame.wire_spheres.push_back(bounding_spheres(*tree, a.node, 0, highlight_color()).front());
+        frame.wire_spheres.push_back(bounding_spheres(*tree, doc->samples.origin, a.node, 0, highlight_color()).front());
 
     timer.step("upload");
     Bounds bounds = renderer->bounds(frame);

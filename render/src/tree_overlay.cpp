@@ -66,12 +66,13 @@ Color highlight_color() { return {1.0f, 0.78f, 0.05f, 1}; }
 std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by) {
     const auto nodes = tree.nodes();
     std::vector<SphereInstance> out(compact.sphere_count());
+    const Eigen::Vector3f origin = compact.origin().cast<float>();
     for (const CompactNode& c : compact.nodes()) {
         if (!c.is_active()) continue;
         const NodeId id = c.tree_node < nodes.size() ? nodes[c.tree_node]->id : root_id();
         const Color color = by == ColorBy::Level ? level_color(node_depth(id)) : node_color(id);
         for (uint32_t k = c.first; k < c.first + c.count; ++k) {
-            out[k].sphere.center = compact.sphere_centre(c, k);
+            out[k].sphere.center = origin + compact.sphere_centre(c, k);
             out[k].sphere.radius = c.ss_radius;
             out[k].color = color;
         }
@@ -92,8 +93,9 @@ SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, N
     return {};
 }
 
-std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, NodeId id, int levels, const Color& color,
-                                         const Eigen::Affine3f& pose) {
+std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, const Eigen::Vector3d& origin, NodeId id, int levels,
+                                         const Color& color, const Eigen::Affine3f& pose) {
+    const Eigen::Vector3f o = origin.cast<float>();
     std::vector<WireSphere> out;
     const TreeNode* top = tree.find(id);
     if (!top) return out;
@@ -106,7 +108,7 @@ std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, NodeId id, in
         if (!node) continue;
         const int below = node_depth(n) - top_depth;
         WireSphere w;
-        w.sphere.center = pose * node->center;
+        w.sphere.center = pose * (o + node->center);
         w.sphere.radius = node->bv_radius;
         w.color = n == id ? color : level_color(node_depth(n));
         out.push_back(w);

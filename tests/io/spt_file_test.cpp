@@ -3,6 +3,7 @@
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include "test_support.hpp"
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,7 +27,7 @@ SptDocument small_document(std::optional<double> tolerance = {}) {
     SamplingTree hand("feet-first", uint32_t(doc.samples.size()));
     std::vector<uint32_t> low;
     for (uint32_t i = 0; i < doc.samples.size(); ++i)
-        if (doc.samples.points[i].z() < 0) low.push_back(i);
+        if (doc.samples.position(i).z() < 0) low.push_back(i);
     hand.assign_radii(doc.samples, {});
     hand.compute_bounds(doc.samples, BoundsMethod::Tight);
     EXPECT_TRUE(hand.split(1, low, doc.samples));
@@ -189,6 +190,57 @@ TEST(SptFile, VersionAndMagicAreChecked) {
     }
     std::vector<uint8_t> text(64, 'x');
     EXPECT_THROW(decode_spt(text, "text.spt"), Error);
+}
+
+TEST(SptFile, MeshFarFromItsOriginIsVersionTwoWithItsLocalOrigin) {
+    auto raw = meshgen::box(1, 1, 1, 2);
+    for (auto& p : raw.positions) p += Eigen::Vector3d(2.5e4, -1e5, 3.0);
+    const SptDocument doc = make_document(meshgen::prepare(raw, "far.obj").mesh);
+    EXPECT_FALSE(doc.samples.origin.isZero(0));
+    EXPECT_LT((doc.samples.origin - Eigen::Vector3d(2.5e4, -1e5, 3.0)).norm(), 4.0);
+    const auto bytes = encode_spt(doc);
+    uint32_t version = 0;
+    std::memcpy(&version, bytes.data() + 8, 4);
+    EXPECT_EQ(version, 2u);
+    const SptDocument back = decode_spt(bytes, "far.spt");
+    EXPECT_EQ(back.samples.origin, doc.samples.origin);
+    expect_same(doc, back);
+    EXPECT_EQ(encode_spt(back), bytes);
+    // Sample points are local: small numbers, not 1e5.
+    for (size_t i = 0; i < back.samples.size(); ++i) EXPECT_LT(back.samples.points[i].norm(), 4.0f);
+}
+
+TEST(SptFile, MeshAroundItsOriginStaysVersionOneByteForByte) {
+    const SptDocument doc = small_document();
+    EXPECT_TRUE(doc.samples.origin.isZero(0));
+    const auto bytes = encode_spt(doc);
+    uint32_t version = 0;
+    std::memcpy(&version, bytes.data() + 8, 4);
+    EXPECT_EQ(version, 1u);
+    EXPECT_EQ(encode_spt(decode_spt(bytes, "v1.spt")), bytes);
+}
+
+TEST(SptFile, NonFiniteOrZeroLocalOriginIsRejected) {
+    auto raw = meshgen::box(1, 1, 1, 2);
+    for (auto& p : raw.positions) p += Eigen::Vector3d(1e4, 0, 0);
+    const SptDocument doc = make_document(meshgen::prepare(raw, "far.obj").mesh);
+    const auto bytes = encode_spt(doc);
+    const size_t origin_at = sample_count_offset(doc); // the origin sits where version 1 has the sample count
+    for (double bad : {std::nan(""), double(INFINITY), 0.0}) {
+        auto b = bytes;
+        const double zero = 0;
+        std::memcpy(b.data() + origin_at, bad == 0 ? &zero : &bad, 8);
+        if (bad == 0) std::memcpy(b.data() + origin_at + 8, &zero, 8), std::memcpy(b.data() + origin_at + 16, &zero, 8);
+        reseal(b);
+        try {
+            decode_spt(b, "origin.spt");
+            FAIL() << "origin " << bad << " accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("local origin"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("origin.spt: byte " + std::to_string(origin_at)), std::string::npos)
+                << e.what();
+        }
+    }
 }
 
 TEST(SptFile, MismatchedMeshIsDetected) {

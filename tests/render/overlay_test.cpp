@@ -64,18 +64,18 @@ TEST_F(TreeFixture, sphere_range_of_a_node_is_exactly_its_subtree) {
 
 TEST_F(TreeFixture, bounding_spheres_cover_the_requested_levels) {
     const Color red{1, 0, 0, 1};
-    const auto one = bounding_spheres(tree, root_id(), 0, red);
+    const auto one = bounding_spheres(tree, doc.samples.origin, root_id(), 0, red);
     ASSERT_EQ(one.size(), 1u);
     EXPECT_EQ(one[0].sphere.radius, tree.find(root_id())->bv_radius);
     EXPECT_EQ(one[0].color.r, 1.0f);
     size_t expected = 0;
     for (const TreeNode* n : tree.nodes()) expected += node_depth(n->id) <= 2;
-    EXPECT_EQ(bounding_spheres(tree, root_id(), 2, red).size(), expected);
-    // A pose moves the centres.
+    EXPECT_EQ(bounding_spheres(tree, doc.samples.origin, root_id(), 2, red).size(), expected);
+    // The local origin, then a pose, move the centres into the world.
     const Eigen::Affine3f pose(Eigen::Translation3f(0, 5, 0));
-    EXPECT_NEAR(bounding_spheres(tree, root_id(), 0, red, pose)[0].sphere.center.y(),
-                tree.find(root_id())->center.y() + 5, 1e-5f);
-    EXPECT_TRUE(bounding_spheres(tree, NodeId(1) << 40, 1, red).empty());
+    EXPECT_NEAR(bounding_spheres(tree, doc.samples.origin, root_id(), 0, red, pose)[0].sphere.center.y(),
+                tree.find(root_id())->center.y() + doc.samples.origin.y() + 5, 1e-5f);
+    EXPECT_TRUE(bounding_spheres(tree, doc.samples.origin, NodeId(1) << 40, 1, red).empty());
 }
 
 TEST(overlay, node_colours_are_stable_and_distinct) {

@@ -84,7 +84,7 @@ Frame node_bounds_scene(Renderer& r) {
     SphereItem lit = all_spheres(set);
     lit.first = range.first, lit.count = range.count, lit.color = highlight_color();
     f.spheres.push_back(lit);
-    f.wire_spheres = bounding_spheres(tree, node, 2, Color{0.85f, 0.1f, 0.1f, 1});
+    f.wire_spheres = bounding_spheres(tree, doc.samples.origin, node, 2, Color{0.85f, 0.1f, 0.1f, 1});
     return f;
 }
 

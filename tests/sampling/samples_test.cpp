@@ -50,14 +50,14 @@ TEST(RadiusLimiter, ThinPlateCapsRadiusAtHalfItsThicknessPlusAllowance) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 0.1, 8), "plate");
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
-    const float r = limiter.limit({0.1f, 0.2f, 0.05f}, {0, 0, 1}, 1.0f, 0);
+    const float r = limiter.limit(Eigen::Vector3d(0.1, 0.2, 0.05), {0, 0, 1}, 1.0f, 0);
     EXPECT_NEAR(r, (0.1 + allowance) / 2, 0.01 * 0.055 + 1e-4);
 }
 
 TEST(RadiusLimiter, FlatInteriorKeepsTheRequestedRadius) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 8), "cube");
     const RadiusLimiter limiter(m.mesh, 0.001);
-    EXPECT_EQ(limiter.limit({0, 0, 1}, {0, 0, 1}, 0.5f, 0), 0.5f);
+    EXPECT_EQ(limiter.limit(Eigen::Vector3d(0, 0, 1), {0, 0, 1}, 0.5f, 0), 0.5f);
 }
 
 TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
@@ -67,7 +67,7 @@ TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
     const Eigen::Vector3f corner(1, 1, 1), n = corner.normalized();
-    const float r = limiter.limit(corner, n, 1.0f, 0);
+    const float r = limiter.limit(corner.cast<double>(), n, 1.0f, 0);
     EXPECT_NEAR(r * (1 - 1 / std::sqrt(3.0)), allowance, allowance * 0.02);
 }
 
@@ -75,7 +75,7 @@ TEST(RadiusLimiter, SphereThroughAThinRodIsCaughtFromOutside) {
     // Far larger than the rod: the centre passes through and lies outside the body.
     const ImportedMesh m = meshgen::prepare(meshgen::cylinder(0.05, 2.0, 24), "rod");
     const RadiusLimiter limiter(m.mesh, 0.005);
-    const float r = limiter.limit({0.05f, 0, 1.0f}, {1, 0, 0}, 1.0f, 0);
+    const float r = limiter.limit(Eigen::Vector3d(0.05, 0, 1.0), {1, 0, 0}, 1.0f, 0);
     EXPECT_LT(r, 0.06f);
     EXPECT_GT(r, 0.04f);
 }
@@ -119,7 +119,7 @@ TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
                                       b * (m.mesh.positions[t[2]] - m.mesh.positions[t[0]]);
             double nearest = INFINITY;
             for (size_t i = 0; i < s.size(); ++i)
-                if (s.source_index(i) == f) nearest = std::min(nearest, (s.points[i].cast<double>() - p).norm());
+                if (s.source_index(i) == f) nearest = std::min(nearest, (s.position(i) - p).norm());
             EXPECT_LE(nearest, gap * (1 + 1e-5)) << "face " << f;
         }
     }
@@ -131,7 +131,7 @@ TEST(RadiusLimiter, OpenSheetCapsRadiusAtHalfTheAllowance) {
     const double allowance = 0.01;
     const RadiusLimiter limiter(sheet, allowance);
     EXPECT_TRUE(limiter.back_exposed({0.1, 0.2, 0}, {0, 0, 1}, 0));
-    EXPECT_NEAR(limiter.limit({0.1f, 0.2f, 0}, {0, 0, 1}, 1.0f, 0), allowance / 2, 1e-6);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, 0), allowance / 2, 1e-6);
 }
 
 TEST(RadiusLimiter, ClosedBoxIsNeverTestedForAnExposedBack) {

@@ -82,8 +82,8 @@ TEST(Split, EveryBoundingSphereStillHoldsItsSpheresAfterEdits) {
     t.compute_bounds(s, BoundsMethod::Tight);
     std::vector<uint32_t> right_half, top;
     for (uint32_t i = 0; i < s.size(); ++i) {
-        if (s.points[i].x() > 0.5f) right_half.push_back(i);
-        if (s.points[i].z() > 0.1f) top.push_back(i);
+        if (s.position(i).x() > 0.5) right_half.push_back(i);
+        if (s.position(i).z() > 0.1) top.push_back(i);
     }
     ASSERT_TRUE(t.split(1, right_half, s));
     ASSERT_TRUE(t.split(3, top, s));

@@ -30,7 +30,12 @@ public:
     bool has_mesh() const;
     /// Triangle data for the `exact` level, empty without a mesh (layout private to the library).
     const ExactData& exact() const;
-    /// Largest |x| over every sphere and triangle, object frame (model units): bounds motion.
+    /// Object-frame point the model's geometry is stored relative to (SampleSet::origin), model units.
+    const Eigen::Vector3d& origin() const { return tree_.origin(); }
+    /// Largest |x - origin()| over every sphere and triangle (model units): the model's size.
+    double extent() const { return extent_; }
+    /// Largest |x| over every sphere and triangle in the object frame (model units): how far a
+    /// point of the model can be from the centre of the object's rotations; bounds motion.
     double reach() const { return reach_; }
     /// Bounding-box diagonal of the mesh the document was made from (model units).
     double diagonal() const { return diagonal_; }
@@ -47,7 +52,7 @@ private:
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
     std::vector<float> bounds_reach_;
-    double reach_ = 0, diagonal_ = 0;
+    double extent_ = 0, reach_ = 0, diagonal_ = 0;
     uint32_t max_leaf_ = 0;
 };
 

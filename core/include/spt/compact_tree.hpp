@@ -3,7 +3,8 @@
 /// (left child follows its parent, the right child is an index); the sampling-sphere
 /// centres of each active node in one block (its x's, then y's, then z's), so a leaf
 /// pair reads two or three cache lines a side and streams 8 spheres at a time. Size
-/// is linear in the samples whatever the tree's shape. Object frame, float32 model units.
+/// is linear in the samples whatever the tree's shape. Float32 model units in the samples'
+/// local frame (object frame minus origin()).
 #include "spt/sampling_tree.hpp"
 #include <Eigen/Core>
 #include <cstdint>
@@ -32,6 +33,8 @@ public:
     /// Lays out `tree` over `samples`; sphere centres are p - r*n with the node's radius.
     CompactTree(const SamplingTree& tree, const SampleSet& samples);
 
+    /// Object-frame point that every centre of the layout is relative to (SampleSet::origin).
+    const Eigen::Vector3d& origin() const { return origin_; }
     /// Nodes, root first, depth-first.
     const std::vector<CompactNode>& nodes() const { return nodes_; }
     /// Centres of active node n's spheres: n.count x's, then n.count y's, then n.count z's.
@@ -56,6 +59,7 @@ public:
     size_t memory_bytes() const;
 
 private:
+    Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
     std::vector<CompactNode> nodes_;
     std::vector<float> centres_;
     std::vector<int8_t> nx_, ny_, nz_;

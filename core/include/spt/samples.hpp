@@ -14,9 +14,12 @@ namespace spt {
 /// Marks a sample source as a face (triangle) index instead of a vertex index.
 constexpr uint32_t kFaceSampleBit = 0x80000000u;
 
-/// All sample points of a mesh, in the mesh's object frame (float32 model units).
+/// All sample points of a mesh. Points are float32 relative to a local origin (the centre of
+/// the mesh's bounding box, in double), so a mesh far from its file's origin keeps float
+/// precision; trees and query layouts built over the samples share that local frame.
 struct SampleSet {
-    std::vector<Eigen::Vector3f> points;  ///< surface points
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero(); ///< local origin in the object frame, model units
+    std::vector<Eigen::Vector3f> points;  ///< surface points, local frame (object frame minus origin)
     std::vector<Eigen::Vector3f> normals; ///< outward unit normals (octahedral-snapped)
     std::vector<uint32_t> sources;        ///< vertex index, or triangle index | kFaceSampleBit
     std::vector<float> spacing;           ///< local mesh spacing around each point, model units (bfloat16-snapped)
@@ -25,11 +28,14 @@ struct SampleSet {
 
     /// Number of samples.
     size_t size() const { return points.size(); }
+    /// Surface point of sample i in the object frame, model units.
+    Eigen::Vector3d position(size_t i) const { return origin + points[i].cast<double>(); }
     /// True if sample i lies on a face rather than at a vertex.
     bool is_face_sample(size_t i) const { return (sources[i] & kFaceSampleBit) != 0; }
     /// Vertex or triangle index of sample i, without the face bit.
     uint32_t source_index(size_t i) const { return sources[i] & ~kFaceSampleBit; }
-    /// Appends one sample; normal, spacing and max_radius are snapped to the stored precision.
+    /// Appends one sample at local point p; normal, spacing and max_radius are snapped to the
+    /// stored precision.
     void add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t source, float spacing,
              float max_radius = INFINITY);
 };

@@ -1,8 +1,8 @@
 #pragma once
 /// The sampling tree (paper §3-3, §3-4-1): a binary tree over the samples of a mesh.
 /// Every node has a bounding sphere; only active nodes (the leaves) hold sample
-/// indices and have their sampling spheres tested. All geometry is in the mesh's
-/// object frame, model units.
+/// indices and have their sampling spheres tested. All geometry is in the samples'
+/// local frame (SampleSet::origin), model units.
 #include "spt/node_id.hpp"
 #include "spt/samples.hpp"
 #include <Eigen/Core>

@@ -20,7 +20,7 @@ struct MeshInfo {
 /// Everything a .spt file holds.
 struct SptDocument {
     MeshInfo mesh;                   ///< the mesh the samples were taken from
-    SampleSet samples;               ///< every sample, object frame
+    SampleSet samples;               ///< every sample, local frame (SampleSet::origin)
     std::vector<SamplingTree> trees; ///< named trees over the samples, names unique
 
     /// Tree by name, or nullptr.
@@ -29,8 +29,13 @@ struct SptDocument {
     std::string validate() const;
 };
 
-/// Current format version written by save_spt.
-constexpr uint32_t kSptVersion = 1;
+/// Newest format version this build reads and writes. encode_spt writes the oldest version
+/// that holds the document (1 when the local origin is zero), so an old file saved again
+/// without edits stays byte-identical.
+constexpr uint32_t kSptVersion = 2;
+
+/// The format version encode_spt writes for `doc`.
+uint32_t spt_version_for(const SptDocument& doc);
 
 /// Serialises a document to bytes (little-endian, checksummed).
 std::vector<uint8_t> encode_spt(const SptDocument& doc);

@@ -53,7 +53,10 @@ std::string SptDocument::validate() const {
     return {};
 }
 
+uint32_t spt_version_for(const SptDocument& doc) { return doc.samples.origin.isZero(0) ? 1 : 2; }
+
 std::vector<uint8_t> encode_spt(const SptDocument& doc) {
+    const uint32_t version = spt_version_for(doc);
     detail::Writer w;
     w.bytes.resize(kHeaderSize);
     w.put_string(doc.mesh.name);
@@ -62,6 +65,7 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc) {
     w.put(doc.mesh.hash);
     w.put(doc.mesh.diagonal);
     const SampleSet& s = doc.samples;
+    if (version >= 2) w.put(s.origin.x()), w.put(s.origin.y()), w.put(s.origin.z());
     w.put(uint32_t(s.size()));
     for (size_t i = 0; i < s.size(); ++i) {
         w.put(s.points[i].x()), w.put(s.points[i].y()), w.put(s.points[i].z());
@@ -89,7 +93,7 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc) {
     }
     std::vector<uint8_t>& b = w.bytes;
     std::memcpy(b.data(), kMagic, 8);
-    const uint32_t version = kSptVersion, flags = 0;
+    const uint32_t flags = 0;
     const uint64_t length = b.size();
     const uint32_t body_crc = crc(b.data() + kHeaderSize, b.size() - kHeaderSize);
     std::memcpy(b.data() + 8, &version, 4);
@@ -114,8 +118,8 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
     std::memcpy(&body_crc, bytes.data() + 24, 4);
     std::memcpy(&header_crc, bytes.data() + 28, 4);
     if (crc(bytes.data(), 28) != header_crc) r.fail(28, "header checksum mismatch (corrupt header)");
-    if (version != kSptVersion)
-        r.fail(8, "format version " + std::to_string(version) + " is not supported (this build reads version " +
+    if (version < 1 || version > kSptVersion)
+        r.fail(8, "format version " + std::to_string(version) + " is not supported (this build reads versions 1 to " +
                       std::to_string(kSptVersion) + ")");
     if (flags != 0) r.fail(12, "unknown flags " + std::to_string(flags));
     if (length != bytes.size())
@@ -135,11 +139,18 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
     size_t at = r.offset();
     doc.mesh.diagonal = r.get<double>("mesh diagonal");
     if (!std::isfinite(doc.mesh.diagonal) || doc.mesh.diagonal < 0) r.fail(at, "mesh diagonal is not a finite length");
+    SampleSet& s = doc.samples;
+    if (version >= 2) {
+        at = r.offset();
+        const double ox = r.get<double>("local origin"), oy = r.get<double>("local origin"), oz = r.get<double>("local origin");
+        s.origin = {ox, oy, oz};
+        if (!s.origin.allFinite()) r.fail(at, "local origin is not finite");
+        if (s.origin.isZero(0)) r.fail(at, "a version 2 file with a zero local origin (written as version 1)");
+    }
 
     at = r.offset();
     const auto count = r.get<uint32_t>("sample count");
     r.need(uint64_t(count) * kSampleBytes, std::to_string(count) + " samples");
-    SampleSet& s = doc.samples;
     s.points.resize(count), s.normals.resize(count), s.sources.resize(count);
     s.spacing.resize(count), s.max_radius.resize(count);
     for (uint32_t i = 0; i < count; ++i) {

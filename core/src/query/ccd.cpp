@@ -45,7 +45,7 @@ CcdResult first_contact(const CollisionModel& a, const CollisionModel& b, const 
     q.mode = QueryMode::Any;
     q.normal_culling = options.normal_culling;
     q.cull_cos = options.cull_cos;
-    const double diag = b.diagonal() > 0 ? b.diagonal() : 2 * b.reach();
+    const double diag = b.diagonal() > 0 ? b.diagonal() : 2 * b.extent();
     const double tol = options.tolerance > 0 ? options.tolerance : 1e-4 * diag;
     const double speed =
         (b1_in_a.translation - b0_in_a.translation).norm() + rotation_angle(b0_in_a, b1_in_a) * b.reach();

@@ -31,7 +31,10 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     if (!mismatch.empty()) throw_bad_input(mesh.name, mismatch);
     auto data = std::make_shared<ExactData>();
     ExactData& e = *data;
-    e.positions = mesh.positions;
+    // Local like the spheres: float bounds of triangles far from the object origin keep their precision.
+    const Eigen::Vector3d& o = origin();
+    e.positions.resize(mesh.positions.size());
+    for (size_t v = 0; v < mesh.positions.size(); ++v) e.positions[v] = mesh.positions[v] - o;
     e.triangles = mesh.triangles;
     const size_t nt = e.triangles.size();
     e.tri_sphere.assign(nt * 4, 0);
@@ -44,7 +47,8 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         const Eigen::Vector3d fc = detail::float_rounded(centre);
         for (int k = 0; k < 3; ++k) e.tri_sphere[4 * f + k] = float(fc[k]);
         e.tri_sphere[4 * f + 3] = round_up(r + (fc - centre).norm());
-        reach_ = std::max({reach_, a.norm(), b.norm(), c.norm()});
+        extent_ = std::max({extent_, a.norm(), b.norm(), c.norm()});
+        reach_ = std::max({reach_, (a + o).norm(), (b + o).norm(), (c + o).norm()});
     }
     detail::build_triangle_tree(e);
     exact_ = std::move(data);
@@ -61,12 +65,16 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     const SamplingTree& t = pick_tree(doc, tree_name);
     tree_ = CompactTree(t, doc.samples);
     diagonal_ = doc.mesh.diagonal;
-    reach_ = 0;
+    extent_ = reach_ = 0;
+    const Eigen::Vector3d& o = origin();
+    auto grow = [&](const Eigen::Vector3d& local_centre, double radius) {
+        extent_ = std::max(extent_, local_centre.norm() + radius);
+        reach_ = std::max(reach_, (local_centre + o).norm() + radius);
+    };
     for (const CompactNode& n : tree_.nodes()) {
         if (!n.is_active()) continue;
         max_leaf_ = std::max(max_leaf_, n.count);
-        for (uint32_t k = n.first; k < n.first + n.count; ++k)
-            reach_ = std::max(reach_, tree_.sphere_centre(n, k).cast<double>().norm() + n.ss_radius);
+        for (uint32_t k = n.first; k < n.first + n.count; ++k) grow(tree_.sphere_centre(n, k).cast<double>(), n.ss_radius);
     }
     const auto& nodes = tree_.nodes();
     bounds_reach_.assign(nodes.size(), 0);
@@ -82,8 +90,7 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
         bounds_reach_[i] = n.is_active() ? n.bv_radius : round_up(r);
     }
     // Node spheres too: continuous detection grows every tested sphere by the motion of its farthest point.
-    for (const CompactNode& n : tree_.nodes())
-        reach_ = std::max(reach_, Eigen::Vector3d(n.center[0], n.center[1], n.center[2]).norm() + n.bv_radius);
+    for (const CompactNode& n : tree_.nodes()) grow(Eigen::Vector3d(n.center[0], n.center[1], n.center[2]), n.bv_radius);
 }
 
 size_t CollisionModel::memory_bytes() const {

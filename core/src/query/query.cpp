@@ -35,13 +35,15 @@ void b_to_a(const QueryFrame& f, v4f& x, v4f& y, v4f& z) {
 
 QueryFrame::QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a) {
     Rd = b_in_a.rotation.toRotationMatrix();
-    td = b_in_a.translation;
+    td = local_translation(a, b, Rd, b_in_a.translation);
     R = Rd.cast<float>();
     t = td.cast<float>();
     // Float moves of B's centres are off by a few ulps of |t| + |x|; pruning and the
     // exact level's prefilters add this so rounding can never prune a real contact.
-    // |t| bounded by its 1-norm: no square root on the way to the first test.
-    margin = float(1e-5 * (td.cwiseAbs().sum() + a.reach() + b.reach()));
+    // Every term is local (the pair's offset and the models' sizes), so the margin does
+    // not grow with the distance from any origin. |t| bounded by its 1-norm: no square
+    // root on the way to the first test.
+    margin = float(1e-5 * (td.cwiseAbs().sum() + a.extent() + b.extent()));
 }
 
 void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const CollisionModel& b, bool exact) {
@@ -100,7 +102,7 @@ void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, 
     c.a = a, c.b = b;
     const Eigen::Vector3d d = (cb - ca).cast<double>();
     c.normal = dist > 0 ? Eigen::Vector3d(d / d.norm()) : Eigen::Vector3d::UnitX();
-    c.point = ca.cast<double>() + c.normal * (double(ra) - 0.5 * depth);
+    c.point = A.origin() + ca.cast<double>() + c.normal * (double(ra) - 0.5 * depth);
 }
 
 uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca) {

@@ -5,7 +5,15 @@
 
 namespace spt {
 
-// B's pose in A's frame, in double and float, and the rounding margin.
+// Translation taking B's local frame into A's (CollisionModel::origin), given B's rotation
+// and translation in A's object frame; in double, so far-away origins cancel exactly enough.
+inline Eigen::Vector3d local_translation(const CollisionModel& a, const CollisionModel& b, const Eigen::Matrix3d& rot,
+                                         const Eigen::Vector3d& t) {
+    return rot * b.origin() + (t - a.origin());
+}
+
+// B's pose in A's frame, between the models' local frames, in double and float, and the
+// rounding margin.
 struct QueryFrame {
     QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a);
     Eigen::Matrix3d Rd;

@@ -1,5 +1,6 @@
 // Backtrack along the motion (paper §3-4-3, made exact for the sphere model).
 #include "spt/response.hpp"
+#include "query/query_run.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -26,12 +27,12 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
         return collide_relative(a, b, p, q, scratch).collide;
     };
     if (!collides(0)) return r;
-    const double diag = b.diagonal() > 0 ? b.diagonal() : 2 * b.reach();
+    const double diag = b.diagonal() > 0 ? b.diagonal() : 2 * b.extent();
     const double step = 0.01 * diag;
     double lo = 0, hi = step;
     while (collides(hi)) {
         lo = hi, hi += step;
-        if (hi > 100 * diag + 2 * (a.reach() + b.reach())) {
+        if (hi > 100 * diag + 2 * (a.extent() + b.extent())) {
             r.converged = false;
             break;
         }
@@ -76,13 +77,14 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
             return r;
         }
         const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
+        const Eigen::Vector3d t = local_translation(a, b, rot, p.translation); // the centres are local
         double step = 0, reach_max = 0;
         for (const SpherePair& pair : scratch.pairs()) {
             const Eigen::Vector3d ca =
                 bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
             const Eigen::Vector3d cb0 =
                 bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
-            const Eigen::Vector3d w = rot * cb0 + p.translation - ca;
+            const Eigen::Vector3d w = rot * cb0 + t - ca;
             const double reach = pair.reach, half_b = w.dot(back), c = w.squaredNorm() - reach * reach;
             step = std::max(step, -half_b + std::sqrt(std::max(0.0, half_b * half_b - c)));
             reach_max = std::max(reach_max, reach);

@@ -42,8 +42,8 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     return bvh_->segment_hits(p, c, 1e-6);
 }
 
-float RadiusLimiter::limit(const Eigen::Vector3f& pf, const Eigen::Vector3f& nf, float r_max, uint32_t vertex) const {
-    const Eigen::Vector3d p = pf.cast<double>(), n = nf.cast<double>();
+float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, uint32_t vertex) const {
+    const Eigen::Vector3d n = nf.cast<double>();
     if (back_exposed(p, n, vertex)) r_max = std::min(r_max, float(protrusion_ / 2));
     // Protrusion grows with r (a centre that passes through a thin part counts as outside),
     // so the largest allowed radius is found by bisection.

@@ -25,8 +25,9 @@ public:
     RadiusLimiter(const RadiusLimiter&) = delete;
     RadiusLimiter& operator=(const RadiusLimiter&) = delete;
     /// Largest r <= r_max (within 1%) whose sphere at (p, n) protrudes at most the allowance;
-    /// `vertex` is a mesh vertex of the sample's face (or the sample's own vertex).
-    float limit(const Eigen::Vector3f& p, const Eigen::Vector3f& n, float r_max, uint32_t vertex) const;
+    /// p in the mesh's object frame; `vertex` is a mesh vertex of the sample's face (or the
+    /// sample's own vertex).
+    float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, uint32_t vertex) const;
     /// True if the back of the surface at (p, n) can be seen from outside the mesh: a ray
     /// from p into the back half-space (along -n or 45 degrees off it) leaves the mesh
     /// without crossing a face. Only vertices of parts with boundary or non-manifold edges are tested.

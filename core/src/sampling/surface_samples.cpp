@@ -4,9 +4,23 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace spt {
+
+Eigen::Vector3d local_origin(const TriangleMesh& mesh) {
+    const auto [lo, hi] = mesh.bounds();
+    const Eigen::Vector3d centre = 0.5 * (lo + hi);
+    // The centre snapped to a grid of a power of two at least the mesh's size: a mesh
+    // around its file's origin keeps origin zero (and version-1 files), an edited or
+    // re-exported mesh keeps its origin, and every sample is within a few diagonals of it.
+    const double size = std::max(mesh.diagonal(), std::numeric_limits<double>::min());
+    const double cell = std::exp2(std::ceil(std::log2(size)));
+    Eigen::Vector3d o;
+    for (int k = 0; k < 3; ++k) o[k] = cell * std::round(centre[k] / cell);
+    return o.allFinite() ? o : Eigen::Vector3d::Zero();
+}
 
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule) {
     const size_t n = mesh.positions.size();
@@ -21,14 +35,18 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
             ++edge_count[a], ++edge_count[b];
         }
     SampleSet s;
+    s.origin = local_origin(mesh);
     for (auto* v : {&s.spacing, &s.max_radius}) v->reserve(n);
     s.points.reserve(n), s.normals.reserve(n), s.sources.reserve(n);
     for (uint32_t v = 0; v < n; ++v) {
         if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
         const float spacing = float(edge_sum[v] / edge_count[v]);
-        const Eigen::Vector3f p = mesh.positions[v].cast<float>();
+        // The radius is limited at the exact vertex: the stored float point may lie a rounding
+        // off the surface, and a segment from there to the centre can graze the faces at the vertex.
+        const Eigen::Vector3d& p = mesh.positions[v];
         const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
-        s.add(p, nrm, v, spacing, limiter.limit(p, nrm, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), v));
+        s.add((p - s.origin).cast<float>(), nrm, v, spacing,
+              limiter.limit(p, nrm, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), v));
     }
     return s;
 }
@@ -63,9 +81,9 @@ struct FaceSampler {
     float corner(int64_t i, int64_t j) {
         auto it = radius_at.find({i, j});
         if (it != radius_at.end()) return it->second;
-        const Eigen::Vector3f p = point(i, j).cast<float>();
+        const Eigen::Vector3d p = point(i, j); // on the face: limited there, stored local in float
         const float cap = limiter.limit(p, normal, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), corner_vertex);
-        out.add(p, normal, face | kFaceSampleBit, spacing, cap);
+        out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit, spacing, cap);
         const float r = factor * rule.for_sample(spacing, out.max_radius.back());
         radius_at[{i, j}] = r;
         return r;

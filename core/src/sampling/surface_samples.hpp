@@ -9,11 +9,16 @@ namespace spt {
 /// node's median spacing to exceed a member's own. Beyond it max_radius is not explored.
 constexpr float kRadiusSearchHeadroom = 2.0f;
 
-/// One sample per vertex with a valid normal; spacing = mean length of its edges,
+/// The local origin samples of `mesh` are stored relative to: the centre of its bounding box,
+/// snapped to a grid whose spacing is the power of two at or above the mesh's diagonal (so
+/// zero for a mesh around its file's origin).
+Eigen::Vector3d local_origin(const TriangleMesh& mesh);
+
+/// One sample per vertex with a valid normal, relative to local_origin(mesh); spacing = mean length of its edges,
 /// max_radius from `limiter`, searched up to kRadiusSearchHeadroom x rule.for_sample.
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {});
 
-/// Adds face samples (face normals) on `triangle`, refining adaptively until every point of
+/// Adds face samples (face normals, relative to samples.origin) on `triangle`, refining adaptively until every point of
 /// it lies within reach of a face sample whose sphere leaves it at most `eps` uncovered,
 /// assuming each sample's radius is `radius_factor` x rule.for_sample(spacing, max_radius).
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,

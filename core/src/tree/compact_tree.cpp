@@ -10,7 +10,7 @@ int8_t to_snorm8(float v) { return int8_t(std::lround(std::clamp(v, -1.0f, 1.0f)
 
 } // namespace
 
-CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) {
+CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : origin_(samples.origin) {
     const auto all = tree.nodes();
     auto index_of = [&](NodeId id) {
         auto it = std::lower_bound(all.begin(), all.end(), id, [](const TreeNode* n, NodeId v) { return n->id < v; });

@@ -8,7 +8,7 @@
 
 namespace spt::render {
 
-/// The sampling spheres of `compact` moved into the world by `pose` (rigid).
+/// The sampling spheres of `compact` moved into the object frame by its origin, then into the world by `pose` (rigid).
 std::vector<Sphere> world_spheres(const CompactTree& compact, const Eigen::Affine3f& pose);
 
 /// The pair record of spheres a and b: depth = ra + rb - |cb - ca|, normal from a

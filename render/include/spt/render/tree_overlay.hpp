@@ -22,7 +22,7 @@ Color node_color(NodeId id);
 /// Colour used for the highlighted node.
 Color highlight_color();
 
-/// Every sampling sphere of `compact` (object frame), coloured by `by`; `tree` is
+/// Every sampling sphere of `compact` in the object frame (the layout's origin added), coloured by `by`; `tree` is
 /// the tree `compact` was built from (for node ids and depths).
 std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by);
 
@@ -36,9 +36,10 @@ struct SphereRange {
 SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id);
 
 /// Bounding spheres of node `id` and of its descendants down to `levels` levels
-/// below it (0: the node alone), in the object frame transformed by `pose`. The
-/// node itself gets `color`, descendants the level palette.
-std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, NodeId id, int levels, const Color& color,
-                                         const Eigen::Affine3f& pose = Eigen::Affine3f::Identity());
+/// below it (0: the node alone), moved from the tree's local frame into the object frame
+/// by `origin` (SampleSet::origin), then by `pose`. The node itself gets `color`,
+/// descendants the level palette.
+std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, const Eigen::Vector3d& origin, NodeId id, int levels,
+                                         const Color& color, const Eigen::Affine3f& pose = Eigen::Affine3f::Identity());
 
 } // namespace spt::render
