@@ -75,7 +75,7 @@ std::array<Viewport, 4> quad_viewports(int width, int height) {
 }
 
 struct Renderer::Impl {
-    GlFunctions gl;
+    detail::GlFunctions gl;
     Programs prog;
     std::string renderer_name;
 

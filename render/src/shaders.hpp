@@ -1,6 +1,6 @@
 #pragma once
 // GLSL 3.30 programs of the renderer and their uniform locations.
-#include "spt/render/gl_loader.hpp"
+#include "gl_functions.hpp"
 
 namespace spt::render::detail {
 

@@ -5,6 +5,7 @@
 /// (see docs/rendering.md, "Determinism").
 #include "spt/render/gl_loader.hpp"
 #include "spt/render/image.hpp"
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,8 +30,8 @@ public:
     int width() const { return width_; }
     /// Framebuffer height in pixels.
     int height() const { return height_; }
-    /// Name of the framebuffer object to draw into.
-    uint32_t framebuffer() const { return fbo_; }
+    /// Name of the framebuffer object to draw into (pass it to Renderer::draw).
+    uint32_t framebuffer() const;
     /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     const std::string& gl_renderer() const { return renderer_; }
     /// GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6".
@@ -47,10 +48,9 @@ protected:
     void release_gl();
 
 private:
+    struct GlState; // the GL function table and the framebuffer's objects (offscreen.cpp)
     int width_, height_;
-    GlFunctions gl_;
-    bool gl_ready_ = false;
-    GLuint fbo_ = 0, color_rb_ = 0, depth_rb_ = 0;
+    std::unique_ptr<GlState> gl_;
     std::string renderer_, version_;
 };
 
