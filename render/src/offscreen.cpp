@@ -1,5 +1,4 @@
-// OffscreenContext's backend-independent part: its framebuffer object, the pixel
-// read-back, and the choice of backend.
+// OffscreenContext's backend-independent part: framebuffer object, pixel read-back, choice of backend.
 #include "spt/render/offscreen.hpp"
 #include "gl_functions.hpp"
 #include "offscreen_backends.hpp"

@@ -1,3 +1,4 @@
+// GLSL 3.30 sources of the renderer's programs (meshes, lines, sphere impostors, wire circles), linked.
 #include "shaders.hpp"
 #include <stdexcept>
 #include <string>
