@@ -1,9 +1,10 @@
 #pragma once
-/// Filling a CollisionOverlay. A query at level Spheres in mode All leaves its colliding pairs in
-/// spt::QueryScratch::pairs() as sphere indices in CompactTree order; world_spheres
-/// gives each tree's spheres in that order, and make_sphere_pair turns one pair of
-/// them into what the overlay draws. overlapping_pairs finds every pair by brute
-/// force without the query: a reference for tests and tiny scenes.
+/// Filling a CollisionOverlay. A query at level Spheres in mode All leaves its
+/// colliding pairs in spt::QueryScratch::pairs() as sphere indices in CompactTree
+/// order; world_spheres gives each tree's spheres in that order, and
+/// make_sphere_pair turns one pair of them into what the overlay draws.
+/// overlapping_pairs finds every pair by brute force without the query: a
+/// reference for tests and tiny scenes.
 #include "spt/compact_tree.hpp"
 #include "spt/render/frame.hpp"
 #include <vector>

@@ -102,7 +102,7 @@ struct CollisionOverlay {
     Color color_b{0.16f, 0.42f, 0.92f, 1};         ///< fill of the second object's spheres
     Color contact_color{1.0f, 0.85f, 0.1f, 1};     ///< contact points
     Color normal_color{0.05f, 0.05f, 0.05f, 1};    ///< normal segments, drawn from the contact along the normal
-    float normal_length = 0;   ///< world units; 0: 4% of the scene's bounding diameter
+    float normal_length = 0;   ///< model units; 0: 4% of the scene's bounding diameter
     float contact_size = 6;    ///< diameter of a contact point, framebuffer pixels
 };
 
