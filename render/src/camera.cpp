@@ -1,3 +1,4 @@
+// The four view cameras: orientation, view and projection matrices, projection to window pixels, fitting.
 #include "spt/render/camera.hpp"
 #include <algorithm>
 #include <cmath>

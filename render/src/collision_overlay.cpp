@@ -1,3 +1,4 @@
+// Collision-overlay pairs: world sampling spheres, the pair record of two spheres, brute-force overlaps.
 #include "spt/render/collision_overlay.hpp"
 #include <cmath>
 

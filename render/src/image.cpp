@@ -1,3 +1,4 @@
+// RGBA8 images: deterministic PNG encoding, PNG decoding and files, pixel-by-pixel comparison.
 #include "spt/render/image.hpp"
 #include "spt/error.hpp"
 #include <algorithm>

@@ -1,4 +1,6 @@
+// OffscreenContext's backend-independent part: framebuffer object, pixel read-back, choice of backend.
 #include "spt/render/offscreen.hpp"
+#include "gl_functions.hpp"
 #include "offscreen_backends.hpp"
 #include "spt/error.hpp"
 #include <cstdlib>
@@ -16,14 +18,25 @@ void pin_llvmpipe() {
 }
 } // namespace detail
 
-OffscreenContext::OffscreenContext(int width, int height) : width_(width), height_(height) {}
+struct OffscreenContext::GlState {
+    detail::GlFunctions gl;
+    bool ready = false;
+    GLuint fbo = 0, color_rb = 0, depth_rb = 0;
+};
+
+OffscreenContext::OffscreenContext(int width, int height)
+    : width_(width), height_(height), gl_(std::make_unique<GlState>()) {}
 
 OffscreenContext::~OffscreenContext() = default;
 
+uint32_t OffscreenContext::framebuffer() const { return gl_->fbo; }
+
 void OffscreenContext::init_gl() {
-    gl_.load(loader());
+    GlState& g = *gl_;
+    g.gl.load(loader());
+    const detail::GlFunctions& gl = g.gl;
     auto str = [&](GLenum e) {
-        const GLubyte* s = gl_.GetString(e);
+        const GLubyte* s = gl.GetString(e);
         return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("unknown");
     };
     renderer_ = str(GL_RENDERER);
@@ -32,50 +45,53 @@ void OffscreenContext::init_gl() {
         throw Error(ErrorKind::Usage, std::string(backend()) + ": the renderer is '" + renderer_ +
                                           "', not llvmpipe; its output would not be reproducible");
     GLint max_size = 0;
-    gl_.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+    gl.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
     if (width_ > max_size || height_ > max_size)
         throw Error(ErrorKind::Usage, std::string(backend()) + ": " + std::to_string(width_) + "x" +
                                           std::to_string(height_) + " exceeds the largest framebuffer, " +
                                           std::to_string(max_size) + " pixels a side");
-    gl_.GenFramebuffers(1, &fbo_);
-    gl_.GenRenderbuffers(1, &color_rb_);
-    gl_.GenRenderbuffers(1, &depth_rb_);
-    gl_.BindRenderbuffer(GL_RENDERBUFFER, color_rb_);
-    gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
-    gl_.BindRenderbuffer(GL_RENDERBUFFER, depth_rb_);
-    gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);
-    gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
-    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb_);
-    const GLenum status = gl_.CheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl.GenFramebuffers(1, &g.fbo);
+    gl.GenRenderbuffers(1, &g.color_rb);
+    gl.GenRenderbuffers(1, &g.depth_rb);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, g.color_rb);
+    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, g.depth_rb);
+    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, g.fbo);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, g.color_rb);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, g.depth_rb);
+    const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error(std::string(backend()) + ": the off-screen framebuffer is incomplete");
-    gl_.DrawBuffer(GL_COLOR_ATTACHMENT0);
-    gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
-    check_gl(gl_, "off-screen framebuffer");
-    gl_ready_ = true;
+    gl.DrawBuffer(GL_COLOR_ATTACHMENT0);
+    gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    check_gl(gl, "off-screen framebuffer");
+    g.ready = true;
 }
 
 void OffscreenContext::release_gl() {
-    if (!gl_ready_) return;
-    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    gl_.DeleteFramebuffers(1, &fbo_);
-    GLuint rbs[] = {color_rb_, depth_rb_};
-    gl_.DeleteRenderbuffers(2, rbs);
-    gl_ready_ = false;
+    GlState& g = *gl_;
+    if (!g.ready) return;
+    const detail::GlFunctions& gl = g.gl;
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl.DeleteFramebuffers(1, &g.fbo);
+    GLuint rbs[] = {g.color_rb, g.depth_rb};
+    gl.DeleteRenderbuffers(2, rbs);
+    g.ready = false;
 }
 
 Image OffscreenContext::read_pixels() {
+    const detail::GlFunctions& gl = gl_->gl;
     Image im;
     im.width = width_, im.height = height_;
     im.rgba.resize(size_t(width_) * size_t(height_) * 4);
-    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-    gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_.Finish();
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, gl_->fbo);
+    gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.Finish();
     std::vector<uint8_t> rows(im.rgba.size());
-    gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-    check_gl(gl_, "reading the off-screen framebuffer");
+    gl.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    check_gl(gl, "reading the off-screen framebuffer");
     // GL's row 0 is the bottom row; images are stored top row first.
     const size_t stride = size_t(width_) * 4;
     for (int y = 0; y < height_; ++y)

@@ -1,3 +1,4 @@
+// GLSL 3.30 sources of the renderer's programs (meshes, lines, sphere impostors, wire circles), linked.
 #include "shaders.hpp"
 #include <stdexcept>
 #include <string>
@@ -74,7 +75,7 @@ void main() {
 }
 )";
 
-// Impostor: a quad that covers the sphere's projection; the fragment shader casts the
+// Impostor: a triangle that covers the sphere's projection; the fragment shader casts the
 // view ray at the sphere and writes the hit's depth, so spheres intersect exactly.
 const char* kSphereVs = R"(#version 330 core
 layout(location = 0) in vec2 a_corner;

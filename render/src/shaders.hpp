@@ -1,12 +1,12 @@
 #pragma once
 // GLSL 3.30 programs of the renderer and their uniform locations.
-#include "spt/render/gl_loader.hpp"
+#include "gl_functions.hpp"
 
 namespace spt::render::detail {
 
 // Attribute locations shared by every program and vertex array.
 enum Attrib : GLuint {
-    kPosition = 0, // vec3 (mesh, lines) or vec2 corner (impostor quad) or vec3 circle point
+    kPosition = 0, // vec3 (mesh, lines) or vec2 corner (impostor triangle) or vec3 circle point
     kNormal = 1,   // vec3 mesh normal
     kColor = 2,    // vec4 per-vertex or per-instance colour
     kSphere = 3,   // vec4 per-instance centre (xyz) and radius (w)
@@ -24,7 +24,7 @@ struct LineProgram {
     GLint mvp = -1, point_size = -1, round_points = -1;
 };
 
-// Ray-cast sphere impostors, one quad per instance.
+// Ray-cast sphere impostors, one triangle per instance.
 struct SphereProgram {
     GLuint id = 0;
     GLint model_view = -1, projection = -1, ortho = -1, override_color = -1, color = -1;

@@ -1,3 +1,4 @@
+// Sampling trees as draw data: sphere colours by level or node, subtree sphere ranges, bounding spheres.
 #include "spt/render/tree_overlay.hpp"
 #include <algorithm>
 #include <cmath>

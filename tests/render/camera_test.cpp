@@ -1,3 +1,4 @@
+// Cameras and viewports: fitting, documented orientations, zoom, quad tiling, projection to window pixels.
 #include "spt/render/camera.hpp"
 #include "spt/render/renderer.hpp"
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
-# cmake -DFILES="a|b|c" [-DNM=nm] -P check_no_gl_imports.cmake
-# Fails if any file imports a gl* symbol (a direct GL call that bypasses the loader
-# could bind to the wrong library and render a blank image; DESIGN.md §4). To show
-# that the check can see imports at all, the files together must import a
-# *GetProcAddress function.
+# Fails if a binary imports a gl* symbol, i.e. calls GL without the loader.
+# Usage: cmake -DFILES="a|b|c" [-DNM=nm] -P check_no_gl_imports.cmake
+# A direct GL call could bind to the wrong library and render a blank image
+# (DESIGN.md §4). To show that the check can see imports at all, the files
+# together must import a *GetProcAddress function.
 if(NOT NM)
   set(NM nm)
 endif()
@@ -16,7 +16,7 @@ foreach(f IN LISTS files)
   string(REGEX MATCHALL "[ \t\n]gl[A-Z][A-Za-z0-9_]*" direct "${out}")
   if(direct)
     string(REPLACE "\n" "" direct "${direct}")
-    message(FATAL_ERROR "${f} calls GL directly:${direct}\nLoad these through GlFunctions instead.")
+    message(FATAL_ERROR "${f} calls GL directly:${direct}\nLoad these through the GL function table (render/src/gl_functions.hpp) instead.")
   endif()
   if(out MATCHES "GetProcAddress")
     set(found_loader TRUE)

@@ -1,3 +1,4 @@
+// Golden-image comparison against resources/golden/, failure artefacts and the SPT_UPDATE_GOLDEN rewrite.
 #include "golden.hpp"
 #include "spt/error.hpp"
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// PNG round trips and byte stability, bad files and paths, and the image comparison's thresholds.
 #include "spt/error.hpp"
 #include "spt/render/image.hpp"
 #include <filesystem>

@@ -1,3 +1,4 @@
+// Off-screen contexts: backends, usage errors, core profile on llvmpipe, row order, determinism, drawing.
 #include "scenes.hpp"
 #include "spt/error.hpp"
 #include "spt/render/offscreen.hpp"

@@ -1,9 +1,13 @@
+// Tree and collision overlays: sphere colours and ranges, bounding spheres, sphere pairs.
+#include "spt/collision_model.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
+#include "spt/query.hpp"
 #include "spt/render/collision_overlay.hpp"
 #include "spt/render/tree_overlay.hpp"
 #include "test_meshes.hpp"
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <set>
 
 using namespace spt;
@@ -95,7 +99,7 @@ TEST(overlay, sphere_pairs_by_brute_force) {
     EXPECT_FLOAT_EQ(pairs[0].depth, 0.5f);
     EXPECT_TRUE(pairs[0].normal.isApprox(Eigen::Vector3f::UnitX()));
     EXPECT_TRUE(pairs[0].contact.isApprox(Eigen::Vector3f(0.75f, 0, 0)));
-    const SpherePair same = make_sphere_pair({{1, 1, 1}, 1}, {{1, 1, 1}, 2});
+    const render::SpherePair same = make_sphere_pair({{1, 1, 1}, 1}, {{1, 1, 1}, 2});
     EXPECT_TRUE(same.normal.isApprox(Eigen::Vector3f::UnitY()));
     EXPECT_FLOAT_EQ(same.depth, 3.0f);
 }
@@ -109,4 +113,43 @@ TEST_F(TreeFixture, world_spheres_apply_the_pose) {
         EXPECT_TRUE(moved[i].center.isApprox(local[i].center + Eigen::Vector3f(1, 2, 3)));
         EXPECT_EQ(moved[i].radius, local[i].radius);
     }
+}
+
+// The path collision_overlay.hpp documents: a query's pairs index world_spheres().
+// Brute force over the same world spheres (every 31st of A's, all of B's) is the
+// independent reference.
+TEST_F(TreeFixture, query_pairs_index_world_spheres) {
+    const CollisionModel model(doc);
+    const Eigen::Vector3d shift(0.5 * model.diagonal(), 0.1 * model.diagonal(), 0);
+    const Pose pose_b = Pose::from(shift, Eigen::Quaterniond::Identity());
+    QueryOptions options;
+    options.level = QueryLevel::Spheres;
+    options.mode = QueryMode::All;
+    QueryScratch scratch;
+    const QueryResult result = collide(model, Pose::identity(), model, pose_b, options, scratch);
+    ASSERT_TRUE(result.collide);
+    const auto world_a = world_spheres(model.tree(), Eigen::Affine3f::Identity());
+    const auto world_b = world_spheres(model.tree(), Eigen::Affine3f(Eigen::Translation3f(shift.cast<float>())));
+
+    // Float rounding may only move pairs that barely touch.
+    const float eps = 1e-4f * float(model.diagonal());
+    std::vector<std::pair<uint32_t, uint32_t>> found;
+    for (const spt::SpherePair& p : scratch.pairs()) {
+        ASSERT_LT(p.a, world_a.size());
+        ASSERT_LT(p.b, world_b.size());
+        const render::SpherePair drawn = make_sphere_pair(world_a[p.a], world_b[p.b]);
+        EXPECT_NEAR(drawn.depth, p.depth, eps) << "pair " << p.a << ", " << p.b;
+        found.emplace_back(p.a, p.b);
+    }
+    std::sort(found.begin(), found.end());
+    size_t clear_overlaps = 0;
+    for (uint32_t i = 0; i < world_a.size(); i += 31)
+        for (uint32_t j = 0; j < world_b.size(); ++j) {
+            const float reach = world_a[i].radius + world_b[j].radius - eps;
+            if (reach <= 0 || (world_b[j].center - world_a[i].center).squaredNorm() >= reach * reach) continue;
+            EXPECT_TRUE(std::binary_search(found.begin(), found.end(), std::make_pair(i, j)))
+                << "pair " << i << ", " << j << " overlaps but the query missed it";
+            ++clear_overlaps;
+        }
+    EXPECT_GT(clear_overlaps, 0u);
 }

@@ -1,3 +1,4 @@
+// The golden-image scenes built in code, and an off-screen context with a renderer to draw them.
 #include "scenes.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"

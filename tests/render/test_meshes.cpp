@@ -1,3 +1,4 @@
+// Test meshes made in code (box figure, torus) and plain OBJ / binary PLY writers.
 #include "test_meshes.hpp"
 #include <cmath>
 #include <fstream>

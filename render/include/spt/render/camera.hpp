@@ -11,20 +11,26 @@
 namespace spt::render {
 
 /// The four views of the paper's sampling tool (Fig. 6).
-enum class View { Top, Front, Side, Camera };
+enum class View {
+    Top,    ///< orthographic, looking down -Y: +X right, -Z up on screen
+    Front,  ///< orthographic, looking down -Z from +Z: +X right, +Y up
+    Side,   ///< orthographic, looking down -X from +X: -Z right, +Y up
+    Camera, ///< perspective, orbiting the target by yaw and pitch
+};
 
 /// Lower-case name of a view: "top", "front", "side", "camera".
 const char* view_name(View view);
 
-/// Axis-aligned box in world units; empty when min > max.
+/// Axis-aligned box in the frame of the points added (the world for the renderer and
+/// the cameras), model units; empty when min > max.
 struct Bounds {
-    Eigen::Vector3f min = Eigen::Vector3f::Constant(1e30f);  ///< lowest corner, world units
-    Eigen::Vector3f max = Eigen::Vector3f::Constant(-1e30f); ///< highest corner, world units
+    Eigen::Vector3f min = Eigen::Vector3f::Constant(1e30f);  ///< lowest corner, model units
+    Eigen::Vector3f max = Eigen::Vector3f::Constant(-1e30f); ///< highest corner, model units
     /// True if nothing has been added.
     bool empty() const { return (min.array() > max.array()).any(); }
     /// Grows the box to hold p.
     void add(const Eigen::Vector3f& p) { min = min.cwiseMin(p), max = max.cwiseMax(p); }
-    /// Grows the box to hold a sphere.
+    /// Grows the box to hold the sphere of centre c and radius r.
     void add_sphere(const Eigen::Vector3f& c, float r) { add(c - Eigen::Vector3f::Constant(r)), add(c + Eigen::Vector3f::Constant(r)); }
     /// Grows the box to hold another box.
     void add(const Bounds& b) { if (!b.empty()) add(b.min), add(b.max); }
@@ -34,9 +40,9 @@ struct Bounds {
     float radius() const { return empty() ? 0.0f : 0.5f * (max - min).norm(); }
 };
 
-/// A view camera. Lengths are world units, angles degrees.
+/// A view camera. World frame; lengths are model units, angles degrees.
 struct Camera {
-    View view = View::Camera;
+    View view = View::Camera; ///< which view: the three orthographic ones or the perspective camera
     Eigen::Vector3f target = Eigen::Vector3f::Zero(); ///< world point at the centre of the view
     float radius = 1;       ///< radius of the world sphere around target kept in view and in depth range
     float zoom = 1;         ///< > 1 magnifies
@@ -46,11 +52,12 @@ struct Camera {
 
     /// True for the perspective camera, false for the orthographic views.
     bool perspective() const { return view == View::Camera; }
-    /// Unit vector from the target towards the eye.
+    /// Unit vector from the target towards the eye, world frame.
     Eigen::Vector3f back() const;
-    /// Unit vector that is up on screen.
+    /// Unit vector that is up on screen, world frame.
     Eigen::Vector3f up() const;
-    /// Eye position; for the orthographic views a point far enough back to see the whole sphere.
+    /// Eye position, world frame; for the orthographic views a point far enough back
+    /// (3 radii) to see the whole sphere.
     Eigen::Vector3f eye() const;
     /// World-to-eye transform (OpenGL convention: the eye looks down its -Z).
     Eigen::Matrix4f view_matrix() const;
@@ -63,10 +70,10 @@ struct Camera {
     Eigen::Vector3f project(const Eigen::Vector3f& p, int width, int height) const;
 };
 
-/// A camera of `view` that frames `bounds` (the box's bounding sphere, with a margin).
+/// A camera of `view` that frames `bounds` (world frame): the box's bounding sphere, with an 8% margin.
 Camera fit_camera(View view, const Bounds& bounds);
 
-/// The four views fitted to `bounds`, in quad-layout order: top, front, side, camera.
+/// The four views fitted to `bounds` (world frame), in quad-layout order: top, front, side, camera.
 std::array<Camera, 4> fit_quad_cameras(const Bounds& bounds);
 
 } // namespace spt::render

@@ -2,6 +2,7 @@
 /// What one frame shows, as plain data. The renderer owns only GPU copies of large
 /// geometry (meshes, sphere sets, by handle); everything else is passed per frame,
 /// so a caller such as the collision query can fill these structs directly.
+/// Lengths are model units (the meshes' own); sizes on screen are framebuffer pixels.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -10,21 +11,24 @@
 
 namespace spt::render {
 
-/// Linear RGBA, each channel in [0, 1].
+/// An RGBA colour, each channel in [0, 1], written to the framebuffer as is (no gamma conversion).
 struct Color {
-    float r = 0, g = 0, b = 0, a = 1;
+    float r = 0; ///< red
+    float g = 0; ///< green
+    float b = 0; ///< blue
+    float a = 1; ///< alpha, 1 opaque; blends for see-through meshes, wire spheres and collision marks
 };
 
 /// A sphere in some frame (world unless stated), model units.
 struct Sphere {
-    Eigen::Vector3f center = Eigen::Vector3f::Zero(); ///< model units
-    float radius = 0; ///< model units
+    Eigen::Vector3f center = Eigen::Vector3f::Zero(); ///< centre, model units
+    float radius = 0; ///< radius, model units
 };
 
 /// One instance of a solid sphere set: a sphere and its colour.
 struct SphereInstance {
-    Sphere sphere;
-    Color color;
+    Sphere sphere; ///< in the set's object frame, model units
+    Color color;   ///< fill colour
 };
 
 /// Handle of a mesh uploaded with Renderer::add_mesh.
@@ -46,30 +50,30 @@ enum class Shading {
 
 /// Appearance of one drawn mesh.
 struct MeshStyle {
-    Shading shading = Shading::Smooth;
-    Color color{0.72f, 0.74f, 0.78f, 1};
+    Shading shading = Shading::Smooth;          ///< how the faces are lit, or not drawn
+    Color color{0.72f, 0.74f, 0.78f, 1};        ///< face colour; its alpha is multiplied by opacity
     float opacity = 1;          ///< < 1: drawn after opaque geometry, blended, back faces culled
-    bool wireframe = false;     ///< edges over the faces
-    Color wire_color{0.15f, 0.17f, 0.22f, 1};
-    bool points = false;        ///< vertices as points
-    Color point_color{0.1f, 0.1f, 0.1f, 1};
-    float point_size = 3;       ///< pixels
+    bool wireframe = false;     ///< edges over the faces, one pixel wide
+    Color wire_color{0.15f, 0.17f, 0.22f, 1};   ///< colour of the edges
+    bool points = false;        ///< vertices as round points
+    Color point_color{0.1f, 0.1f, 0.1f, 1};     ///< colour of the vertex points
+    float point_size = 3;       ///< diameter of a vertex point, framebuffer pixels
 };
 
 /// A mesh placed in the world.
 struct MeshItem {
-    MeshHandle mesh;
+    MeshHandle mesh;  ///< the uploaded mesh; an unknown handle makes Renderer::draw throw
     Eigen::Affine3f pose = Eigen::Affine3f::Identity(); ///< object to world; rigid (sphere radii are not scaled)
-    MeshStyle style;
+    MeshStyle style;  ///< how it looks
 };
 
 /// A range of an uploaded sphere set placed in the world. Items are drawn in
 /// order with a less-or-equal depth test, so a later item over the same spheres
 /// (e.g. one highlighted node) replaces their colour.
 struct SphereItem {
-    SphereSetHandle spheres;
+    SphereSetHandle spheres;            ///< the uploaded set; an unknown handle makes Renderer::draw throw
     Eigen::Affine3f pose = Eigen::Affine3f::Identity(); ///< object to world; rigid
-    uint32_t first = 0;                 ///< first sphere of the range
+    uint32_t first = 0;                 ///< first sphere of the range (index into the set)
     uint32_t count = UINT32_MAX;        ///< number of spheres; clamped to the set
     std::optional<Color> color;         ///< replaces the per-sphere colours when set
 };
@@ -77,46 +81,47 @@ struct SphereItem {
 /// A bounding sphere drawn as wire: its outline always on top, its three
 /// axis-aligned great circles faint and depth-tested. World frame.
 struct WireSphere {
-    Sphere sphere;
-    Color color{0.1f, 0.45f, 0.95f, 1};
+    Sphere sphere;                       ///< world frame, model units
+    Color color{0.1f, 0.45f, 0.95f, 1};  ///< outline colour; the great circles take 35% of its alpha
 };
 
 /// Two overlapping spheres of a collision with their contact. World frame.
 struct SpherePair {
-    Sphere a;                  ///< sphere of the first object
-    Sphere b;                  ///< sphere of the second object
-    Eigen::Vector3f contact = Eigen::Vector3f::Zero(); ///< contact point
+    Sphere a;                  ///< sphere of the first object, world frame
+    Sphere b;                  ///< sphere of the second object, world frame
+    Eigen::Vector3f contact = Eigen::Vector3f::Zero(); ///< contact point, world frame
     Eigen::Vector3f normal = Eigen::Vector3f::UnitY(); ///< unit contact normal, from a towards b
     float depth = 0;           ///< penetration depth, model units
 };
 
-/// Colliding sphere pairs as a query reports them.
+/// Colliding sphere pairs as a query reports them (collision_overlay.hpp makes them):
+/// the two objects' spheres depth-tested, contact points and normals on top of everything.
 struct CollisionOverlay {
-    std::vector<SpherePair> pairs;
-    Color color_a{0.93f, 0.27f, 0.18f, 1};
-    Color color_b{0.16f, 0.42f, 0.92f, 1};
-    Color contact_color{1.0f, 0.85f, 0.1f, 1};
-    Color normal_color{0.05f, 0.05f, 0.05f, 1};
-    float normal_length = 0;   ///< world units; 0: 4% of the scene's bounding diameter
-    float contact_size = 6;    ///< pixels
+    std::vector<SpherePair> pairs;                 ///< world frame; empty draws nothing
+    Color color_a{0.93f, 0.27f, 0.18f, 1};         ///< fill of the first object's spheres
+    Color color_b{0.16f, 0.42f, 0.92f, 1};         ///< fill of the second object's spheres
+    Color contact_color{1.0f, 0.85f, 0.1f, 1};     ///< contact points
+    Color normal_color{0.05f, 0.05f, 0.05f, 1};    ///< normal segments, drawn from the contact along the normal
+    float normal_length = 0;   ///< model units; 0: 4% of the scene's bounding diameter
+    float contact_size = 6;    ///< diameter of a contact point, framebuffer pixels
 };
 
 /// A polyline through successive positions of a moving point. World frame.
 struct Trail {
-    std::vector<Eigen::Vector3f> points;
-    Color color{0.55f, 0.2f, 0.75f, 1};
+    std::vector<Eigen::Vector3f> points;   ///< world frame, model units, in order of time
+    Color color{0.55f, 0.2f, 0.75f, 1};    ///< line colour
 };
 
-/// Everything one draw shows.
+/// Everything one draw shows, drawn in the order of each vector.
 struct Frame {
-    std::vector<MeshItem> meshes;
-    std::vector<SphereItem> spheres;
-    std::vector<WireSphere> wire_spheres;
-    CollisionOverlay collision;
-    std::vector<Trail> trails;
+    std::vector<MeshItem> meshes;           ///< opaque ones first, then those with opacity < 1
+    std::vector<SphereItem> spheres;        ///< sampling-sphere ranges (tree_overlay.hpp)
+    std::vector<WireSphere> wire_spheres;   ///< bounding spheres (tree_overlay.hpp)
+    CollisionOverlay collision;             ///< colliding sphere pairs, contacts, normals
+    std::vector<Trail> trails;              ///< motion trails
     bool grid = true;   ///< ground grid under the scene (at its lowest Y)
     bool axes = true;   ///< axis gizmo in the lower-left corner of each view
-    Color background{0.95f, 0.95f, 0.96f, 1};
+    Color background{0.95f, 0.95f, 0.96f, 1}; ///< clear colour of each view; its alpha goes into the image
 };
 
 } // namespace spt::render

@@ -6,13 +6,13 @@
 
 namespace spt::render {
 
-/// An 8-bit RGBA image; row 0 is the top row, rows are tightly packed.
+/// An 8-bit RGBA image; row 0 is the top row (not GL's bottom row), rows are tightly packed.
 struct Image {
-    int width = 0;
-    int height = 0;
-    std::vector<uint8_t> rgba; ///< width * height * 4 bytes
+    int width = 0;  ///< pixels
+    int height = 0; ///< pixels
+    std::vector<uint8_t> rgba; ///< width * height * 4 bytes: R, G, B, A per pixel, top row first
 
-    /// An image of the given size filled with one colour.
+    /// A width x height image (pixels) filled with one colour (channels 0-255).
     static Image filled(int width, int height, uint8_t r, uint8_t g, uint8_t b, uint8_t a = 255);
     /// Pointer to pixel (x, y), x from the left, y from the top.
     uint8_t* pixel(int x, int y) { return rgba.data() + (size_t(y) * size_t(width) + size_t(x)) * 4; }
@@ -29,7 +29,7 @@ Image decode_png(const std::vector<uint8_t>& bytes, const std::string& name = ""
 /// Writes encode_png(image) to `path` atomically (temporary file, then rename);
 /// throws Error(CannotWrite) naming the path.
 void write_png(const Image& image, const std::string& path);
-/// Reads a PNG file; throws Error(BadInput) naming the file.
+/// Reads a PNG file as decode_png does; throws Error(BadInput) naming the file.
 Image read_png(const std::string& path);
 
 /// How two images may differ and still count as equal.
@@ -38,13 +38,16 @@ struct CompareOptions {
     double max_differing_fraction = 0.001; ///< largest fraction of differing pixels that still passes
 };
 
-/// Outcome of compare_images.
+/// Outcome of compare_images. When the sizes differ only the sizes are filled in.
 struct CompareResult {
-    bool same_size = false;
-    int actual_width = 0, actual_height = 0, expected_width = 0, expected_height = 0;
+    bool same_size = false;       ///< both images have the same width and height
+    int actual_width = 0;         ///< pixels
+    int actual_height = 0;        ///< pixels
+    int expected_width = 0;       ///< pixels
+    int expected_height = 0;      ///< pixels
     size_t differing_pixels = 0;  ///< pixels with a channel difference above the threshold
     double differing_fraction = 0;///< differing_pixels / pixel count (1 when sizes differ)
-    int max_channel_difference = 0;
+    int max_channel_difference = 0; ///< largest difference of one channel (R, G, B or A) over all pixels, 0-255
     bool passed = false;          ///< same size and differing_fraction <= the allowed fraction
     Image diff;                   ///< expected faded to grey, differing pixels in red (empty if sizes differ)
 

@@ -5,6 +5,7 @@
 /// (see docs/rendering.md, "Determinism").
 #include "spt/render/gl_loader.hpp"
 #include "spt/render/image.hpp"
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,13 +15,16 @@ namespace spt::render {
 /// A current off-screen GL 3.3 core context with a framebuffer of fixed size.
 class OffscreenContext {
 public:
+    /// Deletes the framebuffer and destroys the context; destroy every Renderer made on it first.
     virtual ~OffscreenContext();
+    /// Not copyable: it owns a GL context.
     OffscreenContext(const OffscreenContext&) = delete;
+    /// Not copyable: it owns a GL context.
     OffscreenContext& operator=(const OffscreenContext&) = delete;
 
     /// Backend name: "osmesa" or "egl".
     virtual const char* backend() const = 0;
-    /// The context's own proc-address function, for Renderer.
+    /// The context's own proc-address function (OSMesaGetProcAddress, eglGetProcAddress), for Renderer.
     virtual ProcLoader loader() const = 0;
     /// Makes this context current on the calling thread (it is current after creation).
     virtual void make_current() = 0;
@@ -29,16 +33,18 @@ public:
     int width() const { return width_; }
     /// Framebuffer height in pixels.
     int height() const { return height_; }
-    /// Name of the framebuffer object to draw into.
-    uint32_t framebuffer() const { return fbo_; }
+    /// Name of the framebuffer object to draw into (pass it to Renderer::draw).
+    uint32_t framebuffer() const;
     /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     const std::string& gl_renderer() const { return renderer_; }
     /// GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6".
     const std::string& gl_version() const { return version_; }
-    /// Waits for rendering to finish and returns the framebuffer, top row first.
+    /// Waits for rendering to finish and returns the framebuffer as an Image: top row
+    /// first (GL's rows, bottom first, are flipped), RGBA8 as drawn.
     Image read_pixels();
 
 protected:
+    /// A backend's context with a width x height framebuffer (pixels); no GL yet.
     OffscreenContext(int width, int height);
     /// Loads GL through loader(), checks the renderer and makes the framebuffer; the
     /// backend calls it once its context is current.
@@ -47,10 +53,9 @@ protected:
     void release_gl();
 
 private:
+    struct GlState; // the GL function table and the framebuffer's objects (offscreen.cpp)
     int width_, height_;
-    GlFunctions gl_;
-    bool gl_ready_ = false;
-    GLuint fbo_ = 0, color_rb_ = 0, depth_rb_ = 0;
+    std::unique_ptr<GlState> gl_;
     std::string renderer_, version_;
 };
 
@@ -58,8 +63,9 @@ private:
 std::vector<std::string> offscreen_backends();
 
 /// Creates and makes current an off-screen context of `backend` with a width x height
-/// framebuffer. Throws Error(Usage) for an unknown or unavailable backend or a size out
-/// of range, naming the backend and the reason.
+/// framebuffer (pixels, 1 to 16384 a side and at most the driver's limit). Throws
+/// Error(Usage) for an unknown or unavailable backend or a size out of range, naming
+/// the backend and the reason.
 std::unique_ptr<OffscreenContext> make_offscreen_context(const std::string& backend, int width, int height);
 
 } // namespace spt::render

@@ -15,10 +15,13 @@ namespace spt::render {
 
 /// A rectangle of the target framebuffer in pixels, origin at the lower left (GL convention).
 struct Viewport {
-    int x = 0, y = 0, width = 0, height = 0;
+    int x = 0;      ///< left edge, pixels from the framebuffer's left
+    int y = 0;      ///< bottom edge, pixels from the framebuffer's bottom row (GL window coordinates)
+    int width = 0;  ///< pixels; <= 0 draws nothing
+    int height = 0; ///< pixels; <= 0 draws nothing
 };
 
-/// The four viewports of the quad layout inside a width x height target, in
+/// The four viewports of the quad layout inside a width x height target (pixels), in
 /// fit_quad_cameras order: top (upper left), front (upper right), side (lower
 /// left), camera (lower right), with a one-pixel separator between them.
 std::array<Viewport, 4> quad_viewports(int width, int height);
@@ -30,27 +33,35 @@ public:
     explicit Renderer(const ProcLoader& load);
     /// Frees every GL object; the context must still be current.
     ~Renderer();
+    /// Not copyable: it owns GL objects of one context.
     Renderer(const Renderer&) = delete;
+    /// Not copyable: it owns GL objects of one context.
     Renderer& operator=(const Renderer&) = delete;
 
-    /// Uploads a mesh (positions and vertex normals, object frame) and returns its handle.
+    /// Uploads a mesh (positions and vertex normals, object frame, model units) and returns
+    /// its handle; throws std::invalid_argument naming the mesh if a triangle index is out of range.
     MeshHandle add_mesh(const TriangleMesh& mesh);
-    /// Frees an uploaded mesh; the handle becomes invalid.
+    /// Frees an uploaded mesh; the handle becomes invalid. An unknown handle is ignored.
     void remove_mesh(MeshHandle mesh);
-    /// Uploads solid spheres (object frame) for instanced drawing and returns the set's handle.
+    /// Uploads solid spheres (object frame, model units) for instanced drawing and returns the set's handle.
     SphereSetHandle add_spheres(const std::vector<SphereInstance>& spheres);
-    /// Replaces the spheres of a set (e.g. new colours after a split).
+    /// Replaces the spheres of a set (e.g. new colours after a split); throws
+    /// std::invalid_argument for an unknown handle.
     void update_spheres(SphereSetHandle set, const std::vector<SphereInstance>& spheres);
-    /// Frees an uploaded sphere set.
+    /// Frees an uploaded sphere set; an unknown handle is ignored.
     void remove_spheres(SphereSetHandle set);
-    /// Number of spheres in a set.
+    /// Number of spheres in a set (0 for an unknown handle).
     uint32_t sphere_count(SphereSetHandle set) const;
 
-    /// World-frame box around everything `frame` shows (the grid excepted).
+    /// World-frame box around everything `frame` shows (the grid excepted), model units.
     Bounds bounds(const Frame& frame) const;
-    /// Clears `viewport` of `framebuffer` and draws `frame` through `camera` into it.
+    /// Clears `viewport` of `framebuffer` (a GL framebuffer object name, such as
+    /// OffscreenContext::framebuffer() or QOpenGLWidget::defaultFramebufferObject()) and
+    /// draws `frame` through `camera` into it. Throws std::invalid_argument for an unknown
+    /// mesh or sphere-set handle in the frame.
     void draw(const Frame& frame, const Camera& camera, const Viewport& viewport, uint32_t framebuffer);
-    /// Draws the 2x2 layout (cameras in fit_quad_cameras order) over a width x height target.
+    /// Draws the 2x2 layout (cameras in fit_quad_cameras order) over a width x height target
+    /// (pixels); the one-pixel separators are the frame's background darkened.
     void draw_quad(const Frame& frame, const std::array<Camera, 4>& cameras, int width, int height,
                    uint32_t framebuffer);
 

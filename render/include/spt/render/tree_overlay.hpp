@@ -19,20 +19,20 @@ enum class ColorBy {
 Color level_color(int depth);
 /// Stable colour of a node id (hashed hue).
 Color node_color(NodeId id);
-/// Colour used for the highlighted node.
+/// Colour used for the highlighted node (opaque).
 Color highlight_color();
 
 /// Every sampling sphere of `compact` in the object frame (the layout's origin added), coloured by `by`; `tree` is
 /// the tree `compact` was built from (for node ids and depths).
 std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by);
 
-/// Range [first, first + count) of sampling_spheres() below node `id`; count 0 if the
-/// tree has no such node.
+/// A range [first, first + count) of sampling_spheres(), i.e. of the CompactTree's spheres.
 struct SphereRange {
-    uint32_t first = 0;
-    uint32_t count = 0;
+    uint32_t first = 0; ///< index of the first sphere
+    uint32_t count = 0; ///< number of spheres; 0 for an empty range
 };
-/// Spheres below node `id` in the CompactTree order.
+/// The spheres below node `id`: one range in CompactTree order; count 0 if the tree has
+/// no such node.
 SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id);
 
 /// Bounding spheres of node `id` and of its descendants down to `levels` levels

@@ -1,9 +1,10 @@
-#include "spt/render/gl_loader.hpp"
+// Loading the GL function table through a ProcLoader, and the GL error check.
+#include "gl_functions.hpp"
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
-namespace spt::render {
+namespace spt::render::detail {
 
 void GlFunctions::load(const ProcLoader& loader) {
     if (!loader) throw std::runtime_error("OpenGL: no loader function given");
@@ -22,4 +23,4 @@ void check_gl(const GlFunctions& gl, const char* what) {
     throw std::runtime_error(std::string(what) + ": GL error " + code);
 }
 
-} // namespace spt::render
+} // namespace spt::render::detail

@@ -1,0 +1,126 @@
+// Draw passes of the scene itself: the ground grid, meshes (faces, wireframe, points), sampling spheres.
+#include "renderer_impl.hpp"
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace spt::render {
+namespace {
+
+// Largest 1, 2 or 5 times a power of ten not above x.
+float nice_step(float x) {
+    const float p = std::pow(10.0f, std::floor(std::log10(x)));
+    const float m = x / p;
+    return (m >= 5 ? 5.0f : m >= 2 ? 2.0f : 1.0f) * p;
+}
+
+} // namespace
+
+// The grid lies under the meshes and spheres (not under overlays such as bounding
+// spheres, which reach below the object) and spans the whole scene.
+void Renderer::Impl::draw_grid(const Bounds& b, float ground) {
+    if (b.empty()) return;
+    const float r = std::max(b.radius(), 1e-6f);
+    const float step = nice_step(r / 3.0f);
+    const Eigen::Vector3f c = b.center();
+    const int half = int(std::ceil(1.5f * r / step));
+    const float cx = std::round(c.x() / step) * step, cz = std::round(c.z() / step) * step;
+    const float y = ground;
+    const float ext = float(half) * step;
+    std::vector<LineVertex> v;
+    const Color minor{0.80f, 0.81f, 0.84f, 1}, major{0.62f, 0.64f, 0.69f, 1};
+    for (int i = -half; i <= half; ++i) {
+        const float x = cx + float(i) * step, z = cz + float(i) * step;
+        // Every fifth line from the world origin is darker, so scale can be read off.
+        const Color& cxcol = (std::lround(x / step) % 5 == 0) ? major : minor;
+        const Color& czcol = (std::lround(z / step) % 5 == 0) ? major : minor;
+        push_line_vertex(v, {x, y, cz - ext}, cxcol);
+        push_line_vertex(v, {x, y, cz + ext}, cxcol);
+        push_line_vertex(v, {cx - ext, y, z}, czcol);
+        push_line_vertex(v, {cx + ext, y, z}, czcol);
+    }
+    draw_lines(v, GL_LINES);
+}
+
+void Renderer::Impl::draw_mesh_faces(const GpuMesh& m, const MeshItem& item) {
+    const MeshStyle& s = item.style;
+    const Eigen::Matrix4f mv = view * item.pose.matrix();
+    if (s.shading != Shading::None) {
+        gl.UseProgram(prog.mesh.id);
+        gl.UniformMatrix4fv(prog.mesh.model_view, 1, GL_FALSE, mv.data());
+        gl.UniformMatrix4fv(prog.mesh.projection, 1, GL_FALSE, proj.data());
+        const Eigen::Matrix3f nm = mv.block<3, 3>(0, 0).inverse().transpose();
+        gl.UniformMatrix3fv(prog.mesh.normal_matrix, 1, GL_FALSE, nm.data());
+        gl.Uniform4f(prog.mesh.color, s.color.r, s.color.g, s.color.b, s.color.a * s.opacity);
+        gl.Uniform1i(prog.mesh.smooth, s.shading == Shading::Smooth ? 1 : 0);
+        gl.BindVertexArray(m.vao);
+        if (s.wireframe) {
+            gl.Enable(GL_POLYGON_OFFSET_FILL);
+            gl.PolygonOffset(1.0f, 1.0f);
+        }
+        gl.DrawElements(GL_TRIANGLES, m.index_count, GL_UNSIGNED_INT, nullptr);
+        gl.Disable(GL_POLYGON_OFFSET_FILL);
+    }
+    if (s.wireframe || s.points) {
+        use_line_program(proj * mv, s.point_size, true);
+        gl.BindVertexArray(m.vao);
+        if (s.wireframe) {
+            gl.VertexAttrib4f(detail::kColor, s.wire_color.r, s.wire_color.g, s.wire_color.b, s.wire_color.a);
+            gl.PolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+            gl.DrawElements(GL_TRIANGLES, m.index_count, GL_UNSIGNED_INT, nullptr);
+            gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        }
+        if (s.points) {
+            gl.VertexAttrib4f(detail::kColor, s.point_color.r, s.point_color.g, s.point_color.b, s.point_color.a);
+            gl.DrawArrays(GL_POINTS, 0, m.vertex_count);
+        }
+    }
+}
+
+void Renderer::Impl::draw_meshes(const Frame& f, bool transparent) {
+    for (const MeshItem& item : f.meshes) {
+        if ((item.style.opacity < 1.0f) != transparent) continue;
+        auto it = meshes.find(item.mesh.id);
+        if (it == meshes.end()) throw std::invalid_argument("Renderer::draw: unknown mesh handle");
+        draw_mesh_faces(it->second, item);
+    }
+}
+
+void Renderer::Impl::begin_spheres(const Eigen::Matrix4f& model_view) {
+    gl.UseProgram(prog.sphere.id);
+    gl.UniformMatrix4fv(prog.sphere.model_view, 1, GL_FALSE, model_view.data());
+    gl.UniformMatrix4fv(prog.sphere.projection, 1, GL_FALSE, proj.data());
+    gl.Uniform1i(prog.sphere.ortho, ortho ? 1 : 0);
+    gl.Uniform1i(prog.sphere.override_color, 0);
+}
+
+// Instanced draw of spheres [first, first + count) of the buffer bound to `vao`.
+void Renderer::Impl::draw_sphere_range(GLuint vao, GLuint vbo, uint32_t first, uint32_t count) {
+    if (count == 0) return;
+    gl.BindVertexArray(vao);
+    // Base instance is GL 4.2; point the instance attributes at the range instead.
+    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
+    const size_t offset = size_t(first) * sizeof(GpuSphere);
+    gl.VertexAttribPointer(detail::kSphere, 4, GL_FLOAT, GL_FALSE, sizeof(GpuSphere), reinterpret_cast<void*>(offset));
+    gl.VertexAttribPointer(detail::kColor, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(GpuSphere),
+                           reinterpret_cast<void*>(offset + offsetof(GpuSphere, rgba)));
+    gl.DrawArraysInstanced(GL_TRIANGLES, 0, 3, GLsizei(count));
+}
+
+void Renderer::Impl::draw_sphere_items(const Frame& f) {
+    for (const SphereItem& item : f.spheres) {
+        auto it = sphere_sets.find(item.spheres.id);
+        if (it == sphere_sets.end()) throw std::invalid_argument("Renderer::draw: unknown sphere-set handle");
+        const GpuSphereSet& s = it->second;
+        if (item.first >= s.count) continue;
+        const uint32_t count = std::min<uint32_t>(item.count, s.count - item.first);
+        begin_spheres(view * item.pose.matrix());
+        if (item.color) {
+            gl.Uniform1i(prog.sphere.override_color, 1);
+            gl.Uniform4f(prog.sphere.color, item.color->r, item.color->g, item.color->b, item.color->a);
+        }
+        draw_sphere_range(s.vao, s.vbo, item.first, count);
+    }
+}
+
+} // namespace spt::render

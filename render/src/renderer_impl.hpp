@@ -1,0 +1,103 @@
+#pragma once
+// Renderer::Impl, shared by the renderer's files: its GL objects, per-draw state and draw passes.
+#include "gl_functions.hpp"
+#include "shaders.hpp"
+#include "spt/render/renderer.hpp"
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace spt::render {
+
+struct Renderer::Impl {
+    // One solid-sphere instance as the GPU reads it (20 bytes).
+    struct GpuSphere {
+        float center[3];
+        float radius;
+        uint8_t rgba[4];
+    };
+    static_assert(sizeof(GpuSphere) == 20, "GpuSphere layout");
+
+    // One line or point vertex (16 bytes).
+    struct LineVertex {
+        float p[3];
+        uint8_t rgba[4];
+    };
+    static_assert(sizeof(LineVertex) == 16, "LineVertex layout");
+
+    // An uploaded mesh: interleaved position + normal, 32-bit indices; bounds in the object frame.
+    struct GpuMesh {
+        GLuint vao = 0, vbo = 0, ebo = 0;
+        GLsizei index_count = 0, vertex_count = 0;
+        Bounds bounds;
+    };
+    // An uploaded sphere set: GpuSphere instances.
+    struct GpuSphereSet {
+        GLuint vao = 0, vbo = 0;
+        uint32_t count = 0;
+        Bounds bounds; // of the spheres, object frame
+    };
+
+    // Segments of each wire circle (a full turn).
+    static constexpr int kCircleSegments = 64;
+
+    // A sphere and its colour as the GPU reads them.
+    static GpuSphere to_gpu(const SphereInstance& s);
+    // Appends a line/point vertex at p (frame of the matrix it is drawn with).
+    static void push_line_vertex(std::vector<LineVertex>& v, const Eigen::Vector3f& p, const Color& c);
+
+    detail::GlFunctions gl;
+    detail::Programs prog;
+    std::string renderer_name;
+
+    std::map<uint32_t, GpuMesh> meshes;
+    std::map<uint32_t, GpuSphereSet> sphere_sets;
+    uint32_t next_id = 1;
+
+    GLuint impostor_vbo = 0; // impostor corners: one triangle around the unit disc
+    GLuint circle_vbo = 0; // 4 circles as GL_LINES
+    GLuint line_vao = 0, line_vbo = 0;     // streamed lines and points
+    GLuint scratch_set_vao = 0, scratch_set_vbo = 0; // streamed solid spheres (collision pairs)
+    GLuint wire_vao = 0, wire_vbo = 0;     // streamed wire-sphere instances
+
+    // Per-draw state.
+    Eigen::Matrix4f view = Eigen::Matrix4f::Identity();
+    Eigen::Matrix4f proj = Eigen::Matrix4f::Identity();
+    bool ortho = false;
+
+    // GPU objects and uploads (renderer_resources.cpp).
+    explicit Impl(const ProcLoader& load);
+    ~Impl();
+    void set_instance_attributes();
+    void make_instanced_vao(GLuint& vao, GLuint& vbo, GLuint shape_vbo, int components);
+    void make_sphere_vao(GLuint& vao, GLuint& vbo);
+    void free_mesh(GpuMesh& m);
+    void free_set(GpuSphereSet& s);
+    void upload_spheres(GpuSphereSet& s, const std::vector<SphereInstance>& spheres);
+    void stream_lines(const std::vector<LineVertex>& v);
+    void use_line_program(const Eigen::Matrix4f& mvp, float point_size = 1, bool round = false);
+    void draw_lines(const std::vector<LineVertex>& v, GLenum mode, float point_size = 1, bool round = false);
+
+    // The scene: ground grid, meshes, sampling spheres (draw_scene.cpp).
+    void draw_grid(const Bounds& b, float ground);
+    void draw_mesh_faces(const GpuMesh& m, const MeshItem& item);
+    void draw_meshes(const Frame& f, bool transparent);
+    void begin_spheres(const Eigen::Matrix4f& model_view);
+    void draw_sphere_range(GLuint vao, GLuint vbo, uint32_t first, uint32_t count);
+    void draw_sphere_items(const Frame& f);
+
+    // Marks over the scene: collision pairs, trails, wire spheres, axis gizmo (draw_overlays.cpp).
+    float scene_diameter(const Bounds& b) const;
+    void draw_collision_spheres(const CollisionOverlay& c);
+    void draw_collision_marks(const CollisionOverlay& c, const Bounds& b);
+    void draw_trails(const Frame& f);
+    void draw_wire_spheres(const Frame& f, bool outlines);
+    void draw_gizmo(const Viewport& vp);
+
+    // One view of a frame: GL state and the order of the passes (renderer_frame.cpp).
+    Bounds solid_bounds(const Frame& f) const;
+    void draw(const Frame& f, const Camera& cam, const Viewport& vp, GLuint fbo, const Bounds& b);
+};
+
+} // namespace spt::render
