@@ -8,20 +8,33 @@
 namespace bench {
 
 struct FclPeer::Impl {
-    std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> model;
     std::unique_ptr<fcl::CollisionObjectd> a, b;
 };
 
-FclPeer::FclPeer(const spt::TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
+namespace {
+
+std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl_model(const spt::TriangleMesh& mesh) {
     std::vector<fcl::Vector3d> v(mesh.positions.begin(), mesh.positions.end());
     std::vector<fcl::Triangle> t;
     for (const auto& tri : mesh.triangles) t.emplace_back(tri[0], tri[1], tri[2]);
-    impl_->model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-    impl_->model->beginModel();
-    impl_->model->addSubModel(v, t);
-    impl_->model->endModel();
-    impl_->a = std::make_unique<fcl::CollisionObjectd>(impl_->model, fcl::Transform3d::Identity());
-    impl_->b = std::make_unique<fcl::CollisionObjectd>(impl_->model, fcl::Transform3d::Identity());
+    auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+    model->beginModel();
+    model->addSubModel(v, t);
+    model->endModel();
+    return model;
+}
+
+} // namespace
+
+FclPeer::FclPeer(const spt::TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
+    const auto model = fcl_model(mesh);
+    impl_->a = std::make_unique<fcl::CollisionObjectd>(model, fcl::Transform3d::Identity());
+    impl_->b = std::make_unique<fcl::CollisionObjectd>(model, fcl::Transform3d::Identity());
+}
+
+FclPeer::FclPeer(const spt::TriangleMesh& a, const spt::TriangleMesh& b) : impl_(std::make_unique<Impl>()) {
+    impl_->a = std::make_unique<fcl::CollisionObjectd>(fcl_model(a), fcl::Transform3d::Identity());
+    impl_->b = std::make_unique<fcl::CollisionObjectd>(fcl_model(b), fcl::Transform3d::Identity());
 }
 
 FclPeer::~FclPeer() = default;

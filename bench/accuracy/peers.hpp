@@ -7,10 +7,13 @@
 
 namespace bench {
 
-/// FCL 0.7 mesh-mesh boolean query on OBBRSS trees of the same mesh for A and B.
+/// FCL 0.7 mesh-mesh boolean query on OBBRSS trees of A's and B's meshes.
 class FclPeer {
 public:
+    /// The same mesh for A and B.
     explicit FclPeer(const spt::TriangleMesh& mesh);
+    /// Mesh `a` for A (at the identity) and `b` for B.
+    FclPeer(const spt::TriangleMesh& a, const spt::TriangleMesh& b);
     ~FclPeer();
     /// True if the triangle surfaces intersect.
     bool collide(const spt::Pose& b_in_a) const;

@@ -7,11 +7,11 @@
 namespace spt {
 namespace {
 
-// Walks node i's subtree: checks every triangle below lies in the node's sphere and slab.
+// Walks node i's subtree: checks every triangle below lies in the node's sphere and box.
 void check_subtree(const ExactData& e, uint32_t i, std::vector<int>& seen, int& leaves) {
     const TriangleNode& n = e.tri_nodes[i];
     const Eigen::Vector3d c(n.center[0], n.center[1], n.center[2]);
-    const Eigen::Vector3d sn(n.slab.n[0], n.slab.n[1], n.slab.n[2]);
+    const Eigen::Vector3d bc(n.box.center[0], n.box.center[1], n.box.center[2]);
     std::vector<uint32_t> stack{i};
     while (!stack.empty()) {
         const TriangleNode& m = e.tri_nodes[stack.back()];
@@ -24,12 +24,15 @@ void check_subtree(const ExactData& e, uint32_t i, std::vector<int>& seen, int& 
             for (uint32_t v : e.triangles[e.tri_order[k]]) {
                 const Eigen::Vector3d& p = e.positions[v];
                 EXPECT_LE((p - c).norm(), double(n.radius)) << "node " << i;
-                EXPECT_LE(std::abs(sn.dot(p) - double(n.slab.d)), double(n.slab.h)) << "node " << i;
+                for (int k = 0; k < 3; ++k) {
+                    const Eigen::Vector3d axis(n.box.axis[k][0], n.box.axis[k][1], n.box.axis[k][2]);
+                    EXPECT_LE(std::abs(axis.dot(p - bc)), double(n.box.half[k])) << "node " << i;
+                }
             }
     }
     if (n.is_leaf()) {
         ++leaves;
-        EXPECT_LE(n.count, 4u);
+        EXPECT_EQ(n.count, 1u); // one triangle a leaf: the boxes do the pruning
         for (uint32_t k = n.first; k < n.first + n.count; ++k) ++seen[e.tri_order[k]];
     } else {
         check_subtree(e, i + 1, seen, leaves);

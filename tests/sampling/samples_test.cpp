@@ -130,19 +130,14 @@ TEST(RadiusLimiter, OpenSheetCapsRadiusAtHalfTheAllowance) {
     const TriangleMesh sheet = make_sheet(2, 4);
     const double allowance = 0.01;
     const RadiusLimiter limiter(sheet, allowance);
-    EXPECT_TRUE(limiter.back_exposed({0.1, 0.2, 0}, {0, 0, 1}, 0));
+    EXPECT_TRUE(limiter.on_open_part(0));
     EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, 0), allowance / 2, 1e-6);
 }
 
-TEST(RadiusLimiter, ClosedBoxIsNeverTestedForAnExposedBack) {
-    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 2), "cube");
-    const RadiusLimiter limiter(m.mesh, 0.001);
-    EXPECT_FALSE(limiter.back_exposed({0, 0, 1}, {0, 0, 1}, 0));
-}
-
-TEST(RadiusLimiter, OpenBoxBottomSeenThroughTheOpeningIsExposedButAClosedPartBesideItIsNot) {
-    // A box without its top face, and a closed cube elsewhere in the same mesh: only the
-    // open part is treated as a sheet.
+TEST(RadiusLimiter, OpenBoxInventsNoSolidButAClosedCubeBesideItKeepsItsRadii) {
+    // A box without its top face, and a closed cube elsewhere in the same mesh: the open
+    // box's inside is not a solid (its spheres stay within the allowance, even where walls
+    // hide its back), the cube's is.
     auto raw = meshgen::box(2, 2, 2, 1);
     auto cube = meshgen::box(1, 1, 1, 1);
     std::vector<Eigen::Vector3d> p = raw.positions;
@@ -156,11 +151,17 @@ TEST(RadiusLimiter, OpenBoxBottomSeenThroughTheOpeningIsExposedButAClosedPartBes
     for (const auto& q : cube.positions) p.push_back(q + Eigen::Vector3d(5, 0, 0));
     for (auto tri : cube.triangles) t.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
     const ImportedMesh m = spt::prepare_mesh("cup and cube", std::move(p), std::move(t));
-    const RadiusLimiter limiter(m.mesh, 0.01);
+    const double allowance = 0.01;
+    const RadiusLimiter limiter(m.mesh, allowance);
     // Find a vertex of each part (the import may reorder vertices).
     uint32_t cup_vertex = 0, cube_vertex = 0;
     for (uint32_t v = 0; v < m.mesh.positions.size(); ++v)
         (m.mesh.positions[v].x() > 3 ? cube_vertex : cup_vertex) = v;
-    EXPECT_TRUE(limiter.back_exposed({0.2, 0.1, -1}, {0, 0, -1}, cup_vertex));
-    EXPECT_FALSE(limiter.back_exposed({5.1, 0.1, -0.5}, {0, 0, -1}, cube_vertex));
+    EXPECT_TRUE(limiter.on_open_part(cup_vertex));
+    EXPECT_FALSE(limiter.on_open_part(cube_vertex));
+    // The cup's floor, seen from inside (normal +z into the cup): a sphere below it would lie
+    // outside the cup; a side wall's back is enclosed by the other walls, and still capped.
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.2, 0.1, -1), {0, 0, -1}, 0.5f, cup_vertex), allowance / 2, 1e-6);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(1, 0.1, 0), {1, 0, 0}, 0.5f, cup_vertex), allowance / 2, 1e-6);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(5.5, 0.1, 0), {1, 0, 0}, 0.3f, cube_vertex), 0.3f, 0.3f * 0.011);
 }

@@ -1,7 +1,8 @@
 // Level `exact`: the two triangle trees walked against each other, pruned by
-// bounding spheres and slabs, leaves decided by exact triangle-triangle tests.
+// bounding spheres and oriented boxes, leaves decided by exact triangle-triangle tests.
 #include "query/query_run.hpp"
 #include "query/exact_data.hpp"
+#include "geometry/obb.hpp"
 #include "geometry/tri_tri.hpp"
 
 namespace spt {
@@ -9,7 +10,7 @@ namespace spt {
 const Eigen::Vector3d& QueryRun::b_vertex(uint32_t v) {
     if (s.vert_stamp[v] != s.epoch) {
         s.vert_stamp[v] = s.epoch;
-        s.bverts[v] = f.Rd * B.exact().positions[v] + f.td;
+        s.bverts[v] = f.Rd * EB.positions[v] + f.td;
     }
     return s.bverts[v];
 }
@@ -18,34 +19,47 @@ const float* QueryRun::b_tri_sphere(uint32_t tri) {
     float* out = &s.btri[4 * size_t(tri)];
     if (s.tri_stamp[tri] != s.epoch) {
         s.tri_stamp[tri] = s.epoch;
-        const float* in = &B.exact().tri_sphere[4 * size_t(tri)];
+        const float* in = &EB.tri_sphere[4 * size_t(tri)];
         const Eigen::Vector3f c = f.R * Eigen::Vector3f(in[0], in[1], in[2]) + f.t;
         out[0] = c.x(), out[1] = c.y(), out[2] = c.z(), out[3] = in[3];
     }
     return out;
 }
 
+const detail::PlacedTriangleNode& QueryRun::b_tri_node(uint32_t j) {
+    detail::PlacedTriangleNode& out = s.bnodes[j];
+    if (s.bnode_stamp[j] != s.epoch) {
+        s.bnode_stamp[j] = s.epoch;
+        const TriangleNode& n = EB.tri_nodes[j];
+        const Eigen::Vector3f c = f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t;
+        out.center[0] = c.x(), out.center[1] = c.y(), out.center[2] = c.z();
+        out.box = placed(n.box, f.R, f.t);
+    }
+    return out;
+}
+
 bool QueryRun::triangle_pair(uint32_t ta, uint32_t tb) {
-    const float* sa = &A.exact().tri_sphere[4 * size_t(ta)];
+    const float* sa = &EA.tri_sphere[4 * size_t(ta)];
     const float* sb = b_tri_sphere(tb);
     const float dx = sa[0] - sb[0], dy = sa[1] - sb[1], dz = sa[2] - sb[2];
     const float reach = sa[3] + sb[3] + f.margin;
     if (dx * dx + dy * dy + dz * dz > reach * reach) return false;
     ++res.counters.triangle_tests;
-    const auto& pa = A.exact().positions;
-    const Triangle& x = A.exact().triangles[ta];
-    const Triangle& y = B.exact().triangles[tb];
+    const auto& pa = EA.positions;
+    const Triangle& x = EA.triangles[ta];
+    const Triangle& y = EB.triangles[tb];
     return triangles_intersect(pa[x[0]], pa[x[1]], pa[x[2]], b_vertex(y[0]), b_vertex(y[1]), b_vertex(y[2]));
 }
 
 void QueryRun::run_triangles() {
-    const ExactData &ea = A.exact(), &eb = B.exact();
+    const ExactData &ea = EA, &eb = EB;
     const auto &an = ea.tri_nodes, &bn = eb.tri_nodes;
     if (an.empty() || bn.empty()) return;
     const bool any = o.mode != QueryMode::All; // deepest asks the triangles only whether they meet
     auto centre_a = [&](uint32_t i) { return Eigen::Vector3f(an[i].center[0], an[i].center[1], an[i].center[2]); };
     auto centre_b = [&](uint32_t j) {
-        return Eigen::Vector3f(f.R * Eigen::Vector3f(bn[j].center[0], bn[j].center[1], bn[j].center[2]) + f.t);
+        const float* c = b_tri_node(j).center;
+        return Eigen::Vector3f(c[0], c[1], c[2]);
     };
     auto& stack = s.stack;
     stack.clear();
@@ -59,10 +73,8 @@ void QueryRun::run_triangles() {
         const float prune = na.radius + nb.radius + f.margin;
         ++res.counters.bound_tests;
         if ((ca - cb).squaredNorm() > prune * prune) continue;
-        // Slabs, each in its own frame: B's sphere against A's slab, A's against B's.
         ++res.counters.bound_tests;
-        if (na.slab.separates(cb, nb.radius + f.margin)) continue;
-        if (nb.slab.separates(f.R.transpose() * (ca - f.t), na.radius + f.margin)) continue;
+        if (obbs_disjoint(na.box, b_tri_node(j).box, f.margin)) continue;
         if (na.is_leaf() && nb.is_leaf()) {
             for (uint32_t p = na.first; p < na.first + na.count; ++p)
                 for (uint32_t q = nb.first; q < nb.first + nb.count; ++q) {
@@ -76,13 +88,16 @@ void QueryRun::run_triangles() {
         // Descend the larger sphere; any takes the nearer child first.
         if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
             uint32_t near = i + 1, far = na.first;
-            if (any && (centre_a(far) - cb).norm() - an[far].radius < (centre_a(near) - cb).norm() - an[near].radius)
+            // Nearer child by power |c - p|^2 - r^2: no square roots on the way down.
+            if (any && (centre_a(far) - cb).squaredNorm() - an[far].radius * an[far].radius <
+                           (centre_a(near) - cb).squaredNorm() - an[near].radius * an[near].radius)
                 std::swap(near, far);
             stack.push_back({far, j});
             stack.push_back({near, j});
         } else {
             uint32_t near = j + 1, far = nb.first;
-            if (any && (centre_b(far) - ca).norm() - bn[far].radius < (centre_b(near) - ca).norm() - bn[near].radius)
+            if (any && (centre_b(far) - ca).squaredNorm() - bn[far].radius * bn[far].radius <
+                           (centre_b(near) - ca).squaredNorm() - bn[near].radius * bn[near].radius)
                 std::swap(near, far);
             stack.push_back({i, far});
             stack.push_back({i, near});

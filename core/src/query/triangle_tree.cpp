@@ -1,5 +1,5 @@
 // Top-down median split on triangle centroids, longest axis first; each node gets a
-// bounding sphere and a slab. Deterministic: std::nth_element with an index tie-break.
+// bounding sphere and an oriented box. Deterministic: std::nth_element with an index tie-break.
 #include "query/triangle_tree.hpp"
 #include "base/float_round.hpp"
 #include "geometry/tri_tri.hpp"
@@ -9,14 +9,14 @@
 namespace spt::detail {
 namespace {
 
-constexpr uint32_t kLeafTriangles = 4;
+constexpr uint32_t kLeafTriangles = 1;
 
 struct Builder {
     ExactData& e;
     std::vector<Eigen::Vector3d> centroid;
     std::vector<Eigen::Vector3d> corners; // reused per node
 
-    // Bounding sphere and slab of tri_order[begin, end).
+    // Bounding sphere and box of tri_order[begin, end).
     TriangleNode bound(uint32_t begin, uint32_t end) {
         corners.clear();
         Eigen::AlignedBox3d box;
@@ -28,7 +28,7 @@ struct Builder {
         double r = 0;
         for (const auto& p : corners) r = std::max(r, (p - fc).norm());
         n.radius = round_up(r);
-        n.slab = fit_slab(corners);
+        n.box = fit_obb(corners);
         return n;
     }
 
@@ -39,14 +39,16 @@ struct Builder {
             e.tri_nodes[self].first = begin, e.tri_nodes[self].count = end - begin;
             return;
         }
-        Eigen::AlignedBox3d box;
-        for (uint32_t k = begin; k < end; ++k) box.extend(centroid[e.tri_order[k]]);
-        int axis = 0;
-        box.sizes().maxCoeff(&axis);
+        // Split across the box's longest side, at the median centroid along it.
+        const Obb& box = e.tri_nodes[self].box;
+        int longest = 0;
+        for (int k = 1; k < 3; ++k)
+            if (box.half[k] > box.half[longest]) longest = k;
+        const Eigen::Vector3d axis(box.axis[longest][0], box.axis[longest][1], box.axis[longest][2]);
         const uint32_t mid = begin + (end - begin) / 2;
         std::nth_element(e.tri_order.begin() + begin, e.tri_order.begin() + mid, e.tri_order.begin() + end,
                          [&](uint32_t a, uint32_t b) {
-                             const double ca = centroid[a][axis], cb = centroid[b][axis];
+                             const double ca = axis.dot(centroid[a]), cb = axis.dot(centroid[b]);
                              return ca < cb || (ca == cb && a < b);
                          });
         build(begin, mid); // left child follows its parent

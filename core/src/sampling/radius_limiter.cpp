@@ -15,17 +15,6 @@ RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
     for (size_t f = 0; known && f < mesh.triangles.size(); ++f)
         if (mesh.on_open_part[f])
             for (uint32_t v : mesh.triangles[f]) open_part_[v] = 1;
-    ray_length_ = 4 * mesh.diagonal() + 1e-300; // from any point on the mesh to beyond it
-}
-
-bool RadiusLimiter::back_exposed(const Eigen::Vector3d& p, const Eigen::Vector3d& n, uint32_t vertex) const {
-    if (vertex >= open_part_.size() || !open_part_[vertex]) return false;
-    const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
-    const double c = std::sqrt(0.5);
-    const Eigen::Vector3d dirs[] = {-n, c * (-n + t1), c * (-n - t1), c * (-n + t2), c * (-n - t2)};
-    for (const auto& d : dirs)
-        if (!bvh_->segment_hits(p, p + ray_length_ * d, 1e-9)) return true;
-    return false;
 }
 
 RadiusLimiter::~RadiusLimiter() = default;
@@ -44,7 +33,9 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
 
 float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, uint32_t vertex) const {
     const Eigen::Vector3d n = nf.cast<double>();
-    if (back_exposed(p, n, vertex)) r_max = std::min(r_max, float(protrusion_ / 2));
+    // Where inside and outside are not defined, no solid may be invented: the spheres of an
+    // open part stay within the allowance of its surface, on both sides.
+    if (on_open_part(vertex)) r_max = std::min(r_max, float(protrusion_ / 2));
     // Protrusion grows with r (a centre that passes through a thin part counts as outside),
     // so the largest allowed radius is found by bisection.
     if (!protrudes(p, n, r_max)) return r_max;

@@ -13,10 +13,10 @@ class TriangleBvh;
 
 /// Limits sampling-sphere radii so that no sphere pokes out of the mesh by more than a
 /// protrusion allowance: a sphere wider than a thin part, or than a sharp edge allows,
-/// would report contacts that are not there. On an open sheet (a part with boundary or
-/// non-manifold edges whose back side can be seen from outside) the sphere, centred
-/// behind the surface, pokes out of the back by its diameter: there the radius is capped
-/// at half the allowance.
+/// would report contacts that are not there. On an open part (faces joined by edges with a
+/// boundary or non-manifold edge: a sheet, an open box, a soup) inside and outside are not
+/// defined, and a sphere behind the surface would invent a solid there: its radius is
+/// capped at half the allowance, so it pokes out of the back by at most the allowance.
 class RadiusLimiter {
 public:
     /// Indexes `mesh` (kept by reference); `protrusion` in model units, > 0.
@@ -28,10 +28,8 @@ public:
     /// p in the mesh's object frame; `vertex` is a mesh vertex of the sample's face (or the
     /// sample's own vertex).
     float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, uint32_t vertex) const;
-    /// True if the back of the surface at (p, n) can be seen from outside the mesh: a ray
-    /// from p into the back half-space (along -n or 45 degrees off it) leaves the mesh
-    /// without crossing a face. Only vertices of parts with boundary or non-manifold edges are tested.
-    bool back_exposed(const Eigen::Vector3d& p, const Eigen::Vector3d& n, uint32_t vertex) const;
+    /// True if `vertex` belongs to an open part (TriangleMesh::on_open_part; unknown counts as open).
+    bool on_open_part(uint32_t vertex) const { return vertex >= open_part_.size() || open_part_[vertex]; }
     /// The protrusion allowance, model units.
     double protrusion() const { return protrusion_; }
     /// The mesh being indexed.
@@ -42,7 +40,6 @@ private:
     const TriangleMesh& mesh_;
     std::unique_ptr<detail::TriangleBvh> bvh_;
     double protrusion_;
-    double ray_length_ = 0;
     std::vector<uint8_t> open_part_; // per vertex: one of its faces is on an open part (TriangleMesh::on_open_part)
 };
 

@@ -1,0 +1,85 @@
+// Oriented bounding boxes: principal-axis fit rounded outwards, face-axis separation test in float.
+#include "geometry/obb.hpp"
+#include "base/float_round.hpp"
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+
+namespace spt {
+
+Obb fit_obb(const std::vector<Eigen::Vector3d>& points) {
+    Obb box;
+    if (points.empty()) return box;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& p : points) mean += p;
+    mean /= double(points.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    Eigen::Matrix3d axes = eig.eigenvectors(); // columns; a right-handed orthonormal basis
+    if (!axes.allFinite() || std::abs(axes.determinant()) < 0.5) axes.setIdentity();
+    // Extents are measured along the float axes actually stored, around the stored centre.
+    Eigen::Vector3d a[3], lo, hi;
+    for (int k = 0; k < 3; ++k) {
+        a[k] = detail::float_rounded(axes.col(k).normalized());
+        lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];
+        for (const auto& p : points) {
+            const double v = a[k].dot(p);
+            lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v);
+        }
+    }
+    // Centre from the middle of each extent; then every point's offset along each axis.
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) centre += 0.5 * (lo[k] + hi[k]) * a[k];
+    const Eigen::Vector3d c = detail::float_rounded(centre);
+    for (int k = 0; k < 3; ++k) {
+        double h = 0;
+        for (const auto& p : points) h = std::max(h, std::abs(a[k].dot(p - c)));
+        box.center[k] = float(c[k]);
+        for (int j = 0; j < 3; ++j) box.axis[k][j] = float(a[k][j]);
+        box.half[k] = detail::round_up(h);
+    }
+    return box;
+}
+
+Obb placed(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t) {
+    Obb out = b;
+    const Eigen::Vector3f c = R * Eigen::Vector3f(b.center[0], b.center[1], b.center[2]) + t;
+    for (int k = 0; k < 3; ++k) {
+        out.center[k] = c[k];
+        const Eigen::Vector3f u = R * Eigen::Vector3f(b.axis[k][0], b.axis[k][1], b.axis[k][2]);
+        for (int j = 0; j < 3; ++j) out.axis[k][j] = u[j];
+    }
+    return out;
+}
+
+bool obbs_disjoint(const Obb& a, const Obb& b, float margin) {
+    if (a.half[0] < 0 || b.half[0] < 0) return true;
+    const float* ea = a.half;
+    const float* eb = b.half;
+    const float d[3] = {b.center[0] - a.center[0], b.center[1] - a.center[1], b.center[2] - a.center[2]};
+    auto dot = [](const float* u, const float* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+    // C(i, j) = A_i . B_j and the centre offset along A's axes, a row at a time: most
+    // separated pairs are told apart by one of A's own axes before the rest is computed.
+    // Only the six face axes are tried: the nine edge-edge axes of the full test (Gottschalk
+    // et al. 1996) separated too few of the pairs the spheres and faces let through to pay
+    // for themselves (exact level, robot against environment: 5.8 -> 3.6 us median). The
+    // small allowance in |C| keeps the test conservative for rounded axes.
+    float C[3][3], Abs[3][3], T[3];
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) C[i][j] = dot(a.axis[i], b.axis[j]), Abs[i][j] = std::abs(C[i][j]) + 1e-6f;
+        T[i] = dot(a.axis[i], d);
+        if (std::abs(T[i]) > ea[i] + eb[0] * Abs[i][0] + eb[1] * Abs[i][1] + eb[2] * Abs[i][2] + margin) return true;
+    }
+    for (int j = 0; j < 3; ++j) {
+        const float s = T[0] * C[0][j] + T[1] * C[1][j] + T[2] * C[2][j];
+        if (std::abs(s) > ea[0] * Abs[0][j] + ea[1] * Abs[1][j] + ea[2] * Abs[2][j] + eb[j] + margin) return true;
+    }
+    return false;
+}
+
+bool obbs_disjoint(const Obb& a, const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t, float margin) {
+    return obbs_disjoint(a, placed(b, R, t), margin);
+}
+
+} // namespace spt

@@ -1,0 +1,33 @@
+#pragma once
+/// Oriented bounding boxes of a node's triangles for the exact level. A bounding sphere
+/// cannot tell a flat patch or a thin rod from a ball; near contact only a box along the
+/// part's principal axes can prune such pairs, as FCL's OBB trees do (docs/queries.md).
+#include <Eigen/Core>
+#include <vector>
+
+namespace spt {
+
+/// Centre, three unit axes and half extents (model units, object frame); rounded outwards
+/// so the float box still holds every double point it was fitted to.
+struct Obb {
+    float center[3] = {0, 0, 0};
+    float axis[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}; ///< axis[k]: unit vector of the box's k-th side
+    float half[3] = {-1, -1, -1};                         ///< half extents; negative: empty, bounds nothing
+};
+
+/// Box along the principal axes of `points`, holding every point after float rounding.
+Obb fit_obb(const std::vector<Eigen::Vector3d>& points);
+
+/// Box `b` moved by x -> R x + t (centre and axes; the half extents stay).
+Obb placed(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t);
+
+/// True if boxes `a` and `b` (one frame) are disjoint even with every extent grown by
+/// `margin`, told by a separating axis among the six face normals of the two boxes
+/// (conservative: a pair only an edge-edge axis separates is reported as overlapping).
+/// An empty box is disjoint from everything.
+bool obbs_disjoint(const Obb& a, const Obb& b, float margin);
+
+/// Same with `b` given in B's frame, placed in A's by x -> R x + t.
+bool obbs_disjoint(const Obb& a, const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t, float margin);
+
+} // namespace spt
