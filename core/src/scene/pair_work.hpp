@@ -1,6 +1,7 @@
 #pragma once
 // What a step finds about one candidate pair, written by one worker, read in pair order.
 #include "spt/query.hpp"
+#include "spt/query_scratch.hpp"
 #include <vector>
 
 namespace spt::detail {
@@ -23,10 +24,12 @@ void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionMod
                      QueryLevel level, double band, bool a_dynamic, bool b_dynamic, PairWork& w,
                      QueryScratch& scratch);
 
-/// Contact normal (world, unit, from A towards B) at the deepest pair: the surface normals of its
-/// two sampling spheres, n_a - n_b, so that a flat face gives its exact face normal. `a_moves` /
-/// `b_moves` false: that object's surface alone gives the normal (what is struck is fixed).
+/// Contact normal (world, unit, from A towards B): the depth-weighted sum of the surface normals
+/// of the overlapping sphere pairs `pairs`, n_a - n_b, each turned to face the other sphere; so a
+/// flat face gives its exact face normal. `a_moves` / `b_moves` false: that object's surface
+/// alone gives it (what is struck is fixed). `fallback` when the sum vanishes.
 Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
-                               const Contact& c, QueryLevel level, bool a_moves, bool b_moves);
+                               const std::vector<SpherePair>& pairs, const Eigen::Vector3d& fallback, bool a_moves,
+                               bool b_moves);
 
 } // namespace spt::detail
