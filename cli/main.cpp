@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     add(spt::cli::add_convert_command);
     add(spt::cli::add_info_command);
     add(spt::cli::add_query_command);
+    add(spt::cli::add_simulate_command);
 #ifdef SPT_HAVE_RENDER
     add(spt::cli::add_render_command);
 #endif

@@ -2,6 +2,7 @@
 /// The whole public API of the spt core library in one include: meshes and import,
 /// conversion to sampling trees, the .spt file, collision models, queries, response
 /// and continuous detection. Link spt::core (find_package(spt)).
+#include "spt/broad_phase.hpp"
 #include "spt/ccd.hpp"
 #include "spt/collision_model.hpp"
 #include "spt/compact_tree.hpp"
@@ -15,6 +16,8 @@
 #include "spt/response.hpp"
 #include "spt/samples.hpp"
 #include "spt/sampling_tree.hpp"
+#include "spt/scene.hpp"
+#include "spt/simulation.hpp"
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"
 #include "spt/version.hpp"

@@ -1,0 +1,99 @@
+#pragma once
+/// A stepping simulation of a scene that runs the code of the listed effects only
+/// (docs/scenes.md). Kinematic: objects move by velocities and paths, collisions are
+/// found by the broad phase and sampling-tree queries, and `response` moves objects
+/// back along their motion (paper §3-4-3); it is not a constraint solver. Deterministic
+/// for any number of threads. World frame, model units, seconds.
+#include "spt/broad_phase.hpp"
+#include "spt/query_scratch.hpp"
+#include "spt/scene.hpp"
+#include <memory>
+#include <vector>
+
+namespace spt {
+
+/// Exact counts and times of one step; a stage that is off leaves its fields 0.
+struct StepCounters {
+    uint64_t candidate_pairs = 0; ///< pairs from the broad phase (contacts)
+    uint64_t colliding_pairs = 0; ///< candidate pairs that collide (or, with ccd, touch within the step)
+    uint64_t node_pairs = 0;      ///< node pairs of every contact, exact, depth, pairs and ccd query
+    uint64_t sphere_tests = 0;    ///< sampling-sphere pair tests of the same queries
+    uint64_t triangle_tests = 0;  ///< exact triangle tests (level or effect exact)
+    uint64_t depth_queries = 0;   ///< deepest-pair queries (depth)
+    uint64_t ccd_queries = 0;     ///< continuous queries, one per candidate pair that moved (ccd)
+    uint64_t responses = 0;       ///< colliding pairs a dynamic object of which was moved or slowed (response)
+    int64_t ns_broad = 0;         ///< nanoseconds of the broad phase
+    int64_t ns_narrow = 0;        ///< nanoseconds of the contact, exact and pairs queries
+    int64_t ns_depth = 0;         ///< nanoseconds of the depth queries
+    int64_t ns_ccd = 0;           ///< nanoseconds of the continuous queries
+    int64_t ns_response = 0;      ///< nanoseconds of the response
+};
+
+/// One colliding object pair of a step.
+struct PairContact {
+    uint32_t a = 0, b = 0;  ///< object indices, a < b
+    bool has_depth = false; ///< depth, point and normal are set (effect depth)
+    double depth = 0;       ///< deepest sphere penetration, model units (0: touching within the ccd tolerance)
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< world frame, middle of the deepest overlap
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitX(); ///< world frame, unit, from a towards b
+    bool has_toi = false;   ///< toi is set (effect ccd)
+    double toi = 1;         ///< time of impact as a fraction of the step, [0, 1]
+    std::vector<SpherePair> pairs; ///< every overlapping sphere pair (effect pairs), spheres of a's and b's trees
+};
+
+/// What one step did.
+struct StepResult {
+    int step = 0;        ///< 1 for the first step
+    double time = 0;     ///< seconds at the end of the step (step * dt)
+    StepCounters counters; ///< work done
+    std::vector<PairContact> contacts; ///< colliding pairs, in (a, b) order
+    uint64_t state_hash = 0; ///< state_hash() of the poses after the step
+};
+
+/// 64-bit FNV-1a over every pose's translation x, y, z and rotation w, x, y, z as double bits, in order.
+uint64_t state_hash(const std::vector<Pose>& poses);
+
+/// The scene in motion.
+class Simulation {
+public:
+    /// Simulates `scene` with `effects` (normally scene.effects) on `threads` threads (>= 1).
+    /// Throws Error(BadInput) if `exact` is asked of an object without a mesh.
+    Simulation(Scene scene, EffectSet effects, int threads = 1);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    /// Runs one step and returns what it did (valid until the next step).
+    const StepResult& step();
+    /// The scene simulated.
+    const Scene& scene() const { return scene_; }
+    /// The effects that run.
+    EffectSet effects() const { return effects_; }
+    /// Steps run so far.
+    int steps_done() const { return steps_; }
+    /// Poses after the last step (initial poses before the first), object order, world frame.
+    const std::vector<Pose>& poses() const { return poses_; }
+    /// Poses before the last step's response (`ghost`); equal to poses() without a response.
+    const std::vector<Pose>& ghost_poses() const { return ghost_; }
+    /// Linear velocities, world frame, model units / s (path and static objects: zero).
+    const std::vector<Eigen::Vector3d>& velocities() const { return velocity_; }
+    /// Broad-phase spheres of the last step (swept over the step with ccd).
+    const std::vector<BroadSphere>& broad_spheres() const { return spheres_; }
+
+private:
+    void move();
+    void run_contacts(StepCounters& c);
+    void respond(StepCounters& c);
+    Scene scene_;
+    EffectSet effects_;
+    int threads_;
+    int steps_ = 0;
+    std::vector<Pose> poses_, previous_, ghost_;
+    std::vector<Eigen::Vector3d> velocity_, angular_;
+    std::vector<BroadSphere> spheres_;
+    BroadPhase broad_;
+    std::vector<QueryScratch> scratch_; // one per thread
+    StepResult result_;
+};
+
+} // namespace spt

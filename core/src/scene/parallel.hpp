@@ -1,0 +1,27 @@
+#pragma once
+// Runs f(i, worker) for i in [0, n) on up to `threads` threads. Results must be written
+// per i so that the outcome does not depend on which worker ran which i.
+#include <atomic>
+#include <thread>
+#include <vector>
+
+namespace spt::detail {
+
+template <class F>
+void parallel_for(size_t n, int threads, F&& f) {
+    if (threads <= 1 || n < 2) {
+        for (size_t i = 0; i < n; ++i) f(i, 0);
+        return;
+    }
+    std::atomic<size_t> next{0};
+    auto work = [&](int w) {
+        for (size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) f(i, w);
+    };
+    std::vector<std::thread> pool;
+    const int count = int(std::min<size_t>(size_t(threads), n));
+    for (int w = 1; w < count; ++w) pool.emplace_back(work, w);
+    work(0);
+    for (std::thread& t : pool) t.join();
+}
+
+} // namespace spt::detail

@@ -1,0 +1,212 @@
+// A step: motion, broad phase, continuous and discrete contact queries, depth and pairs;
+// each stage runs only when its effect is listed.
+#include "spt/simulation.hpp"
+#include "base/hash.hpp"
+#include "scene/parallel.hpp"
+#include "scene/pair_work.hpp"
+#include "spt/ccd.hpp"
+#include "spt/error.hpp"
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+namespace spt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+int64_t ns_since(Clock::time_point t0) {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
+}
+
+bool same_pose(const Pose& p, const Pose& q) {
+    return p.translation == q.translation && p.rotation.coeffs() == q.rotation.coeffs();
+}
+
+void add(QueryCounters& to, const QueryCounters& c) {
+    to.node_pairs += c.node_pairs, to.bound_tests += c.bound_tests, to.sphere_tests += c.sphere_tests;
+    to.triangle_tests += c.triangle_tests;
+}
+
+} // namespace
+
+uint64_t state_hash(const std::vector<Pose>& poses) {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const Pose& p : poses) {
+        const double v[7] = {p.translation.x(), p.translation.y(), p.translation.z(), p.rotation.w(),
+                             p.rotation.x(),    p.rotation.y(),    p.rotation.z()};
+        h = detail::fnv1a(v, sizeof v, h);
+    }
+    return h;
+}
+
+Simulation::Simulation(Scene scene, EffectSet effects, int threads)
+    : scene_(std::move(scene)), effects_(effects), threads_(std::max(1, threads)) {
+    const bool exact = effects_.has(Effect::Exact) || scene_.level == QueryLevel::Exact;
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+        const SceneObject& o = scene_.objects[i];
+        if (!o.model) throw Error(ErrorKind::Usage, scene_.file + ": object '" + o.name + "' has no model loaded");
+        if (exact && !o.model->has_mesh())
+            throw Error(ErrorKind::BadInput, scene_.file + ": at /objects/" + std::to_string(i) +
+                                                 "/model: the exact level needs the mesh; a .spt file holds no triangles");
+        poses_.push_back(o.pose);
+        velocity_.push_back(o.motion == MotionKind::Velocity ? o.velocity : Eigen::Vector3d::Zero());
+        angular_.push_back(o.motion == MotionKind::Velocity ? o.angular_velocity : Eigen::Vector3d::Zero());
+    }
+    previous_ = ghost_ = poses_;
+    scratch_.resize(size_t(threads_));
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::move() {
+    const double dt = scene_.dt, t1 = double(steps_ + 1) * dt;
+    const bool gravity = effects_.has(Effect::Gravity);
+    for (size_t i = 0; i < poses_.size(); ++i) {
+        const SceneObject& o = scene_.objects[i];
+        if (o.motion == MotionKind::Path) {
+            poses_[i] = path_pose(o.path, t1);
+        } else if (o.motion == MotionKind::Velocity) {
+            // Semi-implicit Euler: the velocity the step ends with moves the object.
+            if (gravity) velocity_[i] += scene_.gravity * dt;
+            poses_[i].translation += velocity_[i] * dt;
+            const double w = angular_[i].norm();
+            if (w > 0)
+                poses_[i].rotation =
+                    (Eigen::Quaterniond(Eigen::AngleAxisd(w * dt, angular_[i] / w)) * poses_[i].rotation).normalized();
+        }
+    }
+}
+
+const StepResult& Simulation::step() {
+    StepResult& r = result_;
+    r.contacts.clear();
+    r.counters = {};
+    previous_ = poses_;
+    if (effects_.has(Effect::Motion)) move();
+    ++steps_;
+    r.step = steps_;
+    r.time = double(steps_) * scene_.dt;
+    if (effects_.has(Effect::Contacts)) run_contacts(r.counters);
+    ghost_ = poses_;
+    if (effects_.has(Effect::Response)) respond(r.counters);
+    r.state_hash = state_hash(poses_);
+    return r;
+}
+
+void Simulation::run_contacts(StepCounters& c) {
+    const size_t n = poses_.size();
+    const bool ccd = effects_.has(Effect::Ccd);
+    std::vector<uint8_t> moved(n);
+    auto t0 = Clock::now();
+    spheres_.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const SceneObject& o = scene_.objects[i];
+        moved[i] = !same_pose(poses_[i], previous_[i]);
+        BroadSphere& s = spheres_[i];
+        s.is_static = o.motion == MotionKind::Static;
+        s.center = poses_[i].apply(o.bound_center);
+        s.radius = o.bound_radius;
+        if (ccd && moved[i]) {
+            // Sphere around the path of the bounding sphere over the step (see docs/scenes.md).
+            const Eigen::Vector3d c0 = previous_[i].apply(o.bound_center);
+            s.radius += 0.5 * (s.center - c0).norm() + rotation_angle(previous_[i], poses_[i]) * o.bound_center.norm();
+            s.center = 0.5 * (s.center + c0);
+        }
+    }
+    const std::vector<CandidatePair>& cand = broad_.find(spheres_);
+    c.ns_broad = ns_since(t0);
+    c.candidate_pairs = cand.size();
+    std::vector<detail::PairWork> work(cand.size());
+    const QueryLevel level = scene_.level;
+    const QueryLevel sphere_level = level == QueryLevel::Bounds ? QueryLevel::Bounds : QueryLevel::Spheres;
+    auto model = [&](uint32_t i) -> const CollisionModel& { return *scene_.objects[i].model; };
+    auto dynamic = [&](uint32_t i) { return scene_.objects[i].motion == MotionKind::Velocity; };
+
+    if (ccd) {
+        t0 = Clock::now();
+        detail::parallel_for(cand.size(), threads_, [&](size_t k, int w) {
+            const CandidatePair p = cand[k];
+            if (!moved[p.a] && !moved[p.b]) return;
+            CcdOptions o;
+            o.level = sphere_level;
+            const CcdResult res = first_contact(model(p.a), model(p.b), relative_pose(previous_[p.a], previous_[p.b]),
+                                                relative_pose(poses_[p.a], poses_[p.b]), o, scratch_[size_t(w)]);
+            work[k].ccd_ran = true;
+            add(work[k].qc, res.counters);
+            work[k].ccd_hit = res.hit;
+            work[k].toi = res.hit ? res.toi : 1.0;
+            work[k].ccd_band = 2e-4 * model(p.b).diagonal(); // twice first_contact's default tolerance
+        });
+        // Dynamic objects stop at their earliest time of impact; paths and static objects keep their poses.
+        std::vector<double> stop(n, 1.0);
+        for (size_t k = 0; k < cand.size(); ++k) {
+            c.ccd_queries += work[k].ccd_ran;
+            if (work[k].ccd_hit)
+                for (uint32_t i : {cand[k].a, cand[k].b})
+                    if (dynamic(i)) stop[i] = std::min(stop[i], work[k].toi);
+        }
+        for (size_t i = 0; i < n; ++i)
+            if (stop[i] < 1.0) poses_[i] = interpolate(previous_[i], poses_[i], stop[i]);
+        c.ns_ccd = ns_since(t0);
+    }
+
+    t0 = Clock::now();
+    detail::parallel_for(cand.size(), threads_, [&](size_t k, int w) {
+        const CandidatePair p = cand[k];
+        QueryScratch& s = scratch_[size_t(w)];
+        QueryOptions q;
+        q.level = level;
+        const QueryResult res = collide(model(p.a), poses_[p.a], model(p.b), poses_[p.b], q, s);
+        add(work[k].qc, res.counters);
+        work[k].collide = res.collide;
+        if (res.collide && effects_.has(Effect::Exact) && level != QueryLevel::Exact) {
+            q.level = QueryLevel::Exact; // confirmed by the triangles
+            const QueryResult ex = collide(model(p.a), poses_[p.a], model(p.b), poses_[p.b], q, s);
+            add(work[k].qc, ex.counters);
+            work[k].collide = ex.collide;
+        }
+        if (effects_.has(Effect::Pairs) && (work[k].collide || work[k].ccd_hit)) {
+            q.level = sphere_level;
+            q.mode = QueryMode::All;
+            const QueryResult all = collide(model(p.a), poses_[p.a], model(p.b), poses_[p.b], q, s);
+            add(work[k].qc, all.counters);
+            work[k].pairs = s.pairs();
+        }
+    });
+    c.ns_narrow = ns_since(t0);
+
+    std::vector<size_t> colliding;
+    for (size_t k = 0; k < cand.size(); ++k)
+        if (work[k].collide || work[k].ccd_hit) colliding.push_back(k);
+    c.colliding_pairs = colliding.size();
+
+    if (effects_.has(Effect::Depth)) {
+        t0 = Clock::now();
+        detail::parallel_for(colliding.size(), threads_, [&](size_t j, int w) {
+            const size_t k = colliding[j];
+            detail::deepest_contact(model(cand[k].a), poses_[cand[k].a], model(cand[k].b), poses_[cand[k].b],
+                                    sphere_level, work[k].collide ? 0.0 : work[k].ccd_band, dynamic(cand[k].a),
+                                    dynamic(cand[k].b), work[k], scratch_[size_t(w)]);
+        });
+        c.depth_queries = colliding.size();
+        c.ns_depth = ns_since(t0);
+    }
+
+    for (const detail::PairWork& w : work) {
+        c.node_pairs += w.qc.node_pairs;
+        c.sphere_tests += w.qc.sphere_tests;
+        c.triangle_tests += w.qc.triangle_tests;
+    }
+    for (size_t k : colliding) {
+        PairContact pc;
+        pc.a = cand[k].a, pc.b = cand[k].b;
+        pc.has_depth = effects_.has(Effect::Depth);
+        if (pc.has_depth) pc.depth = work[k].depth, pc.point = work[k].point, pc.normal = work[k].normal;
+        pc.has_toi = ccd; // a pair that did not move this step was in contact from its start
+        pc.toi = work[k].ccd_ran ? work[k].toi : 0.0;
+        pc.pairs = std::move(work[k].pairs);
+        result_.contacts.push_back(std::move(pc));
+    }
+}
+
+} // namespace spt

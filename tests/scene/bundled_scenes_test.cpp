@@ -1,0 +1,92 @@
+// The bundled scenes (resources/scenes/) do what they are there to show.
+#include "spt/scene.hpp"
+#include "spt/simulation.hpp"
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace spt;
+
+Scene bundled(const std::string& name) { return load_scene(std::string(SPT_SOURCE_DIR) + "/resources/scenes/" + name); }
+
+TEST(BundledScenes, BoxSettlesOnTheFloorWithoutDriftJitterOrExplosionFor10000Steps) {
+    const Scene s = bundled("box_settle.json");
+    ASSERT_EQ(s.steps, 10000);
+    Simulation sim(s, s.effects);
+    std::vector<Pose> poses;
+    uint64_t colliding = 0;
+    for (int i = 0; i < s.steps; ++i) {
+        colliding += sim.step().counters.colliding_pairs;
+        poses.push_back(sim.poses()[1]);
+    }
+    EXPECT_GT(colliding, 9000u); // resting on the floor, touching every step
+    const Pose rest = poses.back();
+    const double diagonal = s.objects[1].model->diagonal();
+    // Rest: the unit box's bottom on the floor's top (y = 0), raised by how far the spheres poke out
+    // (tolerance / 8: 0.025 for the floor, 0.004 for the box, as the generator samples them).
+    EXPECT_GT(rest.translation.y(), 0.5);
+    EXPECT_LT(rest.translation.y(), 0.5 + 0.025 + 0.004);
+    EXPECT_NEAR(rest.translation.x(), 0.1, 1e-12); // no sideways push from a flat contact
+    EXPECT_NEAR(rest.translation.z(), -0.2, 1e-12);
+    EXPECT_NEAR(rest.rotation.angularDistance(Eigen::Quaterniond::Identity()), 0, 1e-12);
+    // From the first second on, every step within 0.1% of the diagonal of the rest pose.
+    double worst = 0;
+    for (size_t i = 100; i < poses.size(); ++i) worst = std::max(worst, (poses[i].translation - rest.translation).norm());
+    EXPECT_LE(worst, 1e-3 * diagonal);
+}
+
+TEST(BundledScenes, ThinWallStopsTheFastBallWithCcdAndNotWithout) {
+    const Scene s = bundled("thin_wall.json");
+    Simulation with(s, s.effects);
+    Simulation without(s, parse_effect_list("motion,contacts", "test"));
+    for (int i = 0; i < s.steps; ++i) with.step(), without.step();
+    const double wall_face = -0.01, ball_radius = 0.05;
+    EXPECT_LT(with.poses()[1].translation.x(), wall_face - ball_radius + 1e-3);
+    EXPECT_GT(with.poses()[1].translation.x(), wall_face - ball_radius - 0.01);
+    EXPECT_GT(without.poses()[1].translation.x(), 10.0); // passed through between two steps
+}
+
+TEST(BundledScenes, Fig8ObjectsCollideAndAreMovedBack) {
+    const Scene s = bundled("fig8.json");
+    Simulation sim(s, s.effects);
+    QueryScratch scratch;
+    uint64_t responses = 0;
+    for (int i = 0; i < s.steps; ++i) {
+        responses += sim.step().counters.responses;
+        QueryOptions q;
+        q.mode = QueryMode::Deepest;
+        const QueryResult r = collide(*s.objects[0].model, sim.poses()[0], *s.objects[1].model, sim.poses()[1], q, scratch);
+        const double tolerance = 1e-6 * (s.objects[0].model->reach() + s.objects[1].model->reach());
+        EXPECT_TRUE(!r.collide || r.deepest.depth <= tolerance) << "step " << i + 1;
+    }
+    EXPECT_GT(responses, 0u);
+}
+
+TEST(BundledScenes, WalkingFeetStrikeTheFloorAndOnlyTheFeet) {
+    const Scene s = bundled("walking.json");
+    EXPECT_EQ(s.objects[1].tree, "walk");
+    Simulation sim(s, s.effects);
+    int strikes = 0;
+    for (int i = 0; i < s.steps; ++i) {
+        const StepResult& r = sim.step();
+        for (const PairContact& c : r.contacts) {
+            ++strikes;
+            EXPECT_LT(c.point.y(), 0.05) << "step " << r.step; // at the floor: the soles, nothing higher
+            EXPECT_FALSE(c.pairs.empty());
+        }
+    }
+    EXPECT_GT(strikes, 20);
+}
+
+TEST(BundledScenes, PileHasAThousandMovingObjectsAndItsBroadPhaseIsExact) {
+    const Scene s = bundled("pile.json");
+    ASSERT_EQ(s.objects.size(), 1001u);
+    Simulation sim(s, s.effects);
+    for (int i = 0; i < 3; ++i) {
+        const StepResult& r = sim.step();
+        EXPECT_EQ(r.counters.candidate_pairs, all_overlapping_pairs(sim.broad_spheres()).size());
+        EXPECT_GT(r.counters.candidate_pairs, 1000u);
+    }
+}
+
+} // namespace

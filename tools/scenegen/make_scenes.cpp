@@ -1,0 +1,177 @@
+// Writes the scenes bundled in resources/scenes/ and the meshes and .spt files they use.
+// Usage: spt-make-scenes OUT_DIR. Scenes name the bundled meshes as ../meshes/NAME.
+#include "meshgen.hpp"
+#include "spt/convert.hpp"
+#include "spt/error.hpp"
+#include "walk_tree.hpp"
+#include <nlohmann/json.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+
+namespace {
+
+using json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+using namespace spt;
+
+// Uniform in [lo, hi) from the raw generator output, identical on every standard library.
+double uniform(std::mt19937& rng, double lo, double hi) { return lo + (hi - lo) * (double(rng()) / 4294967296.0); }
+
+json vec(double x, double y, double z) { return json::array({x, y, z}); }
+
+json object(const std::string& name, const std::string& model) { return json{{"name", name}, {"model", model}}; }
+
+json fixed(const std::string& name, const std::string& model, const json& position) {
+    json o = object(name, model);
+    o["static"] = true;
+    o["position"] = position;
+    return o;
+}
+
+// One field a line, one object a line: readable, and diffs show which object changed.
+void write_scene(const fs::path& dir, const std::string& name, const json& scene) {
+    std::ofstream out(dir / name);
+    out << "{\n";
+    for (auto it = scene.begin(); it != scene.end(); ++it) {
+        if (it.key() == "objects") continue;
+        out << "  \"" << it.key() << "\": " << it.value().dump() << ",\n";
+    }
+    out << "  \"objects\": [\n";
+    for (size_t i = 0; i < scene["objects"].size(); ++i)
+        out << "    " << scene["objects"][i].dump() << (i + 1 < scene["objects"].size() ? ",\n" : "\n");
+    out << "  ]\n}\n";
+    if (!out) throw Error(ErrorKind::CannotWrite, (dir / name).string() + ": write failed");
+}
+
+json header(double dt, int steps, std::initializer_list<const char*> effects) {
+    json s;
+    s["spt_scene"] = 1;
+    s["dt"] = dt;
+    s["steps"] = steps;
+    s["effects"] = json::array();
+    for (const char* e : effects) s["effects"].push_back(e);
+    return s;
+}
+
+// Paper Fig. 8: two objects given random motion directions towards each other, colliding and moved back.
+void fig8(const fs::path& dir) {
+    std::mt19937 rng(8);
+    json s = header(0.01, 150, {"motion", "contacts", "depth", "pairs", "response"});
+    s["response"] = {{"rule", "backtrack"}, {"restitution", 0.5}};
+    json a = object("torus", "../meshes/torus.obj"), b = object("part", "../meshes/cad_part.stl");
+    a["position"] = vec(-1.5, 0, 0), b["position"] = vec(1.5, 0.1, 0);
+    const Eigen::Vector3d da = (Eigen::Vector3d(1, uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3))).normalized();
+    const Eigen::Vector3d db = (Eigen::Vector3d(-1, uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3))).normalized();
+    a["velocity"] = vec(2 * da.x(), 2 * da.y(), 2 * da.z());
+    b["velocity"] = vec(2 * db.x(), 2 * db.y(), 2 * db.z());
+    a["angular_velocity"] = vec(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    b["angular_velocity"] = vec(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    s["objects"] = {a, b};
+    write_scene(dir, "fig8.json", s);
+}
+
+// The walking figure: a path that lifts and drops it so the feet strike the floor. Its tree
+// "walk" holds the feet as the root's left child, so most walks end two levels down.
+void walking(const fs::path& dir, const fs::path& meshes) {
+    ConvertOptions options; // faces sampled to 6 cm (3% of its height): a small file, closed at the soles
+    options.tolerance = 0.06;
+    SptDocument doc = make_document(import_mesh((meshes / "figure.obj").string()).mesh, options);
+    doc.trees.clear(); // the walk tree only
+    scenegen::add_feet_first_tree(doc, "walk", 0.08);
+    save_spt(doc, (dir / "figure_walk.spt").string());
+    json s = header(0.01, 200, {"motion", "contacts", "depth", "pairs"});
+    json walker = object("walker", "figure_walk.spt");
+    walker["tree"] = "walk";
+    json path = json::array();
+    for (int k = 0; k <= 8; ++k) {
+        const double y = k % 2 == 0 ? -0.01 : 0.06; // a foot strike every other keyframe, 1 cm deep
+        path.push_back({{"t", 0.25 * k}, {"position", vec(-1.2 + 0.3 * k, y, 0)}, {"orientation", {1, 0, 0, 0}}});
+    }
+    walker["path"] = path;
+    s["objects"] = {fixed("floor", "floor.obj", vec(0, -0.25, 0)), walker};
+    write_scene(dir, "walking.json", s);
+}
+
+// A thin wall and a fast small ball: 1 unit a step against a wall 0.02 thick.
+void thin_wall(const fs::path& dir) {
+    json s = header(0.01, 20, {"motion", "contacts", "depth", "ccd"});
+    json bullet = object("bullet", "../meshes/sphere.stl");
+    bullet["scale"] = 0.1;
+    bullet["position"] = vec(-0.7, 0.1, 0.05);
+    bullet["velocity"] = vec(100, 0, 0);
+    s["objects"] = {fixed("wall", "wall.obj", vec(0, 0, 0)), bullet};
+    write_scene(dir, "thin_wall.json", s);
+}
+
+// A box dropped on the floor, settling under gravity with the kinematic response. Both sampled
+// to a coarse tolerance, so that 10,000 steps of face-on-face contact run in seconds.
+void box_settle(const fs::path& dir, const meshgen::RawMesh& floor) {
+    ConvertOptions options;
+    options.tolerance = 0.03;
+    save_spt(make_document(meshgen::prepare(meshgen::box(1, 1, 1, 4), "crate").mesh, options),
+             (dir / "crate.spt").string());
+    options.tolerance = 0.2; // the floor: 2.5% of its side
+    save_spt(make_document(meshgen::prepare(floor, "slab").mesh, options), (dir / "slab.spt").string());
+    json s = header(0.01, 10000, {"motion", "gravity", "contacts", "depth", "response"});
+    s["response"] = {{"rule", "backtrack"}, {"restitution", 0}};
+    json box = object("box", "crate.spt");
+    box["position"] = vec(0.1, 0.8, -0.2);
+    s["objects"] = {fixed("floor", "slab.spt", vec(0, -0.25, 0)), box};
+    write_scene(dir, "box_settle.json", s);
+}
+
+// 1,000 small objects on a jittered 10 x 10 x 10 lattice above a floor: the broad phase's scene.
+// Their models are sampled at the vertices only (a few hundred spheres each).
+void pile(const fs::path& dir) {
+    ConvertOptions coarse;
+    coarse.auto_tolerance = false;
+    save_spt(make_document(meshgen::prepare(meshgen::icosphere(0.4, 2), "pebble").mesh, coarse),
+             (dir / "pebble.spt").string());
+    save_spt(make_document(meshgen::prepare(meshgen::box(0.7, 0.7, 0.7, 3), "block").mesh, coarse),
+             (dir / "block.spt").string());
+    std::mt19937 rng(1000);
+    json s = header(0.01, 300, {"motion", "gravity", "contacts", "depth", "response"});
+    s["response"] = {{"rule", "backtrack"}, {"restitution", 0.2}};
+    json objects = json::array();
+    json floor = fixed("floor", "floor.obj", vec(0, -0.5, 0));
+    floor["scale"] = 2;
+    objects.push_back(floor);
+    for (int i = 0; i < 1000; ++i) {
+        json o = object("o" + std::to_string(i), i % 3 == 0 ? "block.spt" : "pebble.spt");
+        o["position"] = vec(1.0 * (i % 10) - 4.5 + uniform(rng, -0.05, 0.05), 1.0 * (i / 100) + 0.5,
+                            1.0 * (i / 10 % 10) - 4.5 + uniform(rng, -0.05, 0.05));
+        o["velocity"] = vec(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5));
+        objects.push_back(o);
+    }
+    s["objects"] = objects;
+    write_scene(dir, "pile.json", s);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::cerr << "usage: spt-make-scenes OUT_DIR\n";
+        return 1;
+    }
+    const fs::path dir = argv[1];
+    try {
+        fs::create_directories(dir);
+        const fs::path meshes = std::string(SPT_MESHES_DIR);
+        const meshgen::RawMesh floor = meshgen::box(8, 0.5, 8, 8);
+        meshgen::write_obj(floor, (dir / "floor.obj").string());
+        meshgen::write_obj(meshgen::box(0.02, 2, 2, 8), (dir / "wall.obj").string());
+        fig8(dir);
+        walking(dir, meshes);
+        thin_wall(dir);
+        box_settle(dir, floor);
+        pile(dir);
+    } catch (const Error& e) {
+        std::cerr << e.what() << "\n";
+        return int(e.kind());
+    }
+    return 0;
+}
