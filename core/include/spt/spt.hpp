@@ -15,6 +15,7 @@
 #include "spt/response.hpp"
 #include "spt/samples.hpp"
 #include "spt/sampling_tree.hpp"
+#include "spt/selection.hpp"
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"
 #include "spt/version.hpp"
