@@ -1,5 +1,6 @@
 // load_document: .spt with its mesh checked against the recorded identity, or mesh conversion.
 #include "document_loader.hpp"
+#include "edit_commands.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include <QDir>
@@ -22,6 +23,10 @@ LoadResult load_document(const QString& path, const QString& mesh_path) {
         if (!is_spt_file(path)) {
             TriangleMesh mesh = import_mesh(path.toStdString()).mesh;
             r.doc = make_document(mesh);
+            // Authoring starts where the paper's tool does: the root holds every sample (B builds
+            // the automatic tree under any node).
+            const std::string name = r.doc->trees.front().name();
+            r.doc->trees = {unsplit_tree(name, r.doc->samples)};
             r.mesh = std::move(mesh);
             r.mesh_path = path;
             r.converted = true;

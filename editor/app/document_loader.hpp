@@ -1,6 +1,7 @@
 #pragma once
 // Opening a file for the editor, run off the UI thread: a .spt file with its mesh (found
-// beside it by the recorded name, or given), or a mesh converted with default options.
+// beside it by the recorded name, or given), or a mesh converted with default options
+// whose one tree is the unsplit root, where manual authoring starts.
 #include "spt/spt_file.hpp"
 #include <QString>
 #include <optional>

@@ -116,10 +116,9 @@ EditOutcome make_build_subtree(EditorDocument& doc, NodeId id, const BuildOption
 
 EditOutcome make_add_tree(EditorDocument& doc, const QString& name) {
     if (const QString bad = check_name(doc, name); !bad.isEmpty()) return refused(bad);
-    SamplingTree tree(name.toStdString(), uint32_t(doc.samples().size()));
-    tree.assign_radii(doc.samples(), RadiusRule{});
-    tree.compute_bounds(doc.samples(), BoundsMethod::Tight);
-    return {std::make_unique<InsertTreeCommand>(doc, std::move(tree), QString("Add tree '%1'").arg(name)), {}};
+    return {std::make_unique<InsertTreeCommand>(doc, unsplit_tree(name.toStdString(), doc.samples()),
+                                                QString("Add tree '%1'").arg(name)),
+            {}};
 }
 
 EditOutcome make_rename_tree(EditorDocument& doc, int index, const QString& name) {
@@ -148,6 +147,13 @@ EditOutcome make_delete_tree(EditorDocument& doc, int index) {
     if (index < 0 || size_t(index) >= doc.document().trees.size()) return refused(QString("no such tree"));
     if (doc.document().trees.size() == 1) return refused(QString("a document keeps at least one tree"));
     return {std::make_unique<RemoveTreeCommand>(doc, index), {}};
+}
+
+SamplingTree unsplit_tree(const std::string& name, const SampleSet& samples) {
+    SamplingTree tree(name, uint32_t(samples.size()));
+    tree.assign_radii(samples, RadiusRule{});
+    tree.compute_bounds(samples, BoundsMethod::Tight);
+    return tree;
 }
 
 QString unused_tree_name(const EditorDocument& doc, const QString& base) {

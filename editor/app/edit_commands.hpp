@@ -34,6 +34,9 @@ EditOutcome make_duplicate_tree(EditorDocument& doc, int index, const QString& n
 /// Deletes tree `index` (never the last one).
 EditOutcome make_delete_tree(EditorDocument& doc, int index);
 
+/// A tree named `name` whose root holds every sample, radius and bounds by core's defaults.
+SamplingTree unsplit_tree(const std::string& name, const SampleSet& samples);
+
 /// A name not used by any tree of the document: `base`, else `base 2`, `base 3`, ...
 QString unused_tree_name(const EditorDocument& doc, const QString& base);
 

@@ -44,11 +44,14 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
         progress_->hide();
         cancel_->hide();
         show_message("opening cancelled");
+        update_title();
     });
     connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, [this] {
         progress_->hide();
         cancel_->hide();
         if (!cancelled_) loaded(watcher_.result());
+        opening_ = false;
+        update_title();
     });
 
     save_path_ = start_.output;
@@ -67,6 +70,10 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
 MainWindow::~MainWindow() {
     watcher_.waitForFinished();
     recovery_.clear();
+    // The stack's last signals and the widgets that refer to members go before the members.
+    stack_.disconnect(this);
+    qDeleteAll(findChildren<QDockWidget*>(Qt::FindDirectChildrenOnly));
+    delete takeCentralWidget();
 }
 
 void MainWindow::build_docks() {
@@ -164,7 +171,8 @@ bool MainWindow::modified() const { return unsaved_new_ || !stack_.isClean(); }
 void MainWindow::update_title() {
     QString name = !save_path_.isEmpty() ? save_path_ : source_path_;
     name = name.isEmpty() ? QString("untitled") : QFileInfo(name).fileName();
-    setWindowTitle(QString("%1[*] - spt-editor").arg(name));
+    // Scripts wait for the title without "(opening)" to know the document is in.
+    setWindowTitle(QString("%1[*] - spt-editor%2").arg(name, loading() ? " (opening)" : ""));
     setWindowModified(modified());
 }
 

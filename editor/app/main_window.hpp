@@ -48,7 +48,7 @@ public:
     /// Shared view settings (visible-only selection, modifier swap).
     ViewOptions& view_options() { return options_; }
     /// True while a file is being opened in the background.
-    bool loading() const { return watcher_.isRunning(); }
+    bool loading() const { return opening_; }
     /// The last error shown (file and problem), for tests.
     const QString& last_error() const { return last_error_; }
     /// The last status-bar message.
@@ -112,6 +112,7 @@ private:
     TreePanel* panel_ = nullptr;
     QString save_path_, source_path_, mesh_path_, pending_save_path_;
     bool unsaved_new_ = false, recovering_ = false;
+    bool opening_ = false; // from open_file until its result has been taken in
     QTimer autosave_timer_;
     Recovery recovery_;
     QFutureWatcher<LoadResult> watcher_;

@@ -19,10 +19,12 @@ void MainWindow::open_file(const QString& path, const QString& mesh_path) {
     }
     if (modified() && !maybe_save()) return;
     cancelled_ = false;
+    opening_ = true;
     progress_->show();
     cancel_->show();
     show_message(QString("opening %1...").arg(path));
     watcher_.setFuture(QtConcurrent::run([path, mesh_path] { return load_document(path, mesh_path); }));
+    update_title();
 }
 
 void MainWindow::loaded(const LoadResult& r) {

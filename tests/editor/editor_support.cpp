@@ -71,6 +71,9 @@ bool wait_ready(editor::MainWindow& window) {
     if (!QTest::qWaitFor([&] { return !window.loading() && window.document().has_tree(); }, 120000)) return false;
     if (!window.isVisible()) window.show();
     if (!QTest::qWaitForWindowExposed(&window)) return false;
+    // Shortcuts (Ctrl+S, S) reach only the active window.
+    window.activateWindow();
+    if (!QTest::qWaitForWindowActive(&window)) return false;
     return QTest::qWaitFor(
         [&] {
             for (int i = 0; i < 4; ++i)
