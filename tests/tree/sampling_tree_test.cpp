@@ -143,3 +143,46 @@ TEST(Radius, DefaultIsMedianSpacingTimesScaleAndFixedOverrides) {
     EXPECT_FLOAT_EQ(node_radius(all, s, {0, 2.0f}), 6.0f);
     EXPECT_FLOAT_EQ(node_radius(all, s, {0.25f, 1.0f}), 0.25f);
 }
+
+TEST(SetRadius, ChangesAnActiveNodeAndItsPathOnly) {
+    const SampleSet s = line_samples(16);
+    SamplingTree t("t", 16);
+    ASSERT_TRUE(t.split(1, {0, 1, 2, 3}, s));
+    const TreeNode right_before = *t.find(3);
+    ASSERT_TRUE(t.set_radius(2, 3.0f, s));
+    EXPECT_EQ(t.find(2)->ss_radius, 3.0f);
+    EXPECT_EQ(t.find(1)->ss_radius, std::max(3.0f, right_before.ss_radius));
+    EXPECT_EQ(t.find(3)->ss_radius, right_before.ss_radius);
+    // Node 2's bounding sphere holds its larger spheres: line points at x 0..3, radius 3.
+    EXPECT_GE(t.find(2)->bv_radius, 1.5f + 3.0f - 1e-4f);
+    EXPECT_FALSE(t.set_radius(1, 2.0f, s));
+    EXPECT_FALSE(t.set_radius(2, 0.0f, s));
+    EXPECT_EQ(t.validate(16), "");
+}
+
+TEST(BuildSubtree, BuildsUnderTheNodeAndLeavesTheRestAlone) {
+    const SampleSet s = line_samples(64);
+    SamplingTree t("t", 64);
+    std::vector<uint32_t> first_half;
+    for (uint32_t i = 0; i < 32; ++i) first_half.push_back(i);
+    ASSERT_TRUE(t.split(1, first_half, s));
+    const TreeNode right_before = *t.find(3);
+    BuildOptions o;
+    o.leaf_size = 4;
+    ASSERT_TRUE(t.build_subtree(2, s, o));
+    EXPECT_EQ(t.validate(64), "");
+    EXPECT_EQ(t.find(3)->samples, right_before.samples);
+    EXPECT_FALSE(t.find(2)->active);
+    size_t below = 0;
+    for (const TreeNode* n : t.active_nodes()) {
+        NodeId a = n->id;
+        while (a > 2) a = parent_of(a);
+        if (a != 2) continue;
+        EXPECT_LE(n->samples.size(), 4u);
+        below += n->samples.size();
+    }
+    EXPECT_EQ(below, 32u);
+    EXPECT_FALSE(t.build_subtree(2, s, o)); // already split
+    o.leaf_size = 64;
+    EXPECT_FALSE(t.build_subtree(3, s, o)); // 32 samples: no more than the leaf size
+}

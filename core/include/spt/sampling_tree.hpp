@@ -12,6 +12,8 @@
 
 namespace spt {
 
+struct BuildOptions; // tree_builder.hpp
+
 /// One node, with the fields of the paper's CNode.
 struct TreeNode {
     NodeId id = root_id(); ///< paper id (node_id.hpp)
@@ -68,6 +70,14 @@ public:
     /// Inverse of split: the node becomes active again with every sample below it.
     EditResult merge(NodeId node, const SampleSet& samples, const RadiusRule& rule = {},
                      BoundsMethod bounds = BoundsMethod::Tight);
+
+    /// Sets an active node's sampling-sphere radius (model units, > 0) and refreshes the
+    /// radii and bounding spheres on the path to the root.
+    EditResult set_radius(NodeId node, float radius, const SampleSet& samples,
+                          BoundsMethod bounds = BoundsMethod::Tight);
+    /// Builds a subtree automatically under an active node (tree_builder.hpp's builder over
+    /// the node's samples only); the rest of the tree is unchanged but for the path's bounds.
+    EditResult build_subtree(NodeId node, const SampleSet& samples, const BuildOptions& options);
 
     /// Sets every active node's radius by `rule` (inner nodes: largest below).
     void assign_radii(const SampleSet& samples, const RadiusRule& rule);

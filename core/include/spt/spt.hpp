@@ -17,6 +17,7 @@
 #include "spt/samples.hpp"
 #include "spt/sampling_tree.hpp"
 #include "spt/scene.hpp"
+#include "spt/selection.hpp"
 #include "spt/simulation.hpp"
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"

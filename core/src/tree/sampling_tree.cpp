@@ -197,6 +197,17 @@ EditResult SamplingTree::split(NodeId id, const std::vector<uint32_t>& selection
     return {};
 }
 
+EditResult SamplingTree::set_radius(NodeId id, float radius, const SampleSet& samples, BoundsMethod bounds) {
+    TreeNode* n = find_mutable(id);
+    if (!n) return {false, "node " + std::to_string(id) + " does not exist"};
+    if (!n->active)
+        return {false, "node " + std::to_string(id) + " is split; its radius is the largest of its children's"};
+    if (!(radius > 0) || !std::isfinite(radius)) return {false, "a sampling-sphere radius must be positive and finite"};
+    n->ss_radius = radius;
+    refresh_path(id, samples, bounds);
+    return {};
+}
+
 void SamplingTree::remove_subtree(NodeId id) {
     for (NodeId child : {left_child(id), right_child(id)}) {
         if (node_depth(id) >= kMaxNodeDepth || !find(child)) continue;

@@ -38,6 +38,7 @@ struct Builder {
     const BuildOptions& options;
     std::vector<Item> items;
     std::vector<TreeNode> out;
+    int max_depth = kMaxNodeDepth; // deepest id the built nodes may have
 
     Bounds3 box_of(size_t b, size_t e) const {
         Bounds3 box;
@@ -120,7 +121,7 @@ struct Builder {
         node.id = id;
         // Active nodes must be radius-coherent. Grouping by radius class a few levels above
         // the leaves (rather than peeling classes off full leaves) keeps the leaves full.
-        if (options.radius_coherent && node_depth(id) < kMaxNodeDepth && e - b <= 4 * size_t(options.leaf_size)) {
+        if (options.radius_coherent && node_depth(id) < max_depth && e - b <= 4 * size_t(options.leaf_size)) {
             int hi = items[b].radius_class, lo = hi;
             for (size_t i = b; i < e; ++i)
                 hi = std::max(hi, items[i].radius_class), lo = std::min(lo, items[i].radius_class);
@@ -135,7 +136,7 @@ struct Builder {
                 return;
             }
         }
-        if (e - b <= options.leaf_size || node_depth(id) >= kMaxNodeDepth) {
+        if (e - b <= options.leaf_size || node_depth(id) >= max_depth) {
             node.samples.reserve(e - b);
             for (size_t i = b; i < e; ++i) node.samples.push_back(items[i].sample);
             std::sort(node.samples.begin(), node.samples.end());
@@ -156,25 +157,56 @@ struct Builder {
     }
 };
 
-} // namespace
 
-SamplingTree build_tree(std::string name, const SampleSet& samples, const BuildOptions& options) {
-    if (samples.size() == 0) return SamplingTree(std::move(name), 0u);
+// A tree whose root (id 1) holds `members` (sorted sample indices), at most max_depth deep.
+SamplingTree build_over(std::string name, const SampleSet& samples, const std::vector<uint32_t>& members,
+                        const BuildOptions& options, int max_depth) {
     BuildOptions fixed = options;
     fixed.leaf_size = std::max<uint32_t>(1, options.leaf_size);
-    Builder builder{fixed, std::vector<Item>(samples.size()), {}};
-    for (uint32_t i = 0; i < samples.size(); ++i) {
+    Builder builder{fixed, std::vector<Item>(members.size()), {}, max_depth};
+    for (size_t k = 0; k < members.size(); ++k) {
+        const uint32_t i = members[k];
         const auto& p = samples.points[i];
         const float own = options.radius.for_sample(samples.spacing[i], samples.max_radius.empty() ? INFINITY
                                                                                             : samples.max_radius[i]);
-        builder.items[i] = {{p.x(), p.y(), p.z()}, i, radius_class(own)};
+        builder.items[k] = {{p.x(), p.y(), p.z()}, i, radius_class(own)};
     }
-    builder.out.reserve(2 * samples.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1);
-    builder.build(0, samples.size(), root_id());
+    builder.out.reserve(2 * members.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1);
+    builder.build(0, members.size(), root_id());
     SamplingTree tree(std::move(name), std::move(builder.out));
     tree.assign_radii(samples, options.radius);
     tree.compute_bounds(samples, options.bounds);
     return tree;
+}
+
+} // namespace
+
+SamplingTree build_tree(std::string name, const SampleSet& samples, const BuildOptions& options) {
+    if (samples.size() == 0) return SamplingTree(std::move(name), 0u);
+    std::vector<uint32_t> all(samples.size());
+    for (uint32_t i = 0; i < samples.size(); ++i) all[i] = i;
+    return build_over(std::move(name), samples, all, options, kMaxNodeDepth);
+}
+
+EditResult SamplingTree::build_subtree(NodeId id, const SampleSet& samples, const BuildOptions& options) {
+    const TreeNode* n = find(id);
+    if (!n) return {false, "node " + std::to_string(id) + " does not exist"};
+    if (!n->active) return {false, "node " + std::to_string(id) + " is already split; merge it first"};
+    const uint32_t leaf = std::max<uint32_t>(1, options.leaf_size);
+    if (n->samples.size() <= leaf || node_depth(id) >= kMaxNodeDepth)
+        return {false, "node " + std::to_string(id) + " holds " + std::to_string(n->samples.size()) +
+                           " samples, no more than the leaf size " + std::to_string(leaf)};
+    // Built as a tree of its own (root 1), radii and bounds included, then renumbered under id.
+    const int base = node_depth(id);
+    const SamplingTree sub = build_over(name_, samples, n->samples, options, kMaxNodeDepth - base);
+    for (const TreeNode* t : sub.nodes()) {
+        TreeNode moved = *t;
+        const int d = node_depth(t->id);
+        moved.id = (id << d) | (t->id - (NodeId(1) << d));
+        put(std::move(moved));
+    }
+    if (parent_of(id) != 0) refresh_path(parent_of(id), samples, options.bounds);
+    return {};
 }
 
 } // namespace spt

@@ -1,0 +1,80 @@
+#pragma once
+/// Rectangle selection of samples as the sampling tool does it (paper §3-2): the samples
+/// below a node whose surface point projects inside a rectangle of a view, either all of
+/// them ("through", the paper's world-range test) or only those not hidden by the mesh
+/// ("visible only", depth-tested against the mesh drawn into a depth map). The editor and
+/// its tests both call these, so a selection made with the mouse has one reference.
+#include "spt/mesh.hpp"
+#include "spt/sampling_tree.hpp"
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace spt {
+
+/// How a view maps object-frame points to its framebuffer.
+struct ViewProjection {
+    Eigen::Matrix4f view = Eigen::Matrix4f::Identity();       ///< object frame to eye (OpenGL: eye looks down -Z)
+    Eigen::Matrix4f projection = Eigen::Matrix4f::Identity(); ///< eye to clip
+    bool perspective = false; ///< true: a point must lie in front of the eye to be selectable
+    int width = 1;            ///< framebuffer width, pixels
+    int height = 1;           ///< framebuffer height, pixels
+};
+
+/// A rectangle in GL window coordinates: pixels from the framebuffer's lower-left corner.
+/// Corners in any order; a point on the border is inside.
+struct PixelRect {
+    float x0 = 0; ///< one corner, pixels from the left
+    float y0 = 0; ///< one corner, pixels from the bottom
+    float x1 = 0; ///< opposite corner, pixels from the left
+    float y1 = 0; ///< opposite corner, pixels from the bottom
+};
+
+/// How a new rectangle combines with the current selection (fixed when the drag starts).
+enum class SelectionMode {
+    Replace,  ///< the rectangle's samples replace the selection
+    Add,      ///< added to the selection
+    Subtract, ///< removed from the selection
+};
+
+/// Where object-frame point p lands: x, y in GL window pixels, z the eye depth (model
+/// units in front of the eye; negative behind it).
+Eigen::Vector3f project_to_window(const ViewProjection& view, const Eigen::Vector3d& p);
+
+/// Every sample below node `id` (all samples of its active descendants), sorted; empty if
+/// the tree has no such node.
+std::vector<uint32_t> samples_below(const SamplingTree& tree, NodeId id);
+
+/// Samples below node `id` whose surface point (SampleSet::position) projects inside
+/// `rect`, whatever is in front of them; sorted.
+std::vector<uint32_t> samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+                                      const ViewProjection& view, const PixelRect& rect);
+
+/// Eye depth (model units) of the nearest mesh surface at each pixel centre of a view;
+/// +infinity where no triangle covers the pixel. Row 0 is the bottom row.
+struct DepthMap {
+    int width = 0;            ///< pixels
+    int height = 0;           ///< pixels
+    std::vector<float> depth; ///< width * height eye depths, bottom row first
+    /// Depth at pixel (x, y), +infinity outside the map.
+    float at(int x, int y) const;
+};
+
+/// Draws `mesh` (object frame) into a depth map of the view's size, in software, so the
+/// result does not depend on a GPU. Triangles crossing the eye plane are left out (they
+/// hide nothing that could be missed).
+DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view);
+
+/// Like samples_in_rect, but only samples the mesh does not hide: a sample counts as
+/// visible when its eye depth is at most `tolerance` (model units) behind the farthest
+/// surface in the 3x3 pixels around it, so a sample on the surface is never missed
+/// where the depth map's pixel centres fall on neighbouring, steeper triangles.
+std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+                                              const ViewProjection& view, const PixelRect& rect,
+                                              const DepthMap& depth, float tolerance);
+
+/// The selection after a rectangle's `hits` are applied to `current` in `mode` (all sorted).
+std::vector<uint32_t> combine_selection(const std::vector<uint32_t>& current, const std::vector<uint32_t>& hits,
+                                        SelectionMode mode);
+
+} // namespace spt

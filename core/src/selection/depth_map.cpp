@@ -1,0 +1,45 @@
+// A software depth buffer of a mesh in one view, for visible-only selection.
+#include "spt/selection.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt {
+
+DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view) {
+    DepthMap map;
+    map.width = std::max(view.width, 1);
+    map.height = std::max(view.height, 1);
+    map.depth.assign(size_t(map.width) * size_t(map.height), INFINITY);
+    std::vector<Eigen::Vector3f> win(mesh.positions.size());
+    for (size_t i = 0; i < win.size(); ++i) win[i] = project_to_window(view, mesh.positions[i]);
+    // Screen-space interpolation: eye depth is affine in x, y for an orthographic view;
+    // for a perspective one its reciprocal is.
+    auto value = [&](float z) { return view.perspective ? 1.0f / z : z; };
+    auto depth = [&](float v) { return view.perspective ? 1.0f / v : v; };
+    for (const Triangle& t : mesh.triangles) {
+        const Eigen::Vector3f &a = win[t[0]], &b = win[t[1]], &c = win[t[2]];
+        if (view.perspective && (a.z() <= 0 || b.z() <= 0 || c.z() <= 0)) continue;
+        const float area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
+        if (area == 0 || !std::isfinite(area)) continue;
+        const int x0 = std::max(0, int(std::floor(std::min({a.x(), b.x(), c.x()}) - 0.5f)));
+        const int x1 = std::min(map.width - 1, int(std::ceil(std::max({a.x(), b.x(), c.x()}) - 0.5f)));
+        const int y0 = std::max(0, int(std::floor(std::min({a.y(), b.y(), c.y()}) - 0.5f)));
+        const int y1 = std::min(map.height - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}) - 0.5f)));
+        const float va = value(a.z()), vb = value(b.z()), vc = value(c.z());
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const float px = float(x) + 0.5f, py = float(y) + 0.5f;
+                // Barycentric weights; either winding is drawn (no culling: back faces hide too).
+                const float wa = ((b.x() - px) * (c.y() - py) - (c.x() - px) * (b.y() - py)) / area;
+                const float wb = ((c.x() - px) * (a.y() - py) - (a.x() - px) * (c.y() - py)) / area;
+                const float wc = 1.0f - wa - wb;
+                if (wa < 0 || wb < 0 || wc < 0) continue;
+                const float d = depth(wa * va + wb * vb + wc * vc);
+                float& slot = map.depth[size_t(y) * size_t(map.width) + size_t(x)];
+                slot = std::min(slot, d);
+            }
+    }
+    return map;
+}
+
+} // namespace spt

@@ -1,0 +1,66 @@
+// load_document: .spt with its mesh checked against the recorded identity, or mesh conversion.
+#include "document_loader.hpp"
+#include "edit_commands.hpp"
+#include "spt/convert.hpp"
+#include "spt/error.hpp"
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+namespace spt::editor {
+
+bool is_spt_file(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return false;
+    return f.read(6) == QByteArray("SPTREE");
+}
+
+LoadResult load_document(const QString& path, const QString& mesh_path) {
+    LoadResult r;
+    r.path = path;
+    try {
+        if (!QFileInfo(path).isFile()) throw_bad_input(path.toStdString(), "no such file");
+        if (!is_spt_file(path)) {
+            TriangleMesh mesh = import_mesh(path.toStdString()).mesh;
+            r.doc = make_document(mesh);
+            // Authoring starts where the paper's tool does: the root holds every sample (B builds
+            // the automatic tree under any node).
+            const std::string name = r.doc->trees.front().name();
+            r.doc->trees = {unsplit_tree(name, r.doc->samples)};
+            r.mesh = std::move(mesh);
+            r.mesh_path = path;
+            r.converted = true;
+            return r;
+        }
+        r.doc = load_spt(path.toStdString());
+        const QString name = QString::fromStdString(r.doc->mesh.name);
+        const QString candidate = mesh_path.isEmpty() ? QFileInfo(path).dir().filePath(name) : mesh_path;
+        if (!QFileInfo(candidate).isFile()) {
+            r.warning = QString("%1: its mesh %2 was not found%3; showing the sampling spheres only")
+                            .arg(path, candidate, mesh_path.isEmpty() ? " beside it (give it with --mesh)" : "");
+            return r;
+        }
+        try {
+            TriangleMesh mesh = import_mesh(candidate.toStdString()).mesh;
+            const std::string mismatch = check_mesh_matches(r.doc->mesh, mesh);
+            if (!mismatch.empty()) {
+                r.warning = QString("%1 is not the mesh %2 was made from (%3); showing the sampling spheres only")
+                                .arg(candidate, path, QString::fromStdString(mismatch));
+                return r;
+            }
+            r.mesh = std::move(mesh);
+            r.mesh_path = candidate;
+        } catch (const std::exception& e) {
+            r.warning = QString("%1; showing the sampling spheres only").arg(QString::fromStdString(e.what()));
+        }
+    } catch (const Error& e) {
+        r.doc.reset();
+        r.error = QString::fromStdString(e.what());
+    } catch (const std::exception& e) {
+        r.doc.reset();
+        r.error = QString("%1: %2").arg(path, QString::fromStdString(e.what()));
+    }
+    return r;
+}
+
+} // namespace spt::editor

@@ -1,0 +1,29 @@
+#pragma once
+// Opening a file for the editor, run off the UI thread: a .spt file with its mesh (found
+// beside it by the recorded name, or given), or a mesh converted with default options
+// whose one tree is the unsplit root, where manual authoring starts.
+#include "spt/spt_file.hpp"
+#include <QString>
+#include <optional>
+
+namespace spt::editor {
+
+/// What opening a file gave: a document, maybe its mesh, and what went wrong.
+struct LoadResult {
+    QString path;                       ///< the file asked for
+    std::optional<SptDocument> doc;     ///< empty when the file could not be opened
+    std::optional<TriangleMesh> mesh;   ///< the document's mesh, when found and matching
+    QString mesh_path;                  ///< where the mesh was read from (empty if not used)
+    bool converted = false;             ///< the file was a mesh, converted to a new document
+    QString error;                      ///< why the file could not be opened (names the file)
+    QString warning;                    ///< a problem that still leaves a document (mesh missing or mismatched)
+};
+
+/// True if `path` starts with the .spt magic.
+bool is_spt_file(const QString& path);
+
+/// Opens `path`; `mesh_path` (may be empty) overrides where a .spt file's mesh is looked for.
+/// Never throws: problems come back in `error` and `warning`.
+LoadResult load_document(const QString& path, const QString& mesh_path);
+
+} // namespace spt::editor

@@ -1,0 +1,78 @@
+// EditorDocument: the open document, current tree and node, selection; change signals.
+#include "editor_document.hpp"
+#include <algorithm>
+
+namespace spt::editor {
+
+EditorDocument::EditorDocument(QObject* parent) : QObject(parent) {}
+
+void EditorDocument::reset(SptDocument doc, std::optional<TriangleMesh> mesh) {
+    doc_ = std::move(doc);
+    mesh_ = std::move(mesh);
+    tree_ = 0;
+    current_ = root_id();
+    selection_.clear();
+    emit documentReset();
+}
+
+void EditorDocument::set_tree_index(int index) {
+    if (index < 0 || size_t(index) >= doc_.trees.size()) return;
+    tree_ = index;
+    current_ = root_id();
+    selection_.clear();
+    emit treeChanged();
+}
+
+void EditorDocument::set_current(NodeId id) {
+    if (!has_tree() || !tree().find(id) || id == current_) return;
+    current_ = id;
+    selection_.clear();
+    emit currentChanged();
+}
+
+void EditorDocument::set_selection(std::vector<uint32_t> selection) {
+    selection_ = std::move(selection);
+    emit selectionChanged();
+}
+
+size_t EditorDocument::select_rect(const ViewProjection& view, const PixelRect& rect, SelectionMode mode,
+                                   bool visible_only) {
+    if (!has_tree()) return 0;
+    std::vector<uint32_t> hits;
+    if (visible_only && mesh_) {
+        // Half a percent of the object's size: a sample on the surface is never hidden by the surface.
+        const float tolerance = float(0.005 * mesh_->diagonal());
+        hits = visible_samples_in_rect(doc_.samples, tree(), current_, view, rect, render_depth(*mesh_, view),
+                                       tolerance);
+    } else {
+        hits = samples_in_rect(doc_.samples, tree(), current_, view, rect);
+    }
+    set_selection(combine_selection(selection_, hits, mode));
+    return hits.size();
+}
+
+void EditorDocument::set_tree(int index, const SamplingTree& tree, NodeId current) {
+    doc_.trees[size_t(index)] = tree;
+    tree_ = index;
+    current_ = tree.find(current) ? current : root_id();
+    selection_.clear();
+    emit treeChanged();
+}
+
+void EditorDocument::insert_tree(int index, const SamplingTree& tree) {
+    doc_.trees.insert(doc_.trees.begin() + index, tree);
+    tree_ = index;
+    current_ = root_id();
+    selection_.clear();
+    emit treeChanged();
+}
+
+void EditorDocument::remove_tree(int index) {
+    doc_.trees.erase(doc_.trees.begin() + index);
+    tree_ = std::max(0, index - 1);
+    current_ = root_id();
+    selection_.clear();
+    emit treeChanged();
+}
+
+} // namespace spt::editor

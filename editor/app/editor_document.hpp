@@ -1,0 +1,79 @@
+#pragma once
+// The open document of the editor: the .spt document, its mesh (if found), the current
+// tree and node, and the selection. Every change goes through here and is announced.
+#include "spt/selection.hpp"
+#include "spt/spt_file.hpp"
+#include <QObject>
+#include <QString>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace spt::editor {
+
+/// State of the edited document; geometry in the samples' object frame, model units.
+class EditorDocument : public QObject {
+    Q_OBJECT
+public:
+    /// An empty document (no samples, no trees).
+    explicit EditorDocument(QObject* parent = nullptr);
+
+    /// Replaces everything (a file was opened or recovered); the first tree's root becomes current.
+    void reset(SptDocument doc, std::optional<TriangleMesh> mesh);
+    /// True once a document with at least one tree is open.
+    bool has_tree() const { return !doc_.trees.empty(); }
+
+    /// The whole .spt document.
+    const SptDocument& document() const { return doc_; }
+    /// The mesh the samples were taken from, or nullptr if it was not found.
+    const TriangleMesh* mesh() const { return mesh_ ? &*mesh_ : nullptr; }
+    /// The samples, object frame = origin + local points.
+    const SampleSet& samples() const { return doc_.samples; }
+    /// Index of the tree being edited.
+    int tree_index() const { return tree_; }
+    /// The tree being edited (has_tree() must hold).
+    const SamplingTree& tree() const { return doc_.trees[size_t(tree_)]; }
+    /// Paper id of the current node.
+    NodeId current() const { return current_; }
+    /// Selected samples (sorted), all below the current node.
+    const std::vector<uint32_t>& selection() const { return selection_; }
+
+    /// Makes tree `index` the edited one; its root becomes current and the selection is cleared.
+    void set_tree_index(int index);
+    /// Makes node `id` current (ignored if the tree has no such node); clears the selection.
+    void set_current(NodeId id);
+    /// Replaces the selection (sorted sample indices).
+    void set_selection(std::vector<uint32_t> selection);
+    /// Applies a rectangle drawn in a view: through, or visible only when the mesh is known.
+    /// Returns the number of samples the rectangle hit.
+    size_t select_rect(const ViewProjection& view, const PixelRect& rect, SelectionMode mode, bool visible_only);
+
+    /// Replaces tree `index` (an undo command's redo or undo) and sets the current node.
+    void set_tree(int index, const SamplingTree& tree, NodeId current);
+    /// Inserts a tree at `index` and makes it the edited one.
+    void insert_tree(int index, const SamplingTree& tree);
+    /// Removes tree `index`; the edited tree becomes the one before it (or the first).
+    void remove_tree(int index);
+
+    /// Bytes of the document as save_spt writes them.
+    std::vector<uint8_t> encode() const { return encode_spt(doc_); }
+
+signals:
+    /// A new document replaced the old one.
+    void documentReset();
+    /// The edited tree, the set of trees or a tree's nodes changed.
+    void treeChanged();
+    /// The current node changed (the tree did not).
+    void currentChanged();
+    /// The selection changed.
+    void selectionChanged();
+
+private:
+    SptDocument doc_;
+    std::optional<TriangleMesh> mesh_;
+    int tree_ = 0;
+    NodeId current_ = root_id();
+    std::vector<uint32_t> selection_;
+};
+
+} // namespace spt::editor

@@ -1,0 +1,51 @@
+// spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS]: the four-view sampling editor.
+#include "main_window.hpp"
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <cstdio>
+
+int main(int argc, char** argv) {
+    // Before QApplication: every view's context is 3.3 core (render/ needs it).
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+    QApplication app(argc, argv);
+    QApplication::setApplicationName("spt-editor");
+    QApplication::setOrganizationName("spt");
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription("The four-view sampling editor (docs/editor.md).");
+    parser.addHelpOption();
+    parser.addPositionalArgument("FILE", "A mesh (converted with default options) or a .spt file");
+    parser.addOption({{"o", "output"}, "Where Save (Ctrl+S) writes, without a dialog", "OUT.spt"});
+    parser.addOption({"mesh", "The .spt file's mesh, if it is not beside it", "MESH"});
+    parser.addOption({"autosave", "Seconds between recovery files (default 30; 0: off)", "SECONDS", "30"});
+    parser.process(app);
+
+    spt::editor::StartOptions options;
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1) {
+        std::fprintf(stderr, "spt-editor: one FILE at most (got %d)\n", int(files.size()));
+        return 2;
+    }
+    bool ok = false;
+    options.autosave_seconds = parser.value("autosave").toInt(&ok);
+    if (!ok || options.autosave_seconds < 0) {
+        std::fprintf(stderr, "spt-editor: --autosave %s: expected a whole number of seconds >= 0\n",
+                     qPrintable(parser.value("autosave")));
+        return 2;
+    }
+    if (!files.isEmpty()) options.file = files.front();
+    options.output = parser.value("output");
+    options.mesh = parser.value("mesh");
+
+    spt::editor::MainWindow window(options);
+    window.show();
+    // After the window is up, so the question has a parent to sit on.
+    QTimer::singleShot(0, &window, [&window] { window.offer_recovery(); });
+    return app.exec();
+}

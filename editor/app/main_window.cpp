@@ -1,0 +1,219 @@
+// MainWindow: layout, menus, toolbar, docks, title and closing.
+#include "main_window.hpp"
+#include "tree_panel.hpp"
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QShortcut>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoView>
+
+namespace spt::editor {
+
+MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
+    : QMainWindow(parent), start_(options), scene_(doc_), recovery_(options.recovery_dir) {
+    setObjectName("spt_editor");
+    setAcceptDrops(true);
+    grid_ = new ViewGrid(doc_, scene_, options_, this);
+    setCentralWidget(grid_);
+    for (int i = 0; i < 4; ++i) connect(grid_->view(i), &ViewWidget::message, this, &MainWindow::show_message);
+    build_docks();
+    build_menus();
+
+    progress_ = new QProgressBar;
+    progress_->setRange(0, 0);
+    progress_->setMaximumWidth(160);
+    progress_->hide();
+    cancel_ = new QPushButton("Cancel");
+    cancel_->hide();
+    statusBar()->addPermanentWidget(progress_);
+    statusBar()->addPermanentWidget(cancel_);
+    connect(cancel_, &QPushButton::clicked, this, [this] {
+        // Conversion cannot be interrupted inside core; its result is dropped when it arrives.
+        cancelled_ = true;
+        progress_->hide();
+        cancel_->hide();
+        show_message("opening cancelled");
+        update_title();
+    });
+    connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, [this] {
+        progress_->hide();
+        cancel_->hide();
+        if (!cancelled_) loaded(watcher_.result());
+        opening_ = false;
+        update_title();
+    });
+
+    save_path_ = start_.output;
+    connect(&stack_, &QUndoStack::cleanChanged, this, &MainWindow::update_title);
+    connect(&stack_, &QUndoStack::indexChanged, this, &MainWindow::update_title);
+    if (start_.autosave_seconds > 0) {
+        autosave_timer_.setInterval(start_.autosave_seconds * 1000);
+        connect(&autosave_timer_, &QTimer::timeout, this, &MainWindow::autosave);
+        autosave_timer_.start();
+    }
+    resize(1280, 860);
+    update_title();
+    if (!start_.file.isEmpty()) open_file(start_.file, start_.mesh);
+}
+
+MainWindow::~MainWindow() {
+    watcher_.waitForFinished();
+    recovery_.clear();
+    // The stack's last signals and the widgets that refer to members go before the members.
+    stack_.disconnect(this);
+    qDeleteAll(findChildren<QDockWidget*>(Qt::FindDirectChildrenOnly));
+    delete takeCentralWidget();
+}
+
+void MainWindow::build_docks() {
+    panel_ = new TreePanel(doc_, this);
+    auto* tree_dock = new QDockWidget("Tree", this);
+    tree_dock->setObjectName("tree_dock");
+    tree_dock->setWidget(panel_);
+    addDockWidget(Qt::RightDockWidgetArea, tree_dock);
+    auto* history = new QUndoView(&stack_);
+    history->setEmptyLabel("Opened");
+    auto* history_dock = new QDockWidget("History", this);
+    history_dock->setObjectName("history_dock");
+    history_dock->setWidget(history);
+    addDockWidget(Qt::RightDockWidgetArea, history_dock);
+    connect(panel_, &TreePanel::setRadiusRequested, this, &MainWindow::set_radius);
+    connect(panel_, &TreePanel::buildSubtreeRequested, this, &MainWindow::build_subtree);
+    connect(panel_, &TreePanel::colorByNodeChosen, this,
+            [this](bool by_node) { scene_.set_color_by(by_node ? render::ColorBy::Node : render::ColorBy::Level); });
+}
+
+void MainWindow::build_menus() {
+    QMenu* file = menuBar()->addMenu("&File");
+    file->addAction("&Open...", QKeySequence::Open, this, [this] {
+        const QString p = QFileDialog::getOpenFileName(this, "Open a mesh or a .spt file", {},
+                                                       "Meshes and trees (*.spt *.obj *.ply *.stl *.off *.fbx *.dae "
+                                                       "*.3ds *.gltf *.glb);;All files (*)");
+        if (!p.isEmpty()) open_file(p);
+    });
+    recent_menu_ = file->addMenu("Open &Recent");
+    refresh_recent();
+    file->addAction("&Save", QKeySequence::Save, this, [this] { save(); });
+    file->addAction("Save &As...", QKeySequence::SaveAs, this, [this] { save_as(); });
+    file->addAction("Re&vert", this, [this] {
+        if (!source_path_.isEmpty()) open_file(source_path_, mesh_path_);
+    });
+    file->addSeparator();
+    file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu("&Edit");
+    QAction* undo = stack_.createUndoAction(this, "&Undo");
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = stack_.createRedoAction(this, "&Redo");
+    redo->setShortcuts({QKeySequence("Ctrl+Shift+Z"), QKeySequence::Redo});
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    QAction* split_action = edit->addAction("&Split by selection", QKeySequence(Qt::Key_S), this, [this] { split(); });
+    QAction* merge_action = edit->addAction("&Merge children", QKeySequence(Qt::Key_M), this, [this] { merge(); });
+    QAction* build_action = edit->addAction("&Build subtree", QKeySequence(Qt::Key_B), this, [this] { build_subtree(); });
+    edit->addSeparator();
+    edit->addAction("Add tree", this, [this] { add_tree(); });
+    edit->addAction("Rename tree...", this, [this] {
+        if (!doc_.has_tree()) return;
+        bool ok = false;
+        const QString name = QInputDialog::getText(this, "Rename tree", "Name", QLineEdit::Normal,
+                                                   QString::fromStdString(doc_.tree().name()), &ok);
+        if (ok) rename_tree(name);
+    });
+    edit->addAction("Duplicate tree", this, [this] { duplicate_tree(); });
+    edit->addAction("Delete tree", this, [this] { delete_tree(); });
+
+    QMenu* view = menuBar()->addMenu("&View");
+    QAction* visible = view->addAction("&Visible-only selection");
+    visible->setCheckable(true);
+    visible->setShortcut(QKeySequence(Qt::Key_X));
+    connect(visible, &QAction::toggled, this, [this](bool on) {
+        options_.visible_only = on;
+        show_message(on ? "selection: visible only" : "selection: through");
+    });
+    QAction* swap = view->addAction("Shift/Ctrl as in MeshLab (Ctrl adds)");
+    swap->setCheckable(true);
+    connect(swap, &QAction::toggled, this, [this](bool on) { options_.swap_modifiers = on; });
+    view->addAction("Frame &all", QKeySequence(Qt::Key_Home), this, [this] {
+        for (int i = 0; i < 4; ++i) grid_->view(i)->frame_all();
+    });
+    view->addAction("&Frame selection", QKeySequence(Qt::Key_F), this, [this] {
+        for (int i = 0; i < 4; ++i) grid_->view(i)->frame_selection();
+    });
+    view->addAction("&Maximise view", QKeySequence("Ctrl+Space"), this, [this] {
+        ViewWidget* v = grid_->view_at(QCursor::pos());
+        if (!v) v = qobject_cast<ViewWidget*>(focusWidget());
+        grid_->toggle_maximised(v);
+    });
+
+    QToolBar* tools = addToolBar("Edit");
+    tools->setObjectName("edit_toolbar");
+    tools->addAction(split_action);
+    tools->addAction(merge_action);
+    tools->addAction(build_action);
+    tools->addAction(visible);
+}
+
+bool MainWindow::modified() const { return unsaved_new_ || !stack_.isClean(); }
+
+void MainWindow::update_title() {
+    QString name = !save_path_.isEmpty() ? save_path_ : source_path_;
+    name = name.isEmpty() ? QString("untitled") : QFileInfo(name).fileName();
+    // Scripts wait for the title without "(opening)" to know the document is in.
+    setWindowTitle(QString("%1[*] - spt-editor%2").arg(name, loading() ? " (opening)" : ""));
+    setWindowModified(modified());
+}
+
+void MainWindow::show_error(const QString& text) {
+    last_error_ = text;
+    statusBar()->showMessage(text);
+    // Window-modal and not blocking: the document and the views stay as they were.
+    auto* box = new QMessageBox(QMessageBox::Warning, "spt-editor", text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::show_message(const QString& text) {
+    last_message_ = text;
+    statusBar()->showMessage(text);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (maybe_save()) {
+        recovery_.clear();
+        event->accept();
+    } else {
+        event->ignore();
+    }
+}
+
+bool MainWindow::maybe_save() {
+    if (!modified()) return true;
+    const auto answer = QMessageBox::question(this, "spt-editor", "The document has unsaved changes. Save them?",
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (!urls.isEmpty() && urls.front().isLocalFile()) open_file(urls.front().toLocalFile());
+}
+
+} // namespace spt::editor

@@ -1,0 +1,126 @@
+#pragma once
+// The editor's main window: the four views left of a dock with the tree panel and the
+// undo history; File and Edit menus, a toolbar, a status bar with progress; atomic
+// saves, a modified mark in the title, recovery files.
+#include "document_loader.hpp"
+#include "editor_document.hpp"
+#include "recovery.hpp"
+#include "scene.hpp"
+#include "view_grid.hpp"
+#include <QFutureWatcher>
+#include <QMainWindow>
+#include <QTimer>
+#include <QUndoStack>
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace spt::editor {
+
+class TreePanel;
+
+/// How the editor was started (spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS]).
+struct StartOptions {
+    QString file;          ///< mesh or .spt to open
+    QString output;        ///< where Save writes (no dialog)
+    QString mesh;          ///< the .spt file's mesh, if not beside it
+    int autosave_seconds = 30; ///< recovery file period; 0 turns it off
+    QString recovery_dir;  ///< empty: the application data location's "recovery"
+};
+
+/// The editor window.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// A window started with `options`; opening FILE starts in the background.
+    explicit MainWindow(const StartOptions& options, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// The open document.
+    EditorDocument& document() { return doc_; }
+    /// The undo stack of the document's edits.
+    QUndoStack& undo_stack() { return stack_; }
+    /// The views.
+    ViewGrid& grid() { return *grid_; }
+    /// The dock's tree panel.
+    TreePanel& tree_panel() { return *panel_; }
+    /// Shared view settings (visible-only selection, modifier swap).
+    ViewOptions& view_options() { return options_; }
+    /// True while a file is being opened in the background.
+    bool loading() const { return opening_; }
+    /// The last error shown (file and problem), for tests.
+    const QString& last_error() const { return last_error_; }
+    /// The last status-bar message.
+    const QString& last_message() const { return last_message_; }
+    /// True when the document has changes not saved.
+    bool modified() const;
+    /// Where Save writes (empty: Save asks).
+    const QString& save_path() const { return save_path_; }
+
+    /// Starts opening `path` in the background (the document stays until it succeeds).
+    void open_file(const QString& path, const QString& mesh_path = {});
+    /// Offers the recovery files dead editors left; true if one was opened.
+    bool offer_recovery();
+    /// Saves to `path` atomically; false (message shown) if it could not.
+    bool save_to(const QString& path);
+    /// Writes the recovery file now if there is unsaved work.
+    void autosave();
+
+    /// Splits the current node by the selection (key S).
+    bool split();
+    /// Merges the current node's children.
+    bool merge();
+    /// Sets the current node's sampling-sphere radius.
+    bool set_radius(float radius);
+    /// Builds a subtree under the current node with the panel's options.
+    bool build_subtree();
+    /// Adds a tree named `name` (a free name if empty).
+    bool add_tree(const QString& name = {});
+    /// Renames the edited tree.
+    bool rename_tree(const QString& name);
+    /// Duplicates the edited tree under `name` (a free name if empty).
+    bool duplicate_tree(const QString& name = {});
+    /// Deletes the edited tree.
+    bool delete_tree();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void build_menus();
+    void build_docks();
+    void loaded(const LoadResult& result);
+    void show_error(const QString& text);
+    void show_message(const QString& text);
+    bool push(struct EditOutcome outcome);
+    bool maybe_save();
+    bool save();
+    bool save_as();
+    void update_title();
+    void add_recent(const QString& path);
+    void refresh_recent();
+
+    StartOptions start_;
+    EditorDocument doc_;
+    QUndoStack stack_;
+    Scene scene_;
+    ViewOptions options_;
+    ViewGrid* grid_ = nullptr;
+    TreePanel* panel_ = nullptr;
+    QString save_path_, source_path_, mesh_path_, pending_save_path_;
+    bool unsaved_new_ = false, recovering_ = false;
+    bool opening_ = false; // from open_file until its result has been taken in
+    QTimer autosave_timer_;
+    Recovery recovery_;
+    QFutureWatcher<LoadResult> watcher_;
+    QProgressBar* progress_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+    bool cancelled_ = false;
+    QString last_error_, last_message_;
+    class QMenu* recent_menu_ = nullptr;
+};
+
+} // namespace spt::editor

@@ -1,0 +1,62 @@
+#pragma once
+// What the four views draw, made once from the document for all of them: the mesh, the
+// sampling spheres of the edited tree (coloured by level or node), the current node
+// highlighted with its bounding sphere, and the selected samples' spheres. Each part
+// carries a revision so a view re-uploads only what changed.
+#include "editor_document.hpp"
+#include "spt/render/frame.hpp"
+#include "spt/render/tree_overlay.hpp"
+#include <QObject>
+
+namespace spt::editor {
+
+/// Colour of selected samples' spheres.
+render::Color selection_color();
+
+/// Draw data of the open document; object frame = world frame, model units.
+struct SceneData {
+    const TriangleMesh* mesh = nullptr;             ///< null when the mesh is unknown
+    std::vector<render::SphereInstance> spheres;    ///< every sampling sphere, CompactTree order
+    render::SphereRange highlight;                  ///< the current node's spheres
+    std::vector<render::SphereInstance> selected;   ///< spheres of the selected samples
+    std::vector<render::WireSphere> wires;          ///< bounding sphere of the current node
+    uint64_t mesh_revision = 0;      ///< changes when the mesh changes
+    uint64_t spheres_revision = 0;   ///< changes when `spheres` changes
+    uint64_t selected_revision = 0;  ///< changes when `selected` changes
+    uint64_t revision = 0;           ///< changes on any change (views repaint)
+};
+
+/// Keeps SceneData in step with an EditorDocument.
+class Scene : public QObject {
+    Q_OBJECT
+public:
+    /// Follows `doc`'s signals; `doc` must outlive the scene.
+    explicit Scene(EditorDocument& doc, QObject* parent = nullptr);
+    /// The current draw data.
+    const SceneData& data() const { return data_; }
+    /// The frame every view draws (what `spt render --overlay spheres,node,grid,axes --node ID` draws, plus the
+    /// selection); handles are the view's own uploads.
+    render::Frame frame(render::MeshHandle mesh, render::SphereSetHandle spheres,
+                        render::SphereSetHandle selected) const;
+    /// Colours spheres by level (default) or by node.
+    void set_color_by(render::ColorBy by);
+    /// How spheres are coloured.
+    render::ColorBy color_by() const { return color_by_; }
+
+signals:
+    /// Something to draw changed.
+    void changed();
+
+private:
+    void rebuild_mesh();
+    void rebuild_tree();
+    void rebuild_current();
+    void rebuild_selection();
+    EditorDocument& doc_;
+    SceneData data_;
+    render::ColorBy color_by_ = render::ColorBy::Level;
+    std::vector<float> sample_radius_; // radius of each sample's active node
+    std::unique_ptr<CompactTree> compact_;
+};
+
+} // namespace spt::editor

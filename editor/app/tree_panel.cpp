@@ -1,0 +1,143 @@
+// TreePanel: trees, nodes and properties; clicking a node makes it current.
+#include "tree_panel.hpp"
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
+#include <QVBoxLayout>
+#include <map>
+
+namespace spt::editor {
+namespace {
+
+constexpr int kIdRole = Qt::UserRole + 1;
+
+QString number(double v) { return QString::number(v, 'g', 5); }
+
+} // namespace
+
+TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QHBoxLayout;
+    trees_ = new QComboBox;
+    trees_->setObjectName("tree_list");
+    top->addWidget(new QLabel("Tree"));
+    top->addWidget(trees_, 1);
+    auto* color = new QComboBox;
+    color->addItems({"Colour by level", "Colour by node"});
+    top->addWidget(color);
+    layout->addLayout(top);
+
+    nodes_ = new QTreeWidget;
+    nodes_->setObjectName("node_tree");
+    nodes_->setHeaderLabels({"Node", "Samples", "Bounding r", "Sampling r", "Active"});
+    nodes_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    layout->addWidget(nodes_, 1);
+
+    properties_ = new QLabel;
+    properties_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(properties_);
+    auto* form = new QFormLayout;
+    radius_ = new QDoubleSpinBox;
+    radius_->setDecimals(6);
+    radius_->setRange(1e-6, 1e9);
+    auto* set_radius = new QPushButton("Set");
+    auto* radius_row = new QHBoxLayout;
+    radius_row->addWidget(radius_, 1);
+    radius_row->addWidget(set_radius);
+    form->addRow("Sampling r", radius_row);
+    leaf_size_ = new QSpinBox;
+    leaf_size_->setRange(1, 1 << 20);
+    leaf_size_->setValue(int(BuildOptions{}.leaf_size));
+    strategy_ = new QComboBox;
+    strategy_->addItems({"volume", "median"});
+    auto* build = new QPushButton("Build subtree");
+    auto* build_row = new QHBoxLayout;
+    build_row->addWidget(leaf_size_);
+    build_row->addWidget(strategy_);
+    build_row->addWidget(build);
+    form->addRow("Leaf size", build_row);
+    layout->addLayout(form);
+
+    connect(trees_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int i) {
+        if (!updating_ && i >= 0) doc_.set_tree_index(i);
+    });
+    connect(color, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            [this](int i) { emit colorByNodeChosen(i == 1); });
+    connect(nodes_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+        if (!updating_ && item) doc_.set_current(item->data(0, kIdRole).toULongLong());
+    });
+    connect(set_radius, &QPushButton::clicked, this, [this] { emit setRadiusRequested(float(radius_->value())); });
+    connect(build, &QPushButton::clicked, this, [this] { emit buildSubtreeRequested(); });
+    connect(&doc_, &EditorDocument::documentReset, this, &TreePanel::rebuild);
+    connect(&doc_, &EditorDocument::treeChanged, this, &TreePanel::rebuild);
+    connect(&doc_, &EditorDocument::currentChanged, this, &TreePanel::show_current);
+    connect(&doc_, &EditorDocument::selectionChanged, this, &TreePanel::show_current);
+}
+
+BuildOptions TreePanel::build_options() const {
+    BuildOptions o;
+    o.leaf_size = uint32_t(leaf_size_->value());
+    o.strategy = strategy_->currentIndex() == 1 ? SplitStrategy::Median : SplitStrategy::Volume;
+    return o;
+}
+
+void TreePanel::rebuild() {
+    updating_ = true;
+    trees_->clear();
+    for (const SamplingTree& t : doc_.document().trees) trees_->addItem(QString::fromStdString(t.name()));
+    trees_->setCurrentIndex(doc_.tree_index());
+    nodes_->clear();
+    if (doc_.has_tree()) {
+        // Parents come before children in id order, so each item's parent exists when it is made.
+        std::map<NodeId, QTreeWidgetItem*> items;
+        std::map<NodeId, size_t> counts;
+        for (const TreeNode* n : doc_.tree().active_nodes())
+            for (NodeId a = n->id; a != 0; a = parent_of(a)) counts[a] += n->samples.size();
+        for (const TreeNode* n : doc_.tree().nodes()) {
+            auto it = items.find(parent_of(n->id));
+            auto* item = it == items.end() ? new QTreeWidgetItem(nodes_) : new QTreeWidgetItem(it->second);
+            item->setText(0, QString::number(qulonglong(n->id)));
+            item->setData(0, kIdRole, QVariant::fromValue(qulonglong(n->id)));
+            item->setText(1, QString::number(qulonglong(counts[n->id])));
+            item->setText(2, number(n->bv_radius));
+            item->setText(3, number(n->ss_radius));
+            item->setText(4, n->active ? "yes" : "no");
+            items[n->id] = item;
+        }
+        nodes_->expandToDepth(3);
+    }
+    updating_ = false;
+    show_current();
+}
+
+void TreePanel::show_current() {
+    if (!doc_.has_tree()) {
+        properties_->setText("No document");
+        return;
+    }
+    const TreeNode* n = doc_.tree().find(doc_.current());
+    if (!n) return;
+    updating_ = true;
+    for (QTreeWidgetItemIterator it(nodes_); *it; ++it)
+        if ((*it)->data(0, kIdRole).toULongLong() == n->id) nodes_->setCurrentItem(*it);
+    updating_ = false;
+    radius_->setValue(double(n->ss_radius));
+    properties_->setText(QString("Node %1 (depth %2, %3)\nBounding sphere r %4 at (%5, %6, %7)\n%8 selected")
+                             .arg(qulonglong(n->id))
+                             .arg(node_depth(n->id))
+                             .arg(n->active ? "active" : "inner")
+                             .arg(number(n->bv_radius))
+                             .arg(number(n->center.x() + doc_.samples().origin.x()))
+                             .arg(number(n->center.y() + doc_.samples().origin.y()))
+                             .arg(number(n->center.z() + doc_.samples().origin.z()))
+                             .arg(doc_.selection().size()));
+}
+
+} // namespace spt::editor

@@ -1,0 +1,50 @@
+#pragma once
+// The dock's tree panel: the named trees, the edited tree's nodes (paper id, samples,
+// bounding-sphere radius, sampling-sphere radius, active), and the current node's
+// properties with the edits that take parameters (radius, automatic subtree).
+#include "editor_document.hpp"
+#include "spt/tree_builder.hpp"
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QSpinBox;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace spt::editor {
+
+/// Tree list, node tree and properties of an EditorDocument.
+class TreePanel : public QWidget {
+    Q_OBJECT
+public:
+    /// A panel showing `doc`, which must outlive it.
+    explicit TreePanel(EditorDocument& doc, QWidget* parent = nullptr);
+    /// The node tree widget (tests click in it).
+    QTreeWidget* nodes() const { return nodes_; }
+    /// Build options chosen in the panel.
+    BuildOptions build_options() const;
+
+signals:
+    /// The user asked to set the current node's sampling-sphere radius (model units).
+    void setRadiusRequested(float radius);
+    /// The user asked for an automatic subtree under the current node.
+    void buildSubtreeRequested();
+    /// The user chose colouring by level (false) or by node (true).
+    void colorByNodeChosen(bool by_node);
+
+private:
+    void rebuild();
+    void show_current();
+    EditorDocument& doc_;
+    QComboBox* trees_ = nullptr;
+    QTreeWidget* nodes_ = nullptr;
+    QLabel* properties_ = nullptr;
+    QDoubleSpinBox* radius_ = nullptr;
+    QSpinBox* leaf_size_ = nullptr;
+    QComboBox* strategy_ = nullptr;
+    bool updating_ = false;
+};
+
+} // namespace spt::editor

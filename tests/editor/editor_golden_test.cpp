@@ -1,0 +1,103 @@
+// The four views after a scripted split against golden images (the render goldens' rules),
+// and each view against `spt render` of the same view, size and overlays. The grabs are
+// also written to BUILD/test-output/editor for docs/editor.md.
+#include "editor_support.hpp"
+#include "golden.hpp"
+#include "spt/render/image.hpp"
+#include <QImage>
+#include <QProcess>
+#include <QScreen>
+#include <QTest>
+#include <gtest/gtest.h>
+
+using namespace spt;
+using namespace spt::test;
+
+namespace {
+
+// The framebuffer's bytes as drawn: Qt labels a grab premultiplied, and converting it to
+// straight alpha would rescale every see-through pixel, so only the byte order is changed.
+render::Image to_image(const QImage& grabbed) {
+    QImage q = grabbed;
+    if (q.format() != QImage::Format_RGBA8888_Premultiplied && q.format() != QImage::Format_RGBA8888)
+        q = q.convertToFormat(q.hasAlphaChannel() ? QImage::Format_RGBA8888_Premultiplied : QImage::Format_RGBA8888);
+
+    render::Image out;
+    out.width = q.width();
+    out.height = q.height();
+    out.rgba.resize(size_t(out.width) * size_t(out.height) * 4);
+    for (int y = 0; y < q.height(); ++y)
+        std::memcpy(out.pixel(0, y), q.constScanLine(y), size_t(out.width) * 4);
+    return out;
+}
+
+// Opens the test document, splits the root by the left half of the front view, frames all.
+std::unique_ptr<editor::MainWindow> split_scene(const TempDir& dir, std::string* error) {
+    auto w = open_editor(dir, write_editor_files(dir).spt, error);
+    if (!w) return nullptr;
+    editor::ViewWidget* front = w->grid().view(1);
+    QTest::mousePress(front, Qt::LeftButton, Qt::NoModifier, QPoint(1, 1));
+    QTest::mouseMove(front, QPoint(front->width() / 2, front->height() - 1));
+    QTest::mouseRelease(front, Qt::LeftButton, Qt::NoModifier, QPoint(front->width() / 2, front->height() - 1));
+    QTest::keyClick(w.get(), Qt::Key_S);
+    if (w->document().tree().node_count() != 3) {
+        *error = "the split was not made: " + w->last_message().toStdString();
+        return nullptr;
+    }
+    QTest::keyClick(w.get(), Qt::Key_Home);
+    if (!wait_ready(*w)) {
+        *error = "the views did not redraw after Home";
+        return nullptr;
+    }
+    return w;
+}
+
+} // namespace
+
+TEST(EditorGolden, FourViewsAfterAScriptedSplit) {
+    TempDir dir("editor-golden");
+    std::string error;
+    const auto w = split_scene(dir, &error);
+    ASSERT_TRUE(w) << error;
+    EXPECT_EQ(w->document().current(), NodeId(3));
+    const std::string out = editor_output_dir();
+    for (int i = 0; i < 4; ++i) {
+        editor::ViewWidget* v = w->grid().view(i);
+        const render::Image image = to_image(v->grabFramebuffer());
+        const std::string name = std::string("editor_") + render::view_name(v->view());
+        render::write_png(image, out + "/" + name + ".png");
+        EXPECT_GOLDEN(image, name);
+    }
+    // The whole window as the X server shows it, for the docs and the README.
+    QTest::qWait(200);
+    w->screen()->grabWindow(w->winId()).save(QString::fromStdString(out + "/editor_window.png"));
+}
+
+TEST(EditorGolden, EachViewMatchesSptRenderOfTheSameViewAndSize) {
+    TempDir dir("editor-vs-render");
+    std::string error;
+    const auto w = split_scene(dir, &error);
+    ASSERT_TRUE(w) << error;
+    const QString saved = QString::fromStdString(dir.file("split.spt"));
+    ASSERT_TRUE(w->save_to(saved));
+    for (int i = 0; i < 4; ++i) {
+        editor::ViewWidget* v = w->grid().view(i);
+        const render::Image view = to_image(v->grabFramebuffer());
+        const QString png = QString::fromStdString(dir.file(std::string("render_") + render::view_name(v->view()) + ".png"));
+        QProcess spt;
+        spt.start(QString(SPT_BINARY_DIR) + "/cli/spt",
+                  {"render", QString::fromStdString(dir.file("torus.obj")), "--tree", saved, "--tree-name", "authored",
+                   "--view", render::view_name(v->view()), "--size",
+                   QString("%1x%2").arg(view.width).arg(view.height), "--overlay", "spheres,node,grid,axes", "--node",
+                   "3", "-o", png});
+        ASSERT_TRUE(spt.waitForFinished(120000));
+        ASSERT_EQ(spt.exitCode(), 0) << spt.readAllStandardError().toStdString();
+        // A window shows colour only: the off-screen image keeps the alpha blending left in its
+        // framebuffer, the widget's grab is opaque. Compare what is seen.
+        render::Image expected = render::read_png(png.toStdString());
+        for (size_t k = 3; k < expected.rgba.size(); k += 4) expected.rgba[k] = 255;
+        const render::CompareResult r = render::compare_images(view, expected);
+        EXPECT_TRUE(r.passed) << render::view_name(v->view()) << ": " << r.summary();
+        if (!r.passed) render::write_png(r.diff, editor_output_dir() + "/vs_render_" + render::view_name(v->view()) + ".diff.png");
+    }
+}

@@ -1,0 +1,104 @@
+// Editor test helpers and the one QApplication of the binary.
+#include "editor_support.hpp"
+#include "spt/convert.hpp"
+#include <QApplication>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <cstdlib>
+#include <filesystem>
+#include <gtest/gtest.h>
+
+namespace spt::test {
+namespace {
+
+class EditorEnvironment : public ::testing::Environment {
+public:
+    void SetUp() override {
+        // Settings and data go to the build tree, never the user's (set before any QSettings).
+        const std::string home = std::string(SPT_BINARY_DIR) + "/test-tmp/editor-home-" + std::to_string(::getpid());
+        std::filesystem::create_directories(home);
+        ::setenv("XDG_CONFIG_HOME", (home + "/config").c_str(), 1);
+        ::setenv("XDG_DATA_HOME", (home + "/data").c_str(), 1);
+        ::setenv("QT_QPA_PLATFORM", "xcb", 1);
+        QStandardPaths::setTestModeEnabled(true);
+        QSurfaceFormat format;
+        format.setVersion(3, 3);
+        format.setProfile(QSurfaceFormat::CoreProfile);
+        format.setDepthBufferSize(24);
+        QSurfaceFormat::setDefaultFormat(format);
+        app_ = std::make_unique<QApplication>(argc_, argv_);
+        QApplication::setApplicationName("spt-editor-test");
+    }
+    void TearDown() override { app_.reset(); }
+
+private:
+    int argc_ = 1;
+    char name_[16] = "editor_tests";
+    char* argv_[2] = {name_, nullptr};
+    std::unique_ptr<QApplication> app_;
+};
+
+[[maybe_unused]] ::testing::Environment* const g_env = ::testing::AddGlobalTestEnvironment(new EditorEnvironment);
+
+} // namespace
+
+EditorFiles write_editor_files(const TempDir& dir) {
+    EditorFiles f;
+    f.mesh = QString::fromStdString(dir.file("torus.obj"));
+    f.spt = QString::fromStdString(dir.file("torus.spt"));
+    std::filesystem::copy_file(project_meshes() + "/torus.obj", f.mesh.toStdString());
+    ConvertOptions o;
+    o.auto_tolerance = false;
+    SptDocument doc = make_document(import_mesh(f.mesh.toStdString()).mesh, o);
+    // First the tree an author starts from (the root holds every sample), then the automatic one.
+    SamplingTree authored("authored", uint32_t(doc.samples.size()));
+    authored.assign_radii(doc.samples, RadiusRule{});
+    authored.compute_bounds(doc.samples, BoundsMethod::Tight);
+    doc.trees.insert(doc.trees.begin(), std::move(authored));
+    save_spt(doc, f.spt.toStdString());
+    return f;
+}
+
+editor::StartOptions test_start(const TempDir& dir) {
+    editor::StartOptions o;
+    o.autosave_seconds = 0;
+    o.recovery_dir = QString::fromStdString(dir.file("recovery"));
+    return o;
+}
+
+bool wait_ready(editor::MainWindow& window) {
+    if (!QTest::qWaitFor([&] { return !window.loading() && window.document().has_tree(); }, 120000)) return false;
+    if (!window.isVisible()) window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) return false;
+    // Shortcuts (Ctrl+S, S) reach only the active window.
+    window.activateWindow();
+    if (!QTest::qWaitForWindowActive(&window)) return false;
+    return QTest::qWaitFor(
+        [&] {
+            for (int i = 0; i < 4; ++i)
+                if (!window.grid().view(i)->has_drawn()) return false;
+            return true;
+        },
+        60000);
+}
+
+std::unique_ptr<editor::MainWindow> open_editor(const TempDir& dir, const QString& file, std::string* error) {
+    editor::StartOptions start = test_start(dir);
+    start.file = file;
+    auto w = std::make_unique<editor::MainWindow>(start);
+    w->show();
+    if (!wait_ready(*w)) {
+        *error = "the editor did not open " + file.toStdString() + ": " + w->last_error().toStdString();
+        return nullptr;
+    }
+    return w;
+}
+
+std::string editor_output_dir() {
+    const std::string dir = std::string(SPT_BINARY_DIR) + "/test-output/editor";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+} // namespace spt::test

@@ -1,0 +1,33 @@
+#pragma once
+// Helpers for the editor's UI tests: a QApplication on xcb (made once per binary, before
+// which the GL format is set), test documents written to a temporary folder, and waits.
+#include "main_window.hpp"
+#include "test_support.hpp"
+#include <QString>
+#include <memory>
+
+namespace spt::test {
+
+/// A torus mesh and its .spt (vertex samples only, so edits stay small) in `dir`.
+struct EditorFiles {
+    QString mesh; ///< torus.obj
+    QString spt;  ///< torus.spt from torus.obj, vertex samples only: trees 'authored' (root only) and 'default'
+};
+
+/// Writes the test mesh and document into `dir`.
+EditorFiles write_editor_files(const TempDir& dir);
+
+/// Options that keep a test window away from the user's settings and recovery files.
+editor::StartOptions test_start(const TempDir& dir);
+
+/// Waits until the window has finished opening and every view has drawn; false on timeout.
+bool wait_ready(editor::MainWindow& window);
+
+/// A shown window (test_start options) that has opened `file` and drawn every view; null
+/// (with the reason in `error`) if it did not get there.
+std::unique_ptr<editor::MainWindow> open_editor(const TempDir& dir, const QString& file, std::string* error);
+
+/// Where the tests write pictures (docs/editor.md uses them): BUILD/test-output/editor.
+std::string editor_output_dir();
+
+} // namespace spt::test

@@ -1,0 +1,115 @@
+// Rectangle selection: through and visible-only against analytic answers, and the three modes.
+#include "mesh/shapes.hpp"
+#include "spt/selection.hpp"
+#include "test_support.hpp"
+#include <gtest/gtest.h>
+#include <random>
+
+using namespace spt;
+
+namespace {
+
+// Orthographic view of the X-Y plane looking down -Z: object x, y in [-1, 1] fill a
+// 200x200 framebuffer, window x = (x + 1) * 100. Eye depth = 10 - z.
+ViewProjection front_view() {
+    ViewProjection v;
+    v.view = Eigen::Matrix4f::Identity();
+    v.view(2, 3) = -10;
+    v.projection = Eigen::Matrix4f::Identity();
+    v.projection(2, 2) = -0.1f;
+    v.width = v.height = 200;
+    return v;
+}
+
+SampleSet grid_samples(int n) {
+    SampleSet s;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            s.add({-0.95f + 1.9f * float(i) / float(n - 1), -0.95f + 1.9f * float(j) / float(n - 1), 0}, {0, 0, 1},
+                  uint32_t(i * n + j), 0.1f);
+    return s;
+}
+
+} // namespace
+
+TEST(Selection, ThroughSelectsExactlyThePointsInsideTheRectangle) {
+    const SampleSet s = grid_samples(21);
+    SamplingTree t("t", uint32_t(s.size()));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0, 200);
+    for (int k = 0; k < 50; ++k) {
+        const PixelRect r{u(rng), u(rng), u(rng), u(rng)};
+        std::vector<uint32_t> expected;
+        for (uint32_t i = 0; i < s.size(); ++i) {
+            // Inverse of the view: object x in [x0/100 - 1, x1/100 - 1].
+            const double x = (s.points[i].x() + 1.0) * 100.0, y = (s.points[i].y() + 1.0) * 100.0;
+            if (x >= std::min(r.x0, r.x1) && x <= std::max(r.x0, r.x1) && y >= std::min(r.y0, r.y1) &&
+                y <= std::max(r.y0, r.y1))
+                expected.push_back(i);
+        }
+        // Points exactly on a border may round either way in float; the rectangles are random.
+        EXPECT_EQ(samples_in_rect(s, t, 1, front_view(), r), expected) << k;
+    }
+}
+
+TEST(Selection, OnlyTheCurrentNodesSamplesAndTheLocalOriginCount) {
+    SampleSet s = grid_samples(5);
+    s.origin = {0.5, 0, 0}; // every point moves right by half a unit: 50 pixels
+    SamplingTree t("t", uint32_t(s.size()));
+    ASSERT_TRUE(t.split(1, {0, 1, 2, 3, 4}, s)); // the column at local x = -0.95
+    const PixelRect all{0, 0, 200, 200};
+    EXPECT_EQ(samples_in_rect(s, t, 2, front_view(), all), (std::vector<uint32_t>{0, 1, 2, 3, 4}));
+    // Object x of the column is -0.45: window x 55; a rectangle left of it holds nothing.
+    EXPECT_TRUE(samples_in_rect(s, t, 1, front_view(), {0, 0, 54, 200}).empty());
+    EXPECT_EQ(samples_in_rect(s, t, 1, front_view(), {54, 0, 56, 200}).size(), 5u);
+    EXPECT_EQ(samples_below(t, 3).size(), 20u);
+    EXPECT_TRUE(samples_below(t, 7).empty());
+}
+
+TEST(Selection, PerspectiveIgnoresPointsBehindTheEye) {
+    SampleSet s;
+    s.add({0, 0, -5}, {0, 0, 1}, 0, 0.1f); // in front of an eye at the origin looking down -Z
+    s.add({0, 0, 5}, {0, 0, 1}, 1, 0.1f);  // behind it: would project mirrored to the same pixel
+    SamplingTree t("t", 2);
+    ViewProjection v;
+    v.perspective = true;
+    const float n = 0.1f, f = 100;
+    v.projection = Eigen::Matrix4f::Zero();
+    v.projection(0, 0) = v.projection(1, 1) = 1;
+    v.projection(2, 2) = -(f + n) / (f - n);
+    v.projection(2, 3) = -2 * f * n / (f - n);
+    v.projection(3, 2) = -1;
+    v.width = v.height = 100;
+    EXPECT_EQ(samples_in_rect(s, t, 1, v, {40, 40, 60, 60}), (std::vector<uint32_t>{0}));
+}
+
+TEST(Selection, VisibleOnlyKeepsTheNearFaceOfABox) {
+    const TriangleMesh box = make_box({0.5, 0.5, 0.5}, 6);
+    const SampleSet s = test::vertex_samples(box);
+    SamplingTree t("t", uint32_t(s.size()));
+    const ViewProjection v = front_view();
+    const DepthMap depth = render_depth(box, v);
+    // The box's front face z = 0.5 covers window [50, 150]^2 at eye depth 9.5.
+    EXPECT_NEAR(depth.at(100, 100), 9.5f, 1e-4f);
+    EXPECT_EQ(depth.at(10, 10), INFINITY);
+    const PixelRect inner{60, 60, 140, 140};
+    std::vector<uint32_t> front, both;
+    for (uint32_t i = 0; i < s.size(); ++i) {
+        const Eigen::Vector3d p = s.position(i);
+        const double x = (p.x() + 1) * 100, y = (p.y() + 1) * 100;
+        if (x < 60 || x > 140 || y < 60 || y > 140) continue;
+        both.push_back(i);
+        if (p.z() > 0.49) front.push_back(i);
+    }
+    ASSERT_FALSE(front.empty());
+    ASSERT_GT(both.size(), front.size());
+    EXPECT_EQ(samples_in_rect(s, t, 1, v, inner), both);
+    EXPECT_EQ(visible_samples_in_rect(s, t, 1, v, inner, depth, 0.01f), front);
+}
+
+TEST(Selection, ModesReplaceAddSubtract) {
+    const std::vector<uint32_t> cur{1, 3, 5}, hits{3, 4};
+    EXPECT_EQ(combine_selection(cur, hits, SelectionMode::Replace), hits);
+    EXPECT_EQ(combine_selection(cur, hits, SelectionMode::Add), (std::vector<uint32_t>{1, 3, 4, 5}));
+    EXPECT_EQ(combine_selection(cur, hits, SelectionMode::Subtract), (std::vector<uint32_t>{1, 5}));
+}
