@@ -27,7 +27,7 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-// n moving spheres of the pile's sizes (radius 0.4 to 0.61) at the pile's density (one a unit cube).
+// n moving spheres of about the pile's sizes (radius 0.4 to 0.61) at the pile's density (one a unit cube).
 std::vector<BroadSphere> moving_spheres(size_t n, std::mt19937& rng) {
     const double side = std::cbrt(double(n));
     std::uniform_real_distribution<double> p(0, side), r(0.4, 0.61);
@@ -69,7 +69,7 @@ Scene lattice(const Scene& pile, size_t n) {
     std::mt19937 rng(1000);
     std::uniform_real_distribution<double> j(-0.05, 0.05), v(-0.5, 0.5);
     for (size_t i = 0; i < n; ++i) {
-        SceneObject o = pile.objects[i % 3 == 0 ? 1 : 2]; // block, pebble, pebble as in the pile
+        SceneObject o = pile.objects[i % 3 == 0 ? 1 : 2]; // grit, pebble, pebble as in the pile
         o.name = "o" + std::to_string(i);
         o.pose.translation = {double(i % side) - side / 2.0 + j(rng), double(i / (size_t(side) * side)) + 0.5,
                               double(i / side % side) - side / 2.0 + j(rng)};
