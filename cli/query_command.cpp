@@ -20,7 +20,7 @@ namespace {
 struct QueryArgs {
     std::string a, b, poses, output, level = "spheres", mode = "any", mesh_a, mesh_b, tree, backtrack = "exact";
     int repeat = 5;
-    bool culling = false;
+    bool culling = false, surfaces = false;
     double cull_angle = 60;
 };
 
@@ -55,6 +55,7 @@ int run_query(const QueryArgs& args) {
     o.level = args.level == "bounds" ? QueryLevel::Bounds : args.level == "exact" ? QueryLevel::Exact : QueryLevel::Spheres;
     o.mode = args.mode == "all" ? QueryMode::All : args.mode == "deepest" ? QueryMode::Deepest : QueryMode::Any;
     o.normal_culling = args.culling;
+    o.solids = !args.surfaces;
     o.cull_cos = float(std::cos(args.cull_angle * 3.14159265358979323846 / 180.0));
     const std::vector<PoseLine> poses = read_pose_file(args.poses); // throws BadInput naming the line
     const auto a = load(args.a, args.mesh_a, args.tree);
@@ -116,6 +117,8 @@ Action add_query_command(CLI::App& app) {
     c->add_option("--mesh-b", a->mesh_b, "Mesh of B when B is a .spt file (for --level exact)");
     c->add_option("--tree", a->tree, "Tree name in .spt files (default: the first)");
     c->add_flag("--culling", a->culling, "Normal culling (docs/queries.md)");
+    c->add_flag("--surfaces", a->surfaces,
+                "Surfaces only: an object wholly inside another's closed part does not collide (FCL's answer)");
     c->add_option("--cull-angle", a->cull_angle, "Culling cone half-angle in degrees (default 60)")->check(CLI::Range(0.0, 90.0));
     c->add_option("--backtrack", a->backtrack, "exact | paper (move back by the deepest depth)")
         ->check(CLI::IsMember({"exact", "paper"}));

@@ -12,6 +12,7 @@
 namespace spt {
 
 struct ExactData; // the exact level's triangles and triangle tree (private layout)
+struct SolidData; // where the model is solid, for containment (private layout)
 
 /// One object ready for queries.
 class CollisionModel {
@@ -30,6 +31,8 @@ public:
     bool has_mesh() const;
     /// Triangle data for the `exact` level, empty without a mesh (layout private to the library).
     const ExactData& exact() const;
+    /// Where the model is solid, and its anchor points (layout private to the library).
+    const SolidData& solid() const;
     /// Object-frame point the model's geometry is stored relative to (SampleSet::origin), model units.
     const Eigen::Vector3d& origin() const { return tree_.origin(); }
     /// Largest |x - origin()| over every sphere and triangle (model units): the model's size.
@@ -44,13 +47,14 @@ public:
     const std::vector<float>& bounds_reach() const { return bounds_reach_; }
     /// Most spheres in one active node.
     uint32_t max_leaf() const { return max_leaf_; }
-    /// Bytes of the query layout plus the exact-level data.
+    /// Bytes of the query layout, the exact-level data and the solid grids.
     size_t memory_bytes() const;
 
 private:
     void init(const SptDocument& doc, const std::string& tree_name);
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
+    std::shared_ptr<const SolidData> solid_;
     std::vector<float> bounds_reach_;
     double extent_ = 0, reach_ = 0, diagonal_ = 0;
     uint32_t max_leaf_ = 0;

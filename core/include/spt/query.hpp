@@ -3,10 +3,11 @@
 /// A query runs in A's frame: B's pose relative to A is computed in double, then
 /// B's node centres and sphere blocks are moved into A's frame as the walk reaches
 /// them (lazy update), in float because the values are object-local.
-/// Collision means the surfaces meet: at level `spheres` two sampling spheres
+/// Collision means the models meet: at level `spheres` two sampling spheres
 /// overlap (|c1 - c2| < r1 + r2, touching is not a collision), at `bounds` two
-/// leaf bounding spheres overlap, at `exact` two triangles share a point.
-/// One object wholly inside the other without surfaces meeting is not a collision.
+/// leaf bounding spheres overlap, at `exact` two triangles share a point; and, with
+/// QueryOptions::solids, a piece of one object lies inside a closed part of the other
+/// (docs/queries.md, "Solids and surfaces").
 #include "spt/collision_model.hpp"
 #include "spt/pose.hpp"
 #include "spt/query_scratch.hpp"
@@ -39,6 +40,9 @@ struct QueryOptions {
     float cull_cos = 0.5f; ///< cos of 60 degrees: skips normals within 60 degrees of pointing straight away
     /// Added to every sum of radii (model units): a query of the model grown by this much.
     float inflate = 0;
+    /// Closed parts are solids: an object wholly inside another's closed part collides though
+    /// no surfaces meet. false: surfaces only, as FCL answers. Open parts are surfaces always.
+    bool solids = true;
 };
 
 /// Work done by one query.
@@ -49,7 +53,8 @@ struct QueryCounters {
     uint64_t triangle_tests = 0; ///< exact triangle-triangle tests
 };
 
-/// The deepest contact (A's sphere against B's), in the world frame.
+/// The deepest contact (A's sphere against B's), in the world frame. A collision found by
+/// containment alone has depth 0 and the contained point as its point.
 struct Contact {
     double depth = 0;                                   ///< r1 + r2 - |c1 - c2|, model units
     Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< middle of the overlap

@@ -2,6 +2,7 @@
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include "mesh/weld.hpp"
+#include "geometry/ray_parity.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -41,6 +42,26 @@ double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) 
         v += (m.positions[t[0]] - o).dot((m.positions[t[1]] - o).cross(m.positions[t[2]] - o));
     }
     return v / 6.0;
+}
+
+// For each closed component: how many other closed components hold it (ray parity from one
+// of its vertices, exact). Components hold each other only where bounding boxes nest.
+std::vector<int> nesting_depths(const TriangleMesh& m, const std::vector<std::vector<uint32_t>>& components) {
+    std::vector<int> depth(components.size(), 0);
+    std::vector<Eigen::AlignedBox3d> box(components.size());
+    std::vector<size_t> closed;
+    for (size_t c = 0; c < components.size(); ++c) {
+        if (m.on_open_part[components[c][0]]) continue;
+        closed.push_back(c);
+        for (uint32_t f : components[c])
+            for (uint32_t v : m.triangles[f]) box[c].extend(m.positions[v]);
+    }
+    for (size_t i : closed)
+        for (size_t j : closed)
+            if (i != j && box[j].contains(box[i]) &&
+                inside_by_parity(m.positions, m.triangles, components[j], m.positions[m.triangles[components[i][0]][0]]))
+                ++depth[i];
+    return depth;
 }
 
 void compute_normals(TriangleMesh& m, ImportReport& report, double area_eps) {
@@ -202,9 +223,12 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         if (non_orientable)
             r.warnings.push_back("surface is not orientable (" + std::to_string(non_orientable / 2) +
                                  " edges disagree after re-winding)");
-        // A closed part with negative volume is inside out.
-        for (const auto& comp : components) {
-            if (!m.on_open_part[comp[0]] && signed_volume(m, comp) < 0) {
+        // A closed part faces out of the solid: positive volume, unless it is the inner wall
+        // of a hollow (inside an odd number of other closed parts), which faces the cavity.
+        const std::vector<int> nesting = nesting_depths(m, components);
+        for (size_t c = 0; c < components.size(); ++c) {
+            const auto& comp = components[c];
+            if (!m.on_open_part[comp[0]] && (signed_volume(m, comp) < 0) != (nesting[c] % 2 == 1)) {
                 for (uint32_t f : comp) std::swap(m.triangles[f][1], m.triangles[f][2]);
                 ++r.inverted_components;
             }

@@ -71,6 +71,8 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
                 if (mode == QueryMode::All) scratch.buffers().tri_pairs.push_back({p, q});
             }
     }
+    run.roots_overlap = true; // no tree: containment is asked whenever nothing else met
+    run.check_containment();
     return run.res;
 }
 

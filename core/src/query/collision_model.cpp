@@ -3,6 +3,7 @@
 #include "spt/error.hpp"
 #include "base/float_round.hpp"
 #include "query/exact_data.hpp"
+#include "query/solid.hpp"
 #include "query/triangle_tree.hpp"
 #include <algorithm>
 #include <cmath>
@@ -23,7 +24,10 @@ const SamplingTree& pick_tree(const SptDocument& doc, const std::string& name) {
 
 } // namespace
 
-CollisionModel::CollisionModel(const SptDocument& doc, const std::string& tree_name) { init(doc, tree_name); }
+CollisionModel::CollisionModel(const SptDocument& doc, const std::string& tree_name) {
+    init(doc, tree_name);
+    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, exact()));
+}
 
 CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh, const std::string& tree_name) {
     init(doc, tree_name);
@@ -36,6 +40,10 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     e.positions.resize(mesh.positions.size());
     for (size_t v = 0; v < mesh.positions.size(); ++v) e.positions[v] = mesh.positions[v] - o;
     e.triangles = mesh.triangles;
+    // Unknown openness counts as open: no solid is assumed that the mesh does not close.
+    e.closed.assign(e.triangles.size(), 0);
+    if (mesh.on_open_part.size() == e.triangles.size())
+        for (size_t f = 0; f < e.closed.size(); ++f) e.closed[f] = !mesh.on_open_part[f];
     const size_t nt = e.triangles.size();
     e.tri_sphere.assign(nt * 4, 0);
     for (uint32_t f = 0; f < nt; ++f) {
@@ -52,6 +60,7 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     }
     detail::build_triangle_tree(e);
     exact_ = std::move(data);
+    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, *exact_));
 }
 
 bool CollisionModel::has_mesh() const { return exact_ && !exact_->triangles.empty(); }
@@ -59,6 +68,11 @@ bool CollisionModel::has_mesh() const { return exact_ && !exact_->triangles.empt
 const ExactData& CollisionModel::exact() const {
     static const ExactData kNone;
     return exact_ ? *exact_ : kNone;
+}
+
+const SolidData& CollisionModel::solid() const {
+    static const SolidData kNone;
+    return solid_ ? *solid_ : kNone;
 }
 
 void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) {
@@ -98,7 +112,7 @@ size_t CollisionModel::memory_bytes() const {
     return tree_.memory_bytes() + e.positions.capacity() * sizeof(Eigen::Vector3d) +
            e.triangles.capacity() * sizeof(Triangle) +
            e.tri_nodes.capacity() * sizeof(TriangleNode) + e.tri_order.capacity() * sizeof(uint32_t) +
-           e.tri_sphere.capacity() * sizeof(float);
+           e.tri_sphere.capacity() * sizeof(float) + e.closed.capacity() + solid().memory_bytes();
 }
 
 } // namespace spt

@@ -25,6 +25,7 @@ struct TriangleNode {
 struct ExactData {
     std::vector<Eigen::Vector3d> positions;   ///< mesh vertices, model units
     std::vector<Triangle> triangles;          ///< mesh triangles
+    std::vector<uint8_t> closed;              ///< per triangle: 1 if its part is closed (bounds a solid)
     std::vector<TriangleNode> tri_nodes;      ///< root first, depth-first (the left child follows its parent)
     std::vector<uint32_t> tri_order;          ///< triangle indices; a leaf holds tri_order[first, first + count)
     std::vector<float> tri_sphere;            ///< per triangle: centre xyz and radius of a bounding sphere

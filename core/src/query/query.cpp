@@ -284,6 +284,7 @@ void QueryRun::run() {
     float d2 = (ca - cb).squaredNorm();
     ++res.counters.bound_tests;
     if (const float prune = ra + rb + pad; d2 > prune * prune) return;
+    roots_overlap = true;
     bool carried = true;
     for (;;) {
         if (!carried) {
@@ -384,10 +385,16 @@ QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, c
     QueryRun run(a, b, b_in_a, options, scratch);
     if (options.level != QueryLevel::Exact) {
         run.run();
+        run.check_containment();
     } else {
         // Triangles decide; at deepest the contact then comes from the sampling spheres.
         run.run_triangles();
-        if (options.mode == QueryMode::Deepest && run.res.collide) run.run();
+        run.check_containment();
+        if (options.mode == QueryMode::Deepest && run.res.collide) {
+            const Contact contained = run.res.deepest;
+            run.run();
+            if (!run.have_best) run.res.deepest = contained; // no spheres overlap: containment's contact
+        }
     }
     return run.res;
 }

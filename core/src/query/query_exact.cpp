@@ -75,6 +75,7 @@ void QueryRun::run_triangles() {
         if ((ca - cb).squaredNorm() > prune * prune) continue;
         ++res.counters.bound_tests;
         if (obbs_disjoint(na.box, b_tri_node(j).box, f.margin)) continue;
+        roots_overlap = true; // the first pair to pass is the roots
         if (na.is_leaf() && nb.is_leaf()) {
             for (uint32_t p = na.first; p < na.first + na.count; ++p)
                 for (uint32_t q = nb.first; q < nb.first + nb.count; ++q) {

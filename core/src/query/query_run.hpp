@@ -44,6 +44,9 @@ struct QueryRun {
     bool triangle_pair(uint32_t ta, uint32_t tb);
     // Level `exact`: walks the triangle trees; sets res.collide (and, in mode all, the triangle pairs).
     void run_triangles();
+    // With options.solids, after a walk that found nothing though the roots overlap: is a piece
+    // of either model inside a closed part of the other? Sets res.collide and the contact.
+    void check_containment();
     // Tests the spheres of active nodes i (A) and j (B), ca being i's centre; returns how
     // many pairs it recorded (mode all: every overlapping pair; any and deepest: the
     // closest one, or none).
@@ -61,6 +64,7 @@ struct QueryRun {
     QueryFrame f;
     bool exact;
     bool have_best = false;
+    bool roots_overlap = false; // set by the walks: containment is possible only then
     QueryResult res; // res.deepest is written only by record(), so it stays default without a contact
 };
 

@@ -15,9 +15,13 @@ Eigen::Vector3d sphere_centre(const CompactTree& t, uint32_t node, uint32_t k) {
     return t.sphere_centre(t.nodes()[node], k).cast<double>();
 }
 
+// Steps of 1% of the larger diagonal from `start` (where the model collides), then bisection
+// to 1e-6 of it: for the exact level, and for a sphere model held by containment alone.
 BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
-                             const Eigen::Vector3d& back, const QueryOptions& options, QueryScratch& scratch) {
+                             const Eigen::Vector3d& back, const QueryOptions& options, QueryScratch& scratch,
+                             double start = 0, int queries = 0) {
     BacktrackResult r;
+    r.queries = queries;
     QueryOptions q = options;
     q.mode = QueryMode::Any;
     auto collides = [&](double s) {
@@ -26,13 +30,13 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
         ++r.queries;
         return collide_relative(a, b, p, q, scratch).collide;
     };
-    if (!collides(0)) return r;
-    const double diag = b.diagonal() > 0 ? b.diagonal() : 2 * b.extent();
+    if (start == 0 && !collides(0)) return r;
+    const double diag = std::max({a.diagonal(), b.diagonal(), 2 * a.extent(), 2 * b.extent()});
     const double step = 0.01 * diag;
-    double lo = 0, hi = step;
+    double lo = start, hi = start + step;
     while (collides(hi)) {
         lo = hi, hi += step;
-        if (hi > 100 * diag + 2 * (a.extent() + b.extent())) {
+        if (hi - start > 100 * diag + 2 * (a.extent() + b.extent())) {
             r.converged = false;
             break;
         }
@@ -76,6 +80,8 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
             r.distance = s;
             return r;
         }
+        // Held by containment alone (no sphere pairs to solve): step out instead.
+        if (scratch.pairs().empty()) return by_bisection(a, b, b_in_a, back, q, scratch, s, r.queries);
         const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
         const Eigen::Vector3d t = local_translation(a, b, rot, p.translation); // the centres are local
         double step = 0, reach_max = 0;

@@ -1,0 +1,31 @@
+#pragma once
+// What a model needs to tell a point inside it from one outside: solid grids for the
+// sphere levels and the exact level, and the points by which the model itself is tested
+// against the other model (one on each connected piece).
+#include "query/solid_grid.hpp"
+#include <Eigen/Core>
+#include <vector>
+
+namespace spt {
+
+class CompactTree;
+struct ExactData;
+
+struct SolidData {
+    SolidGrid of_spheres;                  // levels bounds and spheres: walled in by sampling spheres
+    SolidGrid of_triangles;                // level exact: walled in by the triangles of closed parts
+    std::vector<Eigen::Vector3f> anchors;  // local frame: a point on each connected piece of the model
+    std::vector<uint32_t> anchor_vertex;   // with a mesh: the vertex each anchor is (exact level)
+
+    /// Grids and anchors of a model: pieces are the mesh's vertex-connected components when
+    /// `e` has triangles, else the subtrees of the sampling tree three levels down.
+    static SolidData build(const CompactTree& tree, const ExactData& e);
+    /// Bytes held.
+    size_t memory_bytes() const;
+};
+
+/// Exact: is local point p inside the closed parts of `e` (odd crossings of a ray with their
+/// triangles, decided by orientation predicates; a point on a closed triangle counts as inside)?
+bool inside_closed_parts(const ExactData& e, const Eigen::Vector3d& p);
+
+} // namespace spt

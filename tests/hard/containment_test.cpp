@@ -1,0 +1,111 @@
+// Containment: a closed part is a solid at every level (an object wholly inside it collides
+// though no surfaces meet); open parts hold nothing; --surfaces gives FCL's answer.
+#include "hard_support.hpp"
+#include "spt/response.hpp"
+#include "query/brute_force.hpp"
+#include <gtest/gtest.h>
+
+namespace spt {
+namespace {
+
+const QueryLevel kLevels[] = {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact};
+
+// An open-topped box: a closed box without the faces on its +z side.
+TriangleMesh open_box(const Eigen::Vector3d& half) {
+    const TriangleMesh closed = make_box(half, 4);
+    std::vector<Triangle> t;
+    for (const auto& tri : closed.triangles) {
+        bool top = true;
+        for (uint32_t v : tri) top = top && closed.positions[v].z() > half.z() - 1e-9;
+        if (!top) t.push_back(tri);
+    }
+    return prepare_mesh("open box", closed.positions, std::move(t)).mesh;
+}
+
+// A hollow shell: a box with a box-shaped cavity (the inner surface faces into the cavity).
+TriangleMesh hollow_box(double outer, double inner) {
+    const TriangleMesh a = make_box(Eigen::Vector3d::Constant(outer), 4), b = make_box(Eigen::Vector3d::Constant(inner), 4);
+    std::vector<Eigen::Vector3d> p = a.positions;
+    std::vector<Triangle> t = a.triangles;
+    const uint32_t base = uint32_t(p.size());
+    for (const auto& q : b.positions) p.push_back(q);
+    for (const auto& tri : b.triangles) t.push_back({tri[0] + base, tri[2] + base, tri[1] + base});
+    return prepare_mesh("hollow box", std::move(p), std::move(t)).mesh;
+}
+
+bool collides(const hard::Object& a, const hard::Object& b, const Pose& p, QueryLevel level, bool solids = true) {
+    QueryScratch s;
+    QueryOptions o;
+    o.level = level;
+    o.solids = solids;
+    const bool tree = collide_relative(a.model, b.model, p, o, s).collide;
+    EXPECT_EQ(tree, collide_brute_force(a.model, b.model, p, o, s).collide) << "level " << int(level);
+    return tree;
+}
+
+TEST(Containment, SmallCubeWhollyInsideABigCubeCollidesAtEveryLevelAndEitherOrder) {
+    for (double scale : {1e-4, 1.0, 1e4}) {
+        const auto big = hard::make_object(hard::transformed(make_box({1, 1, 1}, 4), scale, Eigen::Vector3d::Zero()));
+        const auto small = hard::make_object(hard::transformed(make_box({0.1, 0.1, 0.1}, 2), scale, Eigen::Vector3d::Zero()));
+        const Pose off{Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized())),
+                       scale * Eigen::Vector3d(0.2, -0.3, 0.1)};
+        for (QueryLevel level : kLevels) {
+            EXPECT_TRUE(collides(*big, *small, off, level)) << "scale " << scale << " level " << int(level);
+            EXPECT_TRUE(collides(*small, *big, off.inverse(), level)) << "scale " << scale << " level " << int(level);
+        }
+        // Surfaces only (FCL's answer): no surfaces meet.
+        EXPECT_FALSE(collides(*big, *small, off, QueryLevel::Exact, false));
+        EXPECT_FALSE(collides(*small, *big, off.inverse(), QueryLevel::Exact, false));
+        // Moved out of the big cube, apart.
+        const Pose out{off.rotation, scale * Eigen::Vector3d(3, 0, 0)};
+        for (QueryLevel level : kLevels) EXPECT_FALSE(collides(*big, *small, out, level));
+    }
+}
+
+TEST(Containment, ObjectInTheCavityOfAHollowShellDoesNotCollide) {
+    const auto shell = hard::make_object(hollow_box(1.0, 0.7));
+    const auto small = hard::make_object(make_box({0.1, 0.1, 0.1}, 2));
+    const Pose in_cavity{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.2, 0.1, -0.3)};
+    const Pose in_wall{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.85, 0.0, 0.0)}; // 0.75..0.95 inside the wall
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        EXPECT_FALSE(collides(*shell, *small, in_cavity, level)) << "level " << int(level);
+    }
+    EXPECT_TRUE(collides(*shell, *small, in_wall, QueryLevel::Exact));
+}
+
+TEST(Containment, OpenBoxHoldsNothing) {
+    const auto box = hard::make_object(open_box({1, 1, 1}));
+    const auto small = hard::make_object(make_box({0.1, 0.1, 0.1}, 2));
+    const Pose inside{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.1, -0.2, 0)};
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact})
+        EXPECT_FALSE(collides(*box, *small, inside, level)) << "level " << int(level);
+}
+
+TEST(Containment, SheetInsideAClosedSolidCollides) {
+    // A's solid holds every piece of B, open or not: the sheet lies in A's material.
+    const auto big = hard::make_object(make_box({1, 1, 1}, 4));
+    const auto sheet = hard::make_object(make_sheet(0.5, 4));
+    const Pose p{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0.1, 0.2)};
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) EXPECT_TRUE(collides(*big, *sheet, p, level));
+}
+
+TEST(Containment, BacktrackMovesAContainedObjectOut) {
+    const auto big = hard::make_object(make_box({1, 1, 1}, 4));
+    const auto small = hard::make_object(make_box({0.1, 0.1, 0.1}, 2));
+    const Pose inside{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.2, 0, 0)};
+    const Eigen::Vector3d motion(-1, 0, 0); // moving in along -x: backing out is along +x
+    QueryScratch s;
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        QueryOptions o;
+        o.level = level;
+        const BacktrackResult r = backtrack_relative(big->model, small->model, inside, motion, o, BacktrackRule::Exact, s);
+        ASSERT_TRUE(r.converged);
+        // Out when the small cube clears the big one's face: 1 - 0.2 + 0.1 = 0.9, within the models' tolerance.
+        EXPECT_NEAR(r.distance, 0.9, 0.03) << "level " << int(level);
+        const Pose out{inside.rotation, inside.translation + r.distance * Eigen::Vector3d::UnitX()};
+        EXPECT_FALSE(collide_relative(big->model, small->model, out, o, s).collide);
+    }
+}
+
+} // namespace
+} // namespace spt
