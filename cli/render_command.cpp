@@ -6,6 +6,7 @@
 #include "spt/error.hpp"
 #include "spt/render/offscreen.hpp"
 #include "spt/render/renderer.hpp"
+#include "spt/render/scene_drawing.hpp"
 #include "spt/render/tree_overlay.hpp"
 #include <algorithm>
 #include <chrono>
@@ -47,7 +48,9 @@ private:
     Clock::time_point last_;
 };
 
-const std::vector<std::string> kOverlays = {"spheres", "bounds", "node", "wire", "points", "grid", "axes", "none"};
+const std::vector<std::string> kOverlays = {"spheres", "bounds", "node",   "wire",  "points", "grid",  "axes",
+                                            "none",    "contacts", "normals", "pairs", "ghost",  "trails"};
+const std::set<std::string> kSceneOnly = {"contacts", "normals", "pairs", "ghost", "trails"};
 
 bool is_spt_file(const std::string& path) {
     char magic[6] = {};
@@ -101,11 +104,61 @@ View parse_view(const std::string& v) {
     return View::Camera;
 }
 
+bool is_scene_file(const std::string& path) {
+    return path.size() > 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+}
+
+// Frame k is the state after step k (0: the initial state); only what an overlay needs is computed.
+int run_scene_render(const RenderArgs& a, int width, int height, const std::vector<int>& frames) {
+    std::set<std::string> names(a.overlays.begin(), a.overlays.end());
+    if (a.overlays.empty()) names = {"grid", "axes"};
+    for (const std::string& n : names)
+        if (n == "bounds" || n == "node" || n == "wire" || n == "points")
+            throw Error(ErrorKind::Usage, "--overlay " + n + " is for a mesh or .spt INPUT, not a scene");
+    SceneOverlays o;
+    o.contacts = names.count("contacts"), o.normals = names.count("normals"), o.pairs = names.count("pairs");
+    o.ghost = names.count("ghost"), o.trails = names.count("trails"), o.spheres = names.count("spheres");
+    const Scene scene = load_scene(a.input);
+    Simulation sim(scene, effects_for_overlays(scene.effects, o));
+    auto context = make_offscreen_context(a.backend, width, height);
+    auto renderer = std::make_unique<Renderer>(context->loader());
+    const SceneDrawing drawing(*renderer, sim.scene());
+    std::vector<std::vector<Eigen::Vector3f>> trails(scene.objects.size());
+    auto record = [&] {
+        if (o.trails)
+            for (size_t i = 0; i < trails.size(); ++i) trails[i].push_back(sim.poses()[i].translation.cast<float>());
+    };
+    record();
+    // The camera is fitted once, to the initial state, so that frames line up.
+    std::vector<Pose> initial;
+    for (const SceneObject& so : scene.objects) initial.push_back(so.pose);
+    Bounds bounds = renderer->bounds(drawing.frame(initial, nullptr, {}, {}, {}));
+    if (bounds.empty()) bounds.add(Eigen::Vector3f::Zero());
+    const Camera camera = fit_camera(parse_view(a.view), bounds);
+    const StepResult* step = nullptr;
+    for (int f : frames) {
+        while (sim.steps_done() < f) step = &sim.step(), record();
+        Frame frame = drawing.frame(sim.poses(), step, sim.ghost_poses(), trails, o);
+        frame.grid = names.count("grid") > 0;
+        frame.axes = names.count("axes") > 0;
+        renderer->draw(frame, camera, Viewport{0, 0, width, height}, context->framebuffer());
+        write_png(context->read_pixels(), output_name(a.output, f));
+    }
+    renderer.reset(); // GL objects go before their context
+    return 0;
+}
+
 int run_render(const RenderArgs& a) {
     const auto [width, height] = parse_size(a.size);
     const std::vector<int> frames = parse_frames(a);
     if (frames.size() > 1 && a.output.find("{frame}") == std::string::npos)
         throw Error(ErrorKind::Usage, "-o " + a.output + ": with --frames, the output name needs {frame}");
+    if (is_scene_file(a.input)) {
+        if (a.view == "quad") throw Error(ErrorKind::Usage, "--view quad is for a mesh or .spt INPUT, not a scene");
+        return run_scene_render(a, width, height, frames);
+    }
+    for (const std::string& n : a.overlays)
+        if (kSceneOnly.count(n)) throw Error(ErrorKind::Usage, "--overlay " + n + " needs a scene (SCENE.json) INPUT");
 
     std::set<std::string> overlays(a.overlays.begin(), a.overlays.end());
     const bool spt_input = is_spt_file(a.input);
@@ -218,9 +271,12 @@ Action add_render_command(CLI::App& app) {
     CLI::App* c = app.add_subcommand("render", "Render a mesh and its sampling tree off screen to PNG");
     c->footer("Overlays: spheres (sampling spheres), bounds (bounding spheres of --node and --bounds-depth levels\n"
               "below), node (highlight --node), wire (mesh edges), points (mesh vertices), grid, axes, none.\n"
+              "A scene (SCENE.json) INPUT: frame k is the state after step k; overlays contacts, normals, pairs,\n"
+              "ghost (pose before the response), trails, spheres, grid, axes (docs/scenes.md).\n"
               "Default overlays: grid,axes (a .spt INPUT: spheres,grid,axes). {frame} in OUT is replaced by the\n"
               "frame number. Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write. See docs/rendering.md.");
-    c->add_option("input", a->input, "Mesh file (any format assimp reads) or a .spt file (spheres only)")->required();
+    c->add_option("input", a->input, "Mesh file (any format assimp reads), a .spt file (spheres only) or a scene (.json)")
+        ->required();
     c->add_option("-o,--output", a->output, "Output PNG; {frame} is replaced by the frame number")->required();
     c->add_option("--tree", a->tree_path, "Sampling-tree file of the mesh (default: built when an overlay needs it)");
     c->add_option("--tree-name", a->tree_name, "Tree to show from the file (default: the first)");

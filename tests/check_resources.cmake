@@ -1,5 +1,6 @@
 # Regenerates bundled files (meshes or scenes) and compares them byte for byte with the folder
 # holding them. GEN: generator, SRC: bundled folder, OUT: scratch folder, HINT: how to refresh.
+file(REMOVE_RECURSE ${OUT}) # files of an earlier generator must not count
 execute_process(COMMAND ${GEN} ${OUT} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${GEN} failed (${rc})")

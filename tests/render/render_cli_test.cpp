@@ -1,6 +1,8 @@
 // `spt render` as a user runs it: the real binary, real files, exit codes.
 #include "spt/convert.hpp"
 #include "spt/render/image.hpp"
+#include "run_command.hpp"
+#include <unistd.h>
 #include "test_meshes.hpp"
 #include <cstdlib>
 #include <filesystem>
@@ -186,4 +188,23 @@ TEST_F(RenderCli, egl_backend_writes_the_same_bytes) {
     if (r.code == 1 && r.err.find("egl") != std::string::npos) GTEST_SKIP() << "EGL unavailable: " << r.err;
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(slurp(dir / "o.png"), slurp(dir / "e.png"));
+}
+
+// Scenes: one PNG a frame, overlays a scene needs refused for meshes.
+TEST(RenderSceneCli, FramesAreWrittenOneAPngAndSceneOverlaysNeedAScene) {
+    const std::string dir = std::string(SPT_BINARY_DIR) + "/test-tmp/render-scene-" + std::to_string(::getpid());
+    std::filesystem::create_directories(dir);
+    const std::string scene = std::string(SPT_SOURCE_DIR) + "/resources/scenes/thin_wall.json";
+    auto r = spt::test::run_command(spt::test::spt_binary() + " render " + spt::test::q(scene) +
+                                    " --size 64x64 --frames 0:2 --overlay contacts,normals,ghost,trails -o " +
+                                    spt::test::q(dir + "/f{frame}.png"));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    for (int f = 0; f <= 2; ++f) EXPECT_TRUE(std::filesystem::exists(dir + "/f" + std::to_string(f) + ".png"));
+    // Frame 0 (the initial state) and frame 2 differ: the ball moved.
+    EXPECT_NE(spt::render::read_png(dir + "/f0.png").rgba, spt::render::read_png(dir + "/f2.png").rgba);
+    r = spt::test::run_command(spt::test::spt_binary() + " render " +
+                               spt::test::q(std::string(SPT_SOURCE_DIR) + "/resources/meshes/box.ply") +
+                               " --overlay contacts -o " + spt::test::q(dir + "/m.png"));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    std::filesystem::remove_all(dir);
 }

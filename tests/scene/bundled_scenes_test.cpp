@@ -85,7 +85,7 @@ TEST(BundledScenes, PileHasAThousandMovingObjectsAndItsBroadPhaseIsExact) {
     for (int i = 0; i < 3; ++i) {
         const StepResult& r = sim.step();
         EXPECT_EQ(r.counters.candidate_pairs, all_overlapping_pairs(sim.broad_spheres()).size());
-        EXPECT_GT(r.counters.candidate_pairs, 1000u);
+        EXPECT_GT(r.counters.candidate_pairs, 500u); // the lattice's neighbours and the floor
     }
 }
 

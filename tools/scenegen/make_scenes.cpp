@@ -124,14 +124,16 @@ void box_settle(const fs::path& dir, const meshgen::RawMesh& floor) {
 }
 
 // 1,000 small objects on a jittered 10 x 10 x 10 lattice above a floor: the broad phase's scene.
-// Their models are sampled at the vertices only (a few hundred spheres each).
+// Their models are sampled at the vertices only (162 spheres each).
 void pile(const fs::path& dir) {
     ConvertOptions coarse;
     coarse.auto_tolerance = false;
     save_spt(make_document(meshgen::prepare(meshgen::icosphere(0.4, 2), "pebble").mesh, coarse),
              (dir / "pebble.spt").string());
-    save_spt(make_document(meshgen::prepare(meshgen::box(0.7, 0.7, 0.7, 3), "block").mesh, coarse),
-             (dir / "block.spt").string());
+    // Flat faces would need face samples (a box's vertices alone leave them open), and deep
+    // face-on-face overlaps in a heap cost thousands of sphere pairs: pebbles of two sizes.
+    save_spt(make_document(meshgen::prepare(meshgen::icosphere(0.3, 2), "grit").mesh, coarse),
+             (dir / "grit.spt").string());
     std::mt19937 rng(1000);
     json s = header(0.01, 300, {"motion", "gravity", "contacts", "depth", "response"});
     s["response"] = {{"rule", "backtrack"}, {"restitution", 0.2}};
@@ -140,7 +142,7 @@ void pile(const fs::path& dir) {
     floor["scale"] = 2;
     objects.push_back(floor);
     for (int i = 0; i < 1000; ++i) {
-        json o = object("o" + std::to_string(i), i % 3 == 0 ? "block.spt" : "pebble.spt");
+        json o = object("o" + std::to_string(i), i % 3 == 0 ? "grit.spt" : "pebble.spt");
         o["position"] = vec(1.0 * (i % 10) - 4.5 + uniform(rng, -0.05, 0.05), 1.0 * (i / 100) + 0.5,
                             1.0 * (i / 10 % 10) - 4.5 + uniform(rng, -0.05, 0.05));
         o["velocity"] = vec(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5));

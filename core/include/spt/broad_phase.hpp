@@ -1,8 +1,8 @@
 #pragma once
-/// Broad phase over bounding spheres (world frame, model units): sort and sweep along the
-/// axis of largest spread, keeping last step's order so that sorting a slowly moving scene
-/// is linear. Candidate pairs are exactly the pairs whose spheres overlap (|c1 - c2| < r1 + r2),
-/// leaving out pairs of two static objects.
+/// Broad phase over bounding spheres (world frame, model units): a uniform grid of cells twice
+/// the largest radius up to 4 times the median, each sphere in the cell of its centre and tested
+/// against its own and the neighbouring cells; larger spheres are tested against all. Candidate pairs are exactly
+/// the pairs whose spheres overlap (|c1 - c2| < r1 + r2), leaving out pairs of two static objects.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
@@ -33,16 +33,23 @@ inline bool spheres_overlap(const BroadSphere& s, const BroadSphere& t) {
     return dx * dx + dy * dy + dz * dz < r * r;
 }
 
-/// Sort and sweep with memory between calls (temporal coherence); one per simulation.
+/// The grid broad phase; keeps its buffers between calls (one per simulation).
 class BroadPhase {
 public:
     /// Overlapping pairs of `spheres`, sorted by (a, b); static-static pairs left out.
     const std::vector<CandidatePair>& find(const std::vector<BroadSphere>& spheres);
 
 private:
-    std::vector<uint32_t> order_;  // object indices sorted by interval start on the sweep axis
-    std::vector<double> lo_, hi_, x_, y_, z_, r_; // sorted order
-    std::vector<uint8_t> static_;
+    struct Cell {
+        int64_t xyz[3]; // cell coordinates
+        uint64_t key;   // packed coordinates
+        uint32_t index; // sphere
+    };
+    std::vector<Cell> cells_;   // small spheres by cell
+    std::vector<uint64_t> keys_;  // distinct cell keys, sorted
+    std::vector<uint32_t> starts_; // first entry of each key's run in cells_, then cells_.size()
+    std::vector<uint32_t> big_; // spheres larger than half a cell
+    std::vector<double> radii_;
     std::vector<CandidatePair> pairs_;
 };
 

@@ -1,62 +1,89 @@
-// Sort and sweep over bounding spheres; insertion sort on last step's order.
+// Broad phase on a uniform grid: each sphere in the cell of its centre, neighbouring cells
+// paired; spheres larger than half a cell tested against every other sphere.
 #include "spt/broad_phase.hpp"
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace spt {
+namespace {
+
+constexpr uint64_t kMask = (1ull << 21) - 1;
+
+// Cell coordinates packed 21 bits an axis; far coordinates wrap, which only adds candidates
+// that the exact test then drops (and duplicates that the final unique removes).
+uint64_t pack(int64_t x, int64_t y, int64_t z) {
+    return ((uint64_t(x) & kMask) << 42) | ((uint64_t(y) & kMask) << 21) | (uint64_t(z) & kMask);
+}
+
+int64_t cell_of(double v, double inv) {
+    const double c = std::floor(v * inv);
+    return int64_t(std::clamp(c, -4.0e18, 4.0e18));
+}
+
+} // namespace
 
 const std::vector<CandidatePair>& BroadPhase::find(const std::vector<BroadSphere>& s) {
     const size_t n = s.size();
     pairs_.clear();
-    if (order_.size() != n) {
-        order_.resize(n);
-        std::iota(order_.begin(), order_.end(), 0u);
+    if (n < 2) return pairs_;
+    auto test = [&](uint32_t a, uint32_t b) {
+        if (s[a].is_static && s[b].is_static) return;
+        if (spheres_overlap(s[a], s[b])) pairs_.push_back(a < b ? CandidatePair{a, b} : CandidatePair{b, a});
+    };
+    // Spheres up to 4 times the median radius go in cells twice the largest of them, so a sphere
+    // meets only its 26 neighbour cells; the few larger ones (floors, walls) are tested against all.
+    radii_.resize(n);
+    for (size_t i = 0; i < n; ++i) radii_[i] = s[i].radius;
+    std::nth_element(radii_.begin(), radii_.begin() + long(n / 2), radii_.end());
+    const double limit = 4 * radii_[n / 2];
+    double r_small = 0;
+    for (const BroadSphere& b : s)
+        if (b.radius <= limit) r_small = std::max(r_small, b.radius);
+    const double h = r_small > 0 ? 2 * r_small : 1.0, inv = 1 / h;
+    big_.clear();
+    cells_.clear();
+    for (uint32_t i = 0; i < n; ++i) {
+        if (!(s[i].radius <= 0.5 * h)) {
+            big_.push_back(i);
+            continue;
+        }
+        const Eigen::Vector3d& c = s[i].center;
+        cells_.push_back({{cell_of(c.x(), inv), cell_of(c.y(), inv), cell_of(c.z(), inv)}, 0, i});
+        Cell& e = cells_.back();
+        e.key = pack(e.xyz[0], e.xyz[1], e.xyz[2]);
     }
-    // Sweep along the axis where the centres spread most: fewest intervals overlap there.
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero(), sq = Eigen::Vector3d::Zero();
-    for (const BroadSphere& b : s) mean += b.center, sq += b.center.cwiseProduct(b.center);
-    int axis = 0;
-    if (n) {
-        const Eigen::Vector3d var = sq / double(n) - (mean / double(n)).cwiseProduct(mean / double(n));
-        var.maxCoeff(&axis);
-    }
-    lo_.resize(n);
-    for (size_t i = 0; i < n; ++i) lo_[i] = s[i].center[axis] - s[i].radius; // by object index here
-    // Insertion sort: last step's order is nearly right when objects move a little.
-    for (size_t i = 1; i < n; ++i) {
-        const uint32_t v = order_[i];
-        const double key = lo_[v];
-        size_t j = i;
-        while (j > 0 && lo_[order_[j - 1]] > key) order_[j] = order_[j - 1], --j;
-        order_[j] = v;
-    }
-    hi_.resize(n), x_.resize(n), y_.resize(n), z_.resize(n), r_.resize(n), static_.resize(n);
-    std::vector<double>& lo_sorted = lo_; // reuse: fill sorted values into the other arrays first
-    for (size_t k = 0; k < n; ++k) {
-        const BroadSphere& b = s[order_[k]];
-        x_[k] = b.center.x(), y_[k] = b.center.y(), z_[k] = b.center.z(), r_[k] = b.radius;
-        static_[k] = b.is_static;
-    }
-    for (size_t k = 0; k < n; ++k) {
-        const double c = s[order_[k]].center[axis];
-        lo_sorted[k] = c - r_[k];
-        // A relative margin: the sweep may only keep more pairs than the exact test below.
-        hi_[k] = c + r_[k] + 1e-12 * (std::abs(c) + r_[k]);
-    }
-    for (size_t k = 0; k < n; ++k) {
-        const double xk = x_[k], yk = y_[k], zk = z_[k], rk = r_[k], hk = hi_[k];
-        const bool sk = static_[k];
-        for (size_t m = k + 1; m < n && lo_sorted[m] < hk; ++m) {
-            if (sk && static_[m]) continue;
-            const double dx = x_[m] - xk, dy = y_[m] - yk, dz = z_[m] - zk, rr = r_[m] + rk;
-            if (dx * dx + dy * dy + dz * dz < rr * rr) {
-                const uint32_t a = order_[k], b = order_[m];
-                pairs_.push_back(a < b ? CandidatePair{a, b} : CandidatePair{b, a});
-            }
+    std::sort(cells_.begin(), cells_.end(),
+              [](const Cell& a, const Cell& b) { return a.key != b.key ? a.key < b.key : a.index < b.index; });
+    // Two small spheres overlap only if |c1 - c2| < h: their cells differ by at most 1 an axis.
+    static const int kForward[13][3] = {{0, 0, 1},  {0, 1, -1},  {0, 1, 0},  {0, 1, 1},  {1, -1, -1},
+                                        {1, -1, 0}, {1, -1, 1},  {1, 0, -1}, {1, 0, 0},  {1, 0, 1},
+                                        {1, 1, -1}, {1, 1, 0},   {1, 1, 1}};
+    // Runs of one cell: their keys in one small array for the neighbour searches.
+    keys_.clear();
+    starts_.clear();
+    for (size_t i = 0; i < cells_.size(); ++i)
+        if (i == 0 || cells_[i].key != cells_[i - 1].key) keys_.push_back(cells_[i].key), starts_.push_back(uint32_t(i));
+    starts_.push_back(uint32_t(cells_.size()));
+    for (size_t r = 0; r < keys_.size(); ++r) {
+        const size_t a0 = starts_[r], a1 = starts_[r + 1];
+        for (size_t i = a0; i < a1; ++i)
+            for (size_t j = i + 1; j < a1; ++j) test(cells_[i].index, cells_[j].index);
+        const int64_t* xyz = cells_[a0].xyz;
+        for (const auto& d : kForward) {
+            const uint64_t key = pack(xyz[0] + d[0], xyz[1] + d[1], xyz[2] + d[2]);
+            const auto it = std::lower_bound(keys_.begin(), keys_.end(), key);
+            if (it == keys_.end() || *it != key) continue;
+            const size_t other = size_t(it - keys_.begin());
+            for (size_t j = starts_[other]; j < starts_[other + 1]; ++j)
+                for (size_t i = a0; i < a1; ++i) test(cells_[i].index, cells_[j].index);
         }
     }
+    for (size_t k = 0; k < big_.size(); ++k) {
+        for (const Cell& c : cells_) test(big_[k], c.index);
+        for (size_t m = k + 1; m < big_.size(); ++m) test(big_[k], big_[m]);
+    }
     std::sort(pairs_.begin(), pairs_.end());
+    pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
     return pairs_;
 }
 

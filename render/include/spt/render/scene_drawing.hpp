@@ -1,0 +1,45 @@
+#pragma once
+/// A simulated scene as a Frame: each object's mesh (or, for a .spt model, its sampling spheres)
+/// at its pose, and the scene overlays (contacts, normals, pairs, ghost, trails). Shared by
+/// `spt render SCENE.json` and a viewer, so both draw the same pixels. World frame, model units.
+#include "spt/render/frame.hpp"
+#include "spt/render/renderer.hpp"
+#include "spt/simulation.hpp"
+#include <vector>
+
+namespace spt::render {
+
+/// What a scene frame shows on top of the objects.
+struct SceneOverlays {
+    bool contacts = false; ///< contact points of the colliding pairs (needs effect depth)
+    bool normals = false;  ///< contact normals (needs effect depth)
+    bool pairs = false;    ///< every overlapping sphere pair (needs effect pairs)
+    bool ghost = false;    ///< objects at their pose before the response, see-through
+    bool trails = false;   ///< the path of each moving object's origin so far
+    bool spheres = false;  ///< sampling spheres of every object instead of its mesh
+};
+
+/// The effects a simulation needs so that `overlays` can be drawn: `scene` plus contacts and
+/// depth for contacts and normals, plus contacts and pairs for pairs. Nothing else is added.
+EffectSet effects_for_overlays(EffectSet scene, const SceneOverlays& overlays);
+
+/// The uploaded geometry of one scene.
+class SceneDrawing {
+public:
+    /// Uploads each distinct model once: the mesh of a mesh model (imported again, scaled), and
+    /// every model's sampling spheres. Throws Error(BadInput) if a mesh cannot be read.
+    SceneDrawing(Renderer& renderer, const Scene& scene);
+
+    /// The frame of one state: `poses` (world, object order), the step that led to it (nullptr
+    /// for the initial state), the poses before its response (`ghost`) and each object's origin
+    /// positions so far (`trails`, may be empty when the overlay is off).
+    Frame frame(const std::vector<Pose>& poses, const StepResult* step, const std::vector<Pose>& ghost,
+                const std::vector<std::vector<Eigen::Vector3f>>& trails, const SceneOverlays& overlays) const;
+
+private:
+    const Scene& scene_;
+    std::vector<MeshHandle> mesh_;      // per object; id 0 without a mesh
+    std::vector<SphereSetHandle> set_;  // per object
+};
+
+} // namespace spt::render

@@ -1,0 +1,132 @@
+// A simulated scene as a Frame: objects at their poses and the scene overlays.
+#include "spt/render/scene_drawing.hpp"
+#include "spt/mesh.hpp"
+#include <cstring>
+#include <fstream>
+#include <map>
+
+namespace spt::render {
+namespace {
+
+bool is_spt_file(const std::string& path) {
+    char magic[6] = {};
+    std::ifstream(path, std::ios::binary).read(magic, 6);
+    return std::memcmp(magic, "SPTREE", 6) == 0;
+}
+
+Eigen::Affine3f affine(const Pose& p) {
+    Eigen::Affine3f a = Eigen::Affine3f::Identity();
+    a.linear() = p.rotation.cast<float>().toRotationMatrix();
+    a.translation() = p.translation.cast<float>();
+    return a;
+}
+
+// Distinct colours for the objects, in order.
+Color object_color(size_t i) {
+    static const Color palette[] = {{0.72f, 0.74f, 0.78f, 1}, {0.85f, 0.55f, 0.35f, 1}, {0.45f, 0.68f, 0.85f, 1},
+                                    {0.6f, 0.8f, 0.5f, 1},    {0.85f, 0.75f, 0.4f, 1},  {0.7f, 0.55f, 0.8f, 1}};
+    return palette[i % 6];
+}
+
+std::vector<SphereInstance> spheres_of(const CollisionModel& m, const Color& color) {
+    std::vector<SphereInstance> out;
+    const CompactTree& t = m.tree();
+    for (const CompactNode& n : t.nodes())
+        for (uint32_t k = n.first; n.count && k < n.first + n.count; ++k)
+            out.push_back({{t.sphere_centre(n, k) + m.origin().cast<float>(), n.ss_radius}, color});
+    return out;
+}
+
+} // namespace
+
+EffectSet effects_for_overlays(EffectSet e, const SceneOverlays& o) {
+    if (o.contacts || o.normals) e.add(Effect::Contacts), e.add(Effect::Depth);
+    if (o.pairs) e.add(Effect::Contacts), e.add(Effect::Pairs);
+    return e;
+}
+
+SceneDrawing::SceneDrawing(Renderer& renderer, const Scene& scene) : scene_(scene) {
+    std::map<std::pair<const CollisionModel*, bool>, std::pair<MeshHandle, SphereSetHandle>> done;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        const bool first = i == 0; // the first object (often the floor) keeps the neutral colour
+        auto key = std::make_pair(o.model.get(), first);
+        auto it = done.find(key);
+        if (it == done.end()) {
+            MeshHandle mesh;
+            if (!is_spt_file(o.model_path)) {
+                TriangleMesh m = import_mesh(o.model_path).mesh;
+                for (Eigen::Vector3d& p : m.positions) p *= o.scale;
+                mesh = renderer.add_mesh(m);
+            }
+            const SphereSetHandle set = renderer.add_spheres(spheres_of(*o.model, object_color(first ? 0 : 1 + i % 5)));
+            it = done.emplace(key, std::make_pair(mesh, set)).first;
+        }
+        mesh_.push_back(it->second.first);
+        set_.push_back(it->second.second);
+    }
+}
+
+Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step, const std::vector<Pose>& ghost,
+                          const std::vector<std::vector<Eigen::Vector3f>>& trails, const SceneOverlays& o) const {
+    Frame f;
+    for (size_t i = 0; i < poses.size(); ++i) {
+        if (mesh_[i].id && !o.spheres) {
+            MeshItem item;
+            item.mesh = mesh_[i];
+            item.pose = affine(poses[i]);
+            item.style.color = object_color(i == 0 ? 0 : 1 + i % 5);
+            f.meshes.push_back(item);
+        } else {
+            SphereItem s;
+            s.spheres = set_[i];
+            s.pose = affine(poses[i]);
+            f.spheres.push_back(s);
+        }
+        if (o.ghost && i < ghost.size() && ghost[i].translation != poses[i].translation) {
+            if (mesh_[i].id) {
+                MeshItem g;
+                g.mesh = mesh_[i];
+                g.pose = affine(ghost[i]);
+                g.style.opacity = 0.3f;
+                f.meshes.push_back(g);
+            } else {
+                f.wire_spheres.push_back({{ghost[i].apply(scene_.objects[i].bound_center).cast<float>(),
+                                           float(scene_.objects[i].bound_radius)}});
+            }
+        }
+        if (o.trails && i < trails.size() && trails[i].size() > 1) f.trails.push_back({trails[i], {}});
+    }
+    if (step) {
+        for (const PairContact& c : step->contacts) {
+            if ((o.contacts || o.normals) && c.has_depth) {
+                SpherePair p; // zero spheres: the contact and its normal only
+                p.a.center = p.b.center = p.contact = c.point.cast<float>();
+                p.normal = c.normal.cast<float>();
+                p.depth = float(c.depth);
+                f.collision.pairs.push_back(p);
+            }
+            if (o.pairs) {
+                const CollisionModel &ma = *scene_.objects[c.a].model, &mb = *scene_.objects[c.b].model;
+                for (const spt::SpherePair& sp : c.pairs) {
+                    const CompactNode &na = ma.tree().nodes()[sp.node_a], &nb = mb.tree().nodes()[sp.node_b];
+                    SpherePair p;
+                    p.a = {poses[c.a].apply(ma.origin() + ma.tree().sphere_centre(na, sp.a).cast<double>()).cast<float>(),
+                           na.ss_radius};
+                    p.b = {poses[c.b].apply(mb.origin() + mb.tree().sphere_centre(nb, sp.b).cast<double>()).cast<float>(),
+                           nb.ss_radius};
+                    const Eigen::Vector3f d = p.b.center - p.a.center;
+                    p.normal = d.norm() > 0 ? Eigen::Vector3f(d.normalized()) : Eigen::Vector3f::UnitY();
+                    p.contact = p.a.center + p.normal * (p.a.radius - 0.5f * sp.depth);
+                    p.depth = sp.depth;
+                    f.collision.pairs.push_back(p);
+                }
+            }
+        }
+        if (!o.contacts) f.collision.contact_size = 0.001f;
+        if (!o.normals) f.collision.normal_color.a = 0;
+    }
+    return f;
+}
+
+} // namespace spt::render

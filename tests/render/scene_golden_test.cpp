@@ -1,0 +1,49 @@
+// Golden frames of the bundled scenes, rendered by `spt render SCENE.json` (frame k = after step k).
+#include "golden.hpp"
+#include "run_command.hpp"
+#include "spt/render/image.hpp"
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+namespace {
+
+using spt::test::q;
+
+// Renders `frame` of resources/scenes/SCENE with `args` at 256 x 256 and reads it back.
+spt::render::Image render_scene(const std::string& scene, int frame, const std::string& args) {
+    const std::string out = std::string(SPT_BINARY_DIR) + "/test-tmp/scene-golden-" + std::to_string(::getpid()) +
+                            "-" + scene + ".png";
+    std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+    const auto r = spt::test::run_command(spt::test::spt_binary() + " render " +
+                                          q(std::string(SPT_SOURCE_DIR) + "/resources/scenes/" + scene) +
+                                          " --size 256x256 --frame " + std::to_string(frame) + " " + args + " -o " + q(out));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    spt::render::Image image = spt::render::read_png(out);
+    std::filesystem::remove(out);
+    return image;
+}
+
+TEST(golden, scene_fig8_response) {
+    EXPECT_GOLDEN(render_scene("fig8.json", 31, "--overlay contacts,normals,ghost,trails,grid"), "scene_fig8");
+}
+
+TEST(golden, scene_walking_feet_strike) {
+    EXPECT_GOLDEN(render_scene("walking.json", 50, "--view front --overlay contacts,normals,pairs,grid"),
+                  "scene_walking");
+}
+
+TEST(golden, scene_thin_wall_ccd) {
+    EXPECT_GOLDEN(render_scene("thin_wall.json", 3, "--view top --overlay contacts,normals,trails"), "scene_thin_wall");
+}
+
+TEST(golden, scene_box_settled) {
+    EXPECT_GOLDEN(render_scene("box_settle.json", 300, "--view front --overlay contacts,normals,grid"),
+                  "scene_box_settle");
+}
+
+TEST(golden, scene_pile) {
+    EXPECT_GOLDEN(render_scene("pile.json", 60, "--overlay grid,axes"), "scene_pile");
+}
+
+} // namespace
