@@ -46,9 +46,10 @@ void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionMod
     w.qc.sphere_tests += r.counters.sphere_tests, w.qc.triangle_tests += r.counters.triangle_tests;
     const std::vector<SpherePair>& pairs = scratch.pairs();
     if (pairs.empty()) {
-        // The exact level saw triangles cross where no spheres overlap: no sphere depth.
+        // Triangles crossing where no spheres overlap (level exact), or one object inside the
+        // other (containment: the contained anchor is the point): no sphere depth.
         w.depth = 0;
-        w.point = 0.5 * (pa.translation + pb.translation);
+        w.point = r.collide ? r.deepest.point : Eigen::Vector3d(0.5 * (pa.translation + pb.translation));
         const Eigen::Vector3d d = pb.translation - pa.translation;
         w.normal = d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitX();
         return;
