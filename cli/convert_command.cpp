@@ -2,6 +2,7 @@
 #include "commands.hpp"
 #include "process_pool.hpp"
 #include "spt/convert.hpp"
+#include "spt/recipe.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
 #include <chrono>
@@ -22,7 +23,7 @@ namespace fs = std::filesystem;
 
 struct ConvertArgs {
     std::vector<std::string> inputs;
-    std::string output, out_dir, bounds = "tight", strategy = "volume", tree_name = "default";
+    std::string output, out_dir, bounds = "tight", strategy = "volume", tree_name = "default", recipe;
     uint32_t leaf_size = 8;
     double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
     int jobs = 0;
@@ -40,6 +41,26 @@ long peak_mib() {
     rusage u{};
     ::getrusage(RUSAGE_SELF, &u);
     return u.ru_maxrss / 1024;
+}
+
+// The trees of the recipe file, over the new samples: trees with a recipe replayed split by
+// split (steps that no longer select are reported), the others built automatically.
+void replay_trees(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions& build, const std::string& recipe,
+                  const std::string& in) {
+    const SptDocument old = load_spt(recipe);
+    doc.trees.clear();
+    for (const SamplingTree& t : old.trees) {
+        if (t.recipe().empty()) {
+            doc.trees.push_back(build_tree(t.name(), doc.samples, build));
+            std::cerr << "  recipe: tree '" << t.name() << "' of " << recipe << " has no recipe; built automatically\n";
+            continue;
+        }
+        ReplayReport report;
+        doc.trees.push_back(replay_recipe(t, doc.samples, mesh, &report));
+        std::cerr << "  recipe: tree '" << t.name() << "': " << report.replayed << " of " << t.recipe().size()
+                  << " splits replayed on " << in << "\n";
+        for (const std::string& why : report.skipped) std::cerr << "  recipe: not replayed: " << why << "\n";
+    }
 }
 
 // Converts one file; runs in a worker process. Prints one summary line and the report.
@@ -75,6 +96,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     } else {
         doc = make_document(m.mesh, opt, &st);
     }
+    if (!a.recipe.empty()) replay_trees(doc, m.mesh, opt.build, a.recipe, in);
     save_spt(doc, out);
     const SamplingTree& t = doc.trees.back();
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -132,6 +154,8 @@ void draw_progress(size_t done, size_t total, size_t failed) {
 }
 
 int run_convert(const ConvertArgs& a) {
+    if (a.append && !a.recipe.empty())
+        throw Error(ErrorKind::Usage, "--append adds one automatic tree; --recipe replaces the trees");
     if (a.append && a.tolerance > 0)
         throw Error(ErrorKind::Usage, "--append keeps the file's samples; --tolerance would change them");
     if (!a.output.empty() && a.inputs.size() != 1)
@@ -232,6 +256,10 @@ Action add_convert_command(CLI::App& app) {
     c->add_option("--strategy", a->strategy, "Automatic split: volume (min. children's sphere volume) or median")
         ->check(CLI::IsMember({"volume", "median"}));
     c->add_option("--tree-name", a->tree_name, "Name of the tree in the file");
+    c->add_option("--recipe", a->recipe,
+                  "Redo the manual splits recorded in this .spt file (made from an earlier version of the mesh); "
+                  "its trees replace the automatic one")
+        ->check(CLI::ExistingFile);
     c->add_option("-j,--jobs", a->jobs, "Files converted at once (default: all cores)")->check(CLI::Range(1, 1024));
     c->add_option("--timeout", a->timeout, "Give up on one file after this many seconds (0: never)")
         ->check(CLI::NonNegativeNumber);

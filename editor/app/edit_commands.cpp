@@ -80,6 +80,8 @@ EditOutcome make_split(EditorDocument& doc) {
     if (doc.selection().empty()) return refused(QString("nothing is selected: drag a rectangle over node %1's samples").arg(node_text(id)));
     const EditResult r = after.split(id, doc.selection(), doc.samples());
     if (!r) return refused(r.reason);
+    // How the selection was drawn goes with the split, so `spt convert --recipe` can redo it.
+    if (!doc.strokes().empty()) after.add_recipe_step({id, doc.strokes()});
     return {std::make_unique<TreeStateCommand>(doc, std::move(after), right_child(id),
                                                QString("Split node %1 (%2 selected)").arg(node_text(id)).arg(doc.selection().size())),
             {}};
@@ -147,13 +149,6 @@ EditOutcome make_delete_tree(EditorDocument& doc, int index) {
     if (index < 0 || size_t(index) >= doc.document().trees.size()) return refused(QString("no such tree"));
     if (doc.document().trees.size() == 1) return refused(QString("a document keeps at least one tree"));
     return {std::make_unique<RemoveTreeCommand>(doc, index), {}};
-}
-
-SamplingTree unsplit_tree(const std::string& name, const SampleSet& samples) {
-    SamplingTree tree(name, uint32_t(samples.size()));
-    tree.assign_radii(samples, RadiusRule{});
-    tree.compute_bounds(samples, BoundsMethod::Tight);
-    return tree;
 }
 
 QString unused_tree_name(const EditorDocument& doc, const QString& base) {

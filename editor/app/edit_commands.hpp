@@ -3,6 +3,7 @@
 // automatic subtree, and named trees. Each command keeps the tree before and after, so
 // undo and redo restore a document byte for byte. The tree arithmetic is core's.
 #include "editor_document.hpp"
+#include "spt/recipe.hpp"
 #include "spt/tree_builder.hpp"
 #include <QString>
 #include <QUndoCommand>
@@ -33,9 +34,6 @@ EditOutcome make_rename_tree(EditorDocument& doc, int index, const QString& name
 EditOutcome make_duplicate_tree(EditorDocument& doc, int index, const QString& name);
 /// Deletes tree `index` (never the last one).
 EditOutcome make_delete_tree(EditorDocument& doc, int index);
-
-/// A tree named `name` whose root holds every sample, radius and bounds by core's defaults.
-SamplingTree unsplit_tree(const std::string& name, const SampleSet& samples);
 
 /// A name not used by any tree of the document: `base`, else `base 2`, `base 3`, ...
 QString unused_tree_name(const EditorDocument& doc, const QString& base);

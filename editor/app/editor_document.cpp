@@ -12,6 +12,7 @@ void EditorDocument::reset(SptDocument doc, std::optional<TriangleMesh> mesh) {
     tree_ = 0;
     current_ = root_id();
     selection_.clear();
+    strokes_.clear();
     emit documentReset();
 }
 
@@ -20,6 +21,7 @@ void EditorDocument::set_tree_index(int index) {
     tree_ = index;
     current_ = root_id();
     selection_.clear();
+    strokes_.clear();
     emit treeChanged();
 }
 
@@ -27,27 +29,28 @@ void EditorDocument::set_current(NodeId id) {
     if (!has_tree() || !tree().find(id) || id == current_) return;
     current_ = id;
     selection_.clear();
+    strokes_.clear();
     emit currentChanged();
 }
 
 void EditorDocument::set_selection(std::vector<uint32_t> selection) {
     selection_ = std::move(selection);
+    strokes_.clear();
     emit selectionChanged();
 }
 
 size_t EditorDocument::select_rect(const ViewProjection& view, const PixelRect& rect, SelectionMode mode,
                                    bool visible_only) {
     if (!has_tree()) return 0;
-    std::vector<uint32_t> hits;
-    if (visible_only && mesh_) {
-        // Half a percent of the object's size: a sample on the surface is never hidden by the surface.
-        const float tolerance = float(0.005 * mesh_->diagonal());
-        hits = visible_samples_in_rect(doc_.samples, tree(), current_, view, rect, render_depth(*mesh_, view),
-                                       tolerance);
-    } else {
-        hits = samples_in_rect(doc_.samples, tree(), current_, view, rect);
-    }
-    set_selection(combine_selection(selection_, hits, mode));
+    const RecipeStroke stroke{view, rect, mode, visible_only && mesh_};
+    // The rectangle's own hits (the stroke in replace mode), then combined: apply_stroke's result.
+    RecipeStroke alone = stroke;
+    alone.mode = SelectionMode::Replace;
+    const std::vector<uint32_t> hits = apply_stroke(doc_.samples, tree(), current_, {}, alone, mesh());
+    selection_ = combine_selection(selection_, hits, mode);
+    if (mode == SelectionMode::Replace) strokes_.clear();
+    strokes_.push_back(stroke);
+    emit selectionChanged();
     return hits.size();
 }
 
@@ -56,6 +59,7 @@ void EditorDocument::set_tree(int index, const SamplingTree& tree, NodeId curren
     tree_ = index;
     current_ = tree.find(current) ? current : root_id();
     selection_.clear();
+    strokes_.clear();
     emit treeChanged();
 }
 
@@ -64,6 +68,7 @@ void EditorDocument::insert_tree(int index, const SamplingTree& tree) {
     tree_ = index;
     current_ = root_id();
     selection_.clear();
+    strokes_.clear();
     emit treeChanged();
 }
 
@@ -72,6 +77,7 @@ void EditorDocument::remove_tree(int index) {
     tree_ = std::max(0, index - 1);
     current_ = root_id();
     selection_.clear();
+    strokes_.clear();
     emit treeChanged();
 }
 

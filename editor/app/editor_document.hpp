@@ -42,8 +42,11 @@ public:
     void set_tree_index(int index);
     /// Makes node `id` current (ignored if the tree has no such node); clears the selection.
     void set_current(NodeId id);
-    /// Replaces the selection (sorted sample indices).
+    /// Replaces the selection (sorted sample indices); how it was made is not known, so a
+    /// split by it records no recipe step.
     void set_selection(std::vector<uint32_t> selection);
+    /// The rectangles that made the selection, in order (the next split's recipe step).
+    const std::vector<RecipeStroke>& strokes() const { return strokes_; }
     /// Applies a rectangle drawn in a view: through, or visible only when the mesh is known.
     /// Returns the number of samples the rectangle hit.
     size_t select_rect(const ViewProjection& view, const PixelRect& rect, SelectionMode mode, bool visible_only);
@@ -74,6 +77,7 @@ private:
     int tree_ = 0;
     NodeId current_ = root_id();
     std::vector<uint32_t> selection_;
+    std::vector<RecipeStroke> strokes_;
 };
 
 } // namespace spt::editor

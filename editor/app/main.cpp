@@ -2,17 +2,12 @@
 #include "main_window.hpp"
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QSurfaceFormat>
 #include <QTimer>
 #include <cstdio>
 
 int main(int argc, char** argv) {
     // Before QApplication: every view's context is 3.3 core (render/ needs it).
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    spt::editor::use_render_gl_format();
     QApplication app(argc, argv);
     QApplication::setApplicationName("spt-editor");
     QApplication::setOrganizationName("spt");

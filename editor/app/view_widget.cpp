@@ -6,9 +6,18 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QRubberBand>
+#include <QSurfaceFormat>
 #include <QWheelEvent>
 
 namespace spt::editor {
+
+void use_render_gl_format() {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+}
 
 ViewWidget::ViewWidget(render::View view, EditorDocument& doc, Scene& scene, const ViewOptions& options,
                        QWidget* parent)

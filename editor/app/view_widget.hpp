@@ -14,6 +14,10 @@ class QRubberBand;
 
 namespace spt::editor {
 
+/// Makes OpenGL 3.3 core with a 24-bit depth buffer the default surface format, as render/
+/// needs; call before the QApplication is made.
+void use_render_gl_format();
+
 /// Settings the views share, owned by the main window.
 struct ViewOptions {
     bool visible_only = false;   ///< rectangle selects only samples the mesh does not hide (key X)

@@ -1,6 +1,7 @@
 #!/bin/bash
 # The editor as a user drives it, with xdotool under Xvfb: `spt-editor MESH -o OUT.spt`,
-# a drag in the top view, S, Ctrl+S, and the saved file holds the split. Then a second
+# a drag in the top view, S, Ctrl+S, and the saved file holds the split (and its recipe
+# replays with `spt convert --recipe`). Then a second
 # split, a recovery file, SIGKILL, and the next start recovers the edit.
 # usage: drive_editor.sh SPT_EDITOR SPT MESH WORKDIR   (run under xvfb-run)
 set -euo pipefail
@@ -44,6 +45,10 @@ xdotool key --clearmodifiers ctrl+s
 wait_file "$work/out.spt" || fail "Ctrl+S wrote nothing to $work/out.spt"
 [ "$(nodes_of "$work/out.spt")" = 3 ] || fail "the saved file does not hold the split: $("$spt" info "$work/out.spt")"
 echo "saved the split: $("$spt" info "$work/out.spt" | grep "^tree")"
+# The split's recipe replays through the command line.
+"$spt" convert "$mesh" --recipe "$work/out.spt" -o "$work/replayed.spt" 2> "$work/replay.log" || fail "spt convert --recipe failed: $(cat "$work/replay.log")"
+grep -q "1 of 1 splits replayed" "$work/replay.log" || fail "the recipe did not replay: $(cat "$work/replay.log")"
+[ "$(nodes_of "$work/replayed.spt")" = 3 ] || fail "the replayed file does not hold the split"
 
 # A second split (the right child is current now), left unsaved; the recovery file follows.
 drag 250 60 280 430

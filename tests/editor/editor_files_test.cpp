@@ -1,6 +1,7 @@
 // Opening and saving: byte-identical saves, Ctrl+S to -o, converted meshes, bad files and
 // mismatched meshes reported with the document kept, the modified mark.
 #include "editor_support.hpp"
+#include "spt/recipe.hpp"
 #include <QFile>
 #include <QTest>
 #include <filesystem>
@@ -122,4 +123,33 @@ TEST(EditorFiles, AMissingOrMismatchedMeshIsReportedNotUsed) {
     EXPECT_TRUE(w.document().has_tree());
     EXPECT_EQ(w.document().mesh(), nullptr);
     EXPECT_NE(w.last_error().indexOf("is not the mesh"), -1) << w.last_error().toStdString();
+}
+
+TEST(EditorFiles, ASplitByMouseRecordsItsRecipeAndTheRecipeReplays) {
+    TempDir dir("editor-recipe");
+    std::string error;
+    const auto window = open_editor(dir, write_editor_files(dir).spt, &error);
+    ASSERT_TRUE(window) << error;
+    editor::MainWindow& w = *window;
+    editor::ViewWidget* side = w.grid().view(2);
+    QTest::mousePress(side, Qt::LeftButton, Qt::NoModifier, QPoint(1, 1));
+    QTest::mouseRelease(side, Qt::LeftButton, Qt::NoModifier, QPoint(side->width() - 1, side->height() / 2));
+    editor::ViewWidget* camera = w.grid().view(3);
+    QTest::mousePress(camera, Qt::LeftButton, Qt::ControlModifier, QPoint(1, 1));
+    QTest::mouseRelease(camera, Qt::LeftButton, Qt::ControlModifier, QPoint(camera->width() / 3, camera->height() - 1));
+    ASSERT_TRUE(w.split()) << w.last_message().toStdString();
+    ASSERT_TRUE(w.save_to(QString::fromStdString(dir.file("authored.spt"))));
+    const SptDocument saved = load_spt(dir.file("authored.spt"));
+    const SamplingTree& t = saved.trees.front();
+    ASSERT_EQ(t.recipe().size(), 1u);
+    EXPECT_EQ(t.recipe().front().node, NodeId(1));
+    ASSERT_EQ(t.recipe().front().strokes.size(), 2u);
+    EXPECT_EQ(t.recipe().front().strokes[1].mode, SelectionMode::Subtract);
+    EXPECT_TRUE(t.recipe().front().strokes[1].view.perspective);
+    // On the same mesh the replay gives the same split.
+    ReplayReport report;
+    const SamplingTree again = replay_recipe(t, saved.samples, *w.document().mesh(), &report);
+    EXPECT_EQ(report.replayed, 1u);
+    EXPECT_EQ(again.find(2)->samples, t.find(2)->samples);
+    EXPECT_EQ(again.find(3)->samples, t.find(3)->samples);
 }

@@ -3,7 +3,6 @@
 #include "spt/convert.hpp"
 #include <QApplication>
 #include <QStandardPaths>
-#include <QSurfaceFormat>
 #include <QTest>
 #include <cstdlib>
 #include <filesystem>
@@ -22,11 +21,7 @@ public:
         ::setenv("XDG_DATA_HOME", (home + "/data").c_str(), 1);
         ::setenv("QT_QPA_PLATFORM", "xcb", 1);
         QStandardPaths::setTestModeEnabled(true);
-        QSurfaceFormat format;
-        format.setVersion(3, 3);
-        format.setProfile(QSurfaceFormat::CoreProfile);
-        format.setDepthBufferSize(24);
-        QSurfaceFormat::setDefaultFormat(format);
+        spt::editor::use_render_gl_format();
         app_ = std::make_unique<QApplication>(argc_, argv_);
         QApplication::setApplicationName("spt-editor-test");
     }

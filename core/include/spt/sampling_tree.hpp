@@ -5,6 +5,7 @@
 /// local frame (SampleSet::origin), model units.
 #include "spt/node_id.hpp"
 #include "spt/samples.hpp"
+#include "spt/split_recipe.hpp"
 #include <Eigen/Core>
 #include <map>
 #include <string>
@@ -88,6 +89,14 @@ public:
     /// exactly one active node, values are finite and radii positive. Empty when valid.
     std::string validate(uint32_t sample_count) const;
 
+    /// How the manual splits were made, in the order made (.spt version 3); a merge drops the
+    /// steps of the merged node and of every node below it.
+    const std::vector<RecipeStep>& recipe() const { return recipe_; }
+    /// Records how the split of `step.node` was made (after the split).
+    void add_recipe_step(RecipeStep step) { recipe_.push_back(std::move(step)); }
+    /// Replaces the recipe (loaders).
+    void set_recipe(std::vector<RecipeStep> recipe) { recipe_ = std::move(recipe); }
+
     /// Mutable node access for builders and loaders.
     TreeNode* find_mutable(NodeId id);
     /// Inserts or replaces a node (builders and loaders).
@@ -98,6 +107,7 @@ private:
     void remove_subtree(NodeId id);
     std::string name_;
     std::map<NodeId, TreeNode> nodes_;
+    std::vector<RecipeStep> recipe_;
 };
 
 } // namespace spt

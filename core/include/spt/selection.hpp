@@ -6,36 +6,12 @@
 /// its tests both call these, so a selection made with the mouse has one reference.
 #include "spt/mesh.hpp"
 #include "spt/sampling_tree.hpp"
+#include "spt/split_recipe.hpp"
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
 namespace spt {
-
-/// How a view maps object-frame points to its framebuffer.
-struct ViewProjection {
-    Eigen::Matrix4f view = Eigen::Matrix4f::Identity();       ///< object frame to eye (OpenGL: eye looks down -Z)
-    Eigen::Matrix4f projection = Eigen::Matrix4f::Identity(); ///< eye to clip
-    bool perspective = false; ///< true: a point must lie in front of the eye to be selectable
-    int width = 1;            ///< framebuffer width, pixels
-    int height = 1;           ///< framebuffer height, pixels
-};
-
-/// A rectangle in GL window coordinates: pixels from the framebuffer's lower-left corner.
-/// Corners in any order; a point on the border is inside.
-struct PixelRect {
-    float x0 = 0; ///< one corner, pixels from the left
-    float y0 = 0; ///< one corner, pixels from the bottom
-    float x1 = 0; ///< opposite corner, pixels from the left
-    float y1 = 0; ///< opposite corner, pixels from the bottom
-};
-
-/// How a new rectangle combines with the current selection (fixed when the drag starts).
-enum class SelectionMode {
-    Replace,  ///< the rectangle's samples replace the selection
-    Add,      ///< added to the selection
-    Subtract, ///< removed from the selection
-};
 
 /// Where object-frame point p lands: x, y in GL window pixels, z the eye depth (model
 /// units in front of the eye; negative behind it).
@@ -72,6 +48,19 @@ DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view);
 std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
                                               const ViewProjection& view, const PixelRect& rect,
                                               const DepthMap& depth, float tolerance);
+
+/// Depth tolerance of visible-only selection on `mesh`: 0.5% of its diagonal (model units).
+float visible_tolerance(const TriangleMesh& mesh);
+
+/// The selection after `stroke` is applied to `current` (sorted) among the samples below
+/// node `id`: through, or visible only against `mesh` (then `mesh` must not be null).
+std::vector<uint32_t> apply_stroke(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+                                   const std::vector<uint32_t>& current, const RecipeStroke& stroke,
+                                   const TriangleMesh* mesh);
+
+/// The selection a recipe step's strokes make, from nothing, below its node.
+std::vector<uint32_t> select_strokes(const SampleSet& samples, const SamplingTree& tree, const RecipeStep& step,
+                                     const TriangleMesh* mesh);
 
 /// The selection after a rectangle's `hits` are applied to `current` in `mode` (all sorted).
 std::vector<uint32_t> combine_selection(const std::vector<uint32_t>& current, const std::vector<uint32_t>& hits,

@@ -30,9 +30,10 @@ struct SptDocument {
 };
 
 /// Newest format version this build reads and writes. encode_spt writes the oldest version
-/// that holds the document (1 when the local origin is zero), so an old file saved again
-/// without edits stays byte-identical.
-constexpr uint32_t kSptVersion = 2;
+/// that holds the document (1 when the local origin is zero and no tree has a recipe, 2 with
+/// a local origin, 3 with authoring recipes), so an old file saved again without edits stays
+/// byte-identical.
+constexpr uint32_t kSptVersion = 3;
 
 /// The format version encode_spt writes for `doc`.
 uint32_t spt_version_for(const SptDocument& doc);

@@ -1,6 +1,7 @@
 // The .spt codec. Layout and rules: docs/spt-format.md.
 #include "spt/spt_file.hpp"
 #include "io/binary_io.hpp"
+#include "io/recipe_codec.hpp"
 #include "sampling/encoding.hpp"
 #include <zlib.h>
 #include <array>
@@ -53,7 +54,11 @@ std::string SptDocument::validate() const {
     return {};
 }
 
-uint32_t spt_version_for(const SptDocument& doc) { return doc.samples.origin.isZero(0) ? 1 : 2; }
+uint32_t spt_version_for(const SptDocument& doc) {
+    for (const auto& t : doc.trees)
+        if (!t.recipe().empty()) return 3;
+    return doc.samples.origin.isZero(0) ? 1 : 2;
+}
 
 std::vector<uint8_t> encode_spt(const SptDocument& doc) {
     const uint32_t version = spt_version_for(doc);
@@ -90,6 +95,7 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc) {
         w.put(total);
         for (const TreeNode* n : nodes)
             for (uint32_t idx : n->samples) w.put(idx);
+        if (version >= 3) detail::put_recipe(w, tree.recipe());
     }
     std::vector<uint8_t>& b = w.bytes;
     std::memcpy(b.data(), kMagic, 8);
@@ -145,7 +151,8 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         const double ox = r.get<double>("local origin"), oy = r.get<double>("local origin"), oz = r.get<double>("local origin");
         s.origin = {ox, oy, oz};
         if (!s.origin.allFinite()) r.fail(at, "local origin is not finite");
-        if (s.origin.isZero(0)) r.fail(at, "a version 2 file with a zero local origin (written as version 1)");
+        if (version == 2 && s.origin.isZero(0))
+            r.fail(at, "a version 2 file with a zero local origin (written as version 1)");
     }
 
     at = r.offset();
@@ -217,8 +224,11 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         SamplingTree tree(std::move(name), std::move(nodes));
         const std::string why = tree.validate(count);
         if (!why.empty()) r.fail(tree_at, "tree '" + tree.name() + "': " + why);
+        if (version >= 3) tree.set_recipe(detail::get_recipe(r, tree));
         doc.trees.push_back(std::move(tree));
     }
+    if (version == 3 && spt_version_for(doc) != 3)
+        r.fail(8, "a version 3 file without recipe steps (written as version 1 or 2)");
     if (r.remaining() != 0) r.fail(r.offset(), std::to_string(r.remaining()) + " bytes of unexpected trailing data");
     return doc;
 }

@@ -74,6 +74,26 @@ std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const Sa
     return out;
 }
 
+float visible_tolerance(const TriangleMesh& mesh) { return float(0.005 * mesh.diagonal()); }
+
+std::vector<uint32_t> apply_stroke(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+                                   const std::vector<uint32_t>& current, const RecipeStroke& stroke,
+                                   const TriangleMesh* mesh) {
+    const std::vector<uint32_t> hits =
+        stroke.visible_only && mesh
+            ? visible_samples_in_rect(samples, tree, id, stroke.view, stroke.rect, render_depth(*mesh, stroke.view),
+                                      visible_tolerance(*mesh))
+            : samples_in_rect(samples, tree, id, stroke.view, stroke.rect);
+    return combine_selection(current, hits, stroke.mode);
+}
+
+std::vector<uint32_t> select_strokes(const SampleSet& samples, const SamplingTree& tree, const RecipeStep& step,
+                                     const TriangleMesh* mesh) {
+    std::vector<uint32_t> selection;
+    for (const RecipeStroke& s : step.strokes) selection = apply_stroke(samples, tree, step.node, selection, s, mesh);
+    return selection;
+}
+
 std::vector<uint32_t> combine_selection(const std::vector<uint32_t>& current, const std::vector<uint32_t>& hits,
                                         SelectionMode mode) {
     std::vector<uint32_t> out;

@@ -229,6 +229,14 @@ EditResult SamplingTree::merge(NodeId id, const SampleSet& samples, const Radius
     }
     std::sort(all.begin(), all.end());
     remove_subtree(id);
+    // The merged splits no longer exist: neither do the steps that made them.
+    recipe_.erase(std::remove_if(recipe_.begin(), recipe_.end(),
+                                 [id](const RecipeStep& step) {
+                                     NodeId a = step.node;
+                                     while (a > id) a = parent_of(a);
+                                     return a == id;
+                                 }),
+                  recipe_.end());
     n = find_mutable(id);
     n->active = true;
     n->samples = std::move(all);

@@ -1,0 +1,125 @@
+// spt-editor-bench: selection from mouse release to highlighted result on a 1,000,000-vertex
+// mesh (through and visible only), and redrawing all four views of a 100k-triangle mesh with
+// 50k sampling spheres in a 1280x800 window. Needs an X server: run under xvfb-run.
+#include "edit_commands.hpp"
+#include "main_window.hpp"
+#include "mesh/shapes.hpp"
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QTest>
+#include <algorithm>
+#include <cstdio>
+#include <random>
+
+using namespace spt;
+
+namespace {
+
+// A document over a mesh's vertices (vertex samples, unit spacing scaled to the mesh), root only.
+SptDocument vertex_document(const TriangleMesh& mesh) {
+    SptDocument doc;
+    doc.mesh = {mesh.name, uint32_t(mesh.positions.size()), uint32_t(mesh.triangles.size()), mesh.content_hash(),
+                mesh.diagonal()};
+    const float spacing = float(mesh.diagonal() / std::sqrt(double(mesh.positions.size())));
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        doc.samples.add(mesh.positions[i].cast<float>(), mesh.normals[i].cast<float>(), uint32_t(i), spacing);
+    doc.trees.push_back(editor::unsplit_tree("default", doc.samples));
+    return doc;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// Waits for the GPU (llvmpipe) to finish every view's frame.
+void finish_views(editor::MainWindow& w) {
+    for (int i = 0; i < 4; ++i) {
+        editor::ViewWidget* v = w.grid().view(i);
+        v->makeCurrent();
+        v->context()->functions()->glFinish();
+        v->doneCurrent();
+    }
+}
+
+void repaint_views(editor::MainWindow& w) {
+    for (int i = 0; i < 4; ++i) w.grid().view(i)->repaint();
+    finish_views(w);
+}
+
+void open(editor::MainWindow& w, const TriangleMesh& mesh) {
+    w.document().reset(vertex_document(mesh), mesh);
+    w.show();
+    QTest::qWaitForWindowExposed(&w);
+    QTest::qWaitFor([&] {
+        for (int i = 0; i < 4; ++i)
+            if (!w.grid().view(i)->has_drawn()) return false;
+        return true;
+    }, 120000);
+}
+
+// Median ms from a mouse release to the selection drawn in all four views.
+double selection_ms(editor::MainWindow& w, bool visible_only, int runs, size_t* selected) {
+    w.view_options().visible_only = visible_only;
+    editor::ViewWidget* v = w.grid().view(1);
+    std::mt19937 rng(7);
+    std::vector<double> times;
+    for (int k = 0; k < runs; ++k) {
+        const int x0 = 1 + int(rng() % uint32_t(v->width() / 3)), y0 = 1 + int(rng() % uint32_t(v->height() / 3));
+        const QPoint a(x0, y0), b(x0 + v->width() / 2, y0 + v->height() / 2);
+        QTest::mousePress(v, Qt::LeftButton, Qt::NoModifier, a);
+        QTest::mouseMove(v, b);
+        QElapsedTimer t;
+        t.start();
+        QTest::mouseRelease(v, Qt::LeftButton, Qt::NoModifier, b);
+        repaint_views(w);
+        times.push_back(double(t.nsecsElapsed()) * 1e-6);
+        *selected = w.document().selection().size();
+    }
+    return median(times);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    spt::editor::use_render_gl_format();
+    QApplication app(argc, argv);
+    editor::StartOptions start;
+    start.autosave_seconds = 0;
+    start.recovery_dir = QDir::tempPath() + "/spt-editor-bench-recovery";
+
+    std::printf("| measurement | median | what |\n|---|---|---|\n");
+    {
+        const TriangleMesh big = make_torus(1.0, 0.3, 1000, 1000);
+        editor::MainWindow w(start);
+        w.resize(1280, 800);
+        open(w, big);
+        size_t through = 0, visible = 0;
+        const double t_through = selection_ms(w, false, 11, &through);
+        const double t_visible = selection_ms(w, true, 11, &visible);
+        std::printf("| selection, through | %.1f ms | %zu vertices, %zu triangles; %zu samples selected in the front view |\n",
+                    t_through, big.positions.size(), big.triangles.size(), through);
+        std::printf("| selection, visible only | %.1f ms | same mesh; %zu samples selected |\n", t_visible, visible);
+    }
+    {
+        const TriangleMesh mid = make_torus(1.0, 0.3, 250, 200);
+        editor::MainWindow w(start);
+        w.resize(1280, 800);
+        open(w, mid);
+        std::vector<double> times;
+        for (int k = 0; k < 21; ++k) {
+            QElapsedTimer t;
+            t.start();
+            repaint_views(w);
+            times.push_back(double(t.nsecsElapsed()) * 1e-6);
+        }
+        const QSize s = w.grid().view(0)->framebuffer_size();
+        std::printf("| redraw of all four views | %.1f ms | %zu triangles, %zu sampling spheres, window 1280x800 "
+                    "(views %dx%d) |\n",
+                    median(times), mid.triangles.size(), w.document().samples().size(), s.width(), s.height());
+    }
+    return 0;
+}
