@@ -106,7 +106,8 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
               << "': " << t.node_count() << " nodes, " << t.active_nodes().size() << " active, depth " << t.depth()
               << "; " << fmt(secs) << " s, peak memory " << peak_mib() << " MiB\n";
     std::cerr << "  import: " << r.file_vertices << " file vertices welded to " << r.vertices << "; " << r.faces
-              << " faces (" << r.degenerate_faces << " degenerate); " << r.components << " component"
+              << " faces (" << r.degenerate_faces << " degenerate, " << r.needle_faces << " needles, " << r.duplicate_faces
+              << " duplicates); " << r.components << " component"
               << (r.components == 1 ? "" : "s") << ", " << (r.closed ? "closed" : "not closed") << "; "
               << r.boundary_edges << " boundary, " << r.nonmanifold_edges << " non-manifold edges\n";
     for (const auto& f : r.fixes) std::cerr << "  fixed: " << f << "\n";

@@ -2,6 +2,7 @@
 // though no surfaces meet); open parts hold nothing; --surfaces gives FCL's answer.
 #include "hard_support.hpp"
 #include "spt/response.hpp"
+#include "mesh/hard_shapes.hpp"
 #include "query/brute_force.hpp"
 #include <gtest/gtest.h>
 
@@ -9,18 +10,6 @@ namespace spt {
 namespace {
 
 const QueryLevel kLevels[] = {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact};
-
-// An open-topped box: a closed box without the faces on its +z side.
-TriangleMesh open_box(const Eigen::Vector3d& half) {
-    const TriangleMesh closed = make_box(half, 4);
-    std::vector<Triangle> t;
-    for (const auto& tri : closed.triangles) {
-        bool top = true;
-        for (uint32_t v : tri) top = top && closed.positions[v].z() > half.z() - 1e-9;
-        if (!top) t.push_back(tri);
-    }
-    return prepare_mesh("open box", closed.positions, std::move(t)).mesh;
-}
 
 // A hollow shell: a box with a box-shaped cavity (the inner surface faces into the cavity).
 TriangleMesh hollow_box(double outer, double inner) {
@@ -74,7 +63,7 @@ TEST(Containment, ObjectInTheCavityOfAHollowShellDoesNotCollide) {
 }
 
 TEST(Containment, OpenBoxHoldsNothing) {
-    const auto box = hard::make_object(open_box({1, 1, 1}));
+    const auto box = hard::make_object(make_open_box({1, 1, 1}, 4));
     const auto small = hard::make_object(make_box({0.1, 0.1, 0.1}, 2));
     const Pose inside{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.1, -0.2, 0)};
     for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact})

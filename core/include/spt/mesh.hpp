@@ -40,6 +40,9 @@ struct ImportReport {
     size_t faces = 0;                 ///< triangles kept
     size_t welded = 0;                ///< file_vertices - vertices
     size_t degenerate_faces = 0;      ///< zero-area or repeated-index faces (kept, ignored for normals)
+    size_t needle_faces = 0;          ///< not degenerate, but narrower than 1e-6 of their longest edge
+    size_t duplicate_faces = 0;       ///< the same three vertices as an earlier face, either winding (kept)
+    size_t unreferenced_vertices = 0; ///< welded vertices used by no face (left out of sampling)
     size_t skipped_primitives = 0;    ///< points and lines dropped by import
     size_t boundary_edges = 0;        ///< edges used by one face
     size_t nonmanifold_edges = 0;     ///< edges used by three or more faces

@@ -64,11 +64,15 @@ std::vector<int> nesting_depths(const TriangleMesh& m, const std::vector<std::ve
     return depth;
 }
 
-void compute_normals(TriangleMesh& m, ImportReport& report, double area_eps) {
+// `skip`: per face, 1 for the later copies of duplicate faces (wound the other way, a copy
+// would cancel the normal it duplicates).
+void compute_normals(TriangleMesh& m, ImportReport& report, double area_eps, const std::vector<uint8_t>& skip) {
     const size_t n = m.positions.size();
     m.normals.assign(n, Eigen::Vector3d::Zero());
     m.normal_valid.assign(n, 0);
-    for (const auto& t : m.triangles) {
+    for (size_t f = 0; f < m.triangles.size(); ++f) {
+        if (skip[f]) continue;
+        const auto& t = m.triangles[f];
         const Eigen::Vector3d& p0 = m.positions[t[0]];
         const Eigen::Vector3d& p1 = m.positions[t[1]];
         const Eigen::Vector3d& p2 = m.positions[t[2]];
@@ -123,6 +127,9 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     m.welded_index = detail::weld_positions(positions, options.weld_tolerance * diag, m.positions);
     r.vertices = m.positions.size();
     r.welded = r.file_vertices - r.vertices;
+    if (r.welded)
+        r.fixes.push_back("welded " + std::to_string(r.welded) + " duplicated vertices (closer than " +
+                          std::to_string(options.weld_tolerance) + " of the diagonal)");
 
     // Faces that collapse to a point or a segment after welding cannot be triangles.
     const double area_eps = 1e-14 * diag * diag;
@@ -134,11 +141,34 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
             continue;
         }
         const double area2 = (m.positions[w[1]] - m.positions[w[0]]).cross(m.positions[w[2]] - m.positions[w[0]]).norm();
-        if (!(area2 > area_eps)) ++r.degenerate_faces; // kept for topology, ignored for normals
+        if (!(area2 > area_eps)) {
+            ++r.degenerate_faces; // kept for topology, ignored for normals
+        } else {
+            // A needle: height over longest edge (area2 / longest^2) below 1e-6.
+            double longest2 = 0;
+            for (int k = 0; k < 3; ++k)
+                longest2 = std::max(longest2, (m.positions[w[(k + 1) % 3]] - m.positions[w[k]]).squaredNorm());
+            if (area2 < 1e-6 * longest2) ++r.needle_faces;
+        }
         m.triangles.push_back(w);
     }
     if (m.triangles.empty()) throw_bad_input(m.name, "every face is degenerate");
     r.faces = m.triangles.size();
+    std::vector<uint8_t> duplicate(m.triangles.size(), 0);
+    {
+        std::vector<std::pair<Triangle, uint32_t>> sorted(m.triangles.size());
+        for (uint32_t f = 0; f < m.triangles.size(); ++f) {
+            sorted[f] = {m.triangles[f], f};
+            std::sort(sorted[f].first.begin(), sorted[f].first.end());
+        }
+        std::sort(sorted.begin(), sorted.end());
+        for (size_t i = 1; i < sorted.size(); ++i)
+            if (sorted[i].first == sorted[i - 1].first) duplicate[sorted[i].second] = 1, ++r.duplicate_faces;
+        std::vector<uint8_t> used(m.positions.size(), 0);
+        for (const auto& t : m.triangles)
+            for (uint32_t v : t) used[v] = 1;
+        r.unreferenced_vertices = size_t(std::count(used.begin(), used.end(), 0));
+    }
 
     // Topology from sorted half-edges.
     const auto edges = collect_edges(m.triangles);
@@ -242,11 +272,19 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (r.nonmanifold_edges)
         r.warnings.push_back("mesh is non-manifold: " + std::to_string(r.nonmanifold_edges) + " edges have 3 or more faces");
     if (r.degenerate_faces)
-        r.warnings.push_back(std::to_string(r.degenerate_faces) + " degenerate faces ignored for normals");
+        r.warnings.push_back(std::to_string(r.degenerate_faces) +
+                             " degenerate faces (zero area, or collapsed by welding and dropped) ignored for normals");
+    if (r.needle_faces)
+        r.warnings.push_back(std::to_string(r.needle_faces) + " needle faces (narrower than 1e-6 of their length)");
+    if (r.duplicate_faces)
+        r.warnings.push_back(std::to_string(r.duplicate_faces) + " duplicate faces (the same three vertices as another face)");
+    if (r.unreferenced_vertices)
+        r.warnings.push_back(std::to_string(r.unreferenced_vertices) + " vertices are used by no face and are left out");
 
-    compute_normals(m, r, area_eps);
-    if (r.vertices_without_normal)
-        r.warnings.push_back(std::to_string(r.vertices_without_normal) +
+    compute_normals(m, r, area_eps, duplicate);
+    // Unreferenced vertices have no normal either; they are reported above.
+    if (r.vertices_without_normal > r.unreferenced_vertices)
+        r.warnings.push_back(std::to_string(r.vertices_without_normal - r.unreferenced_vertices) +
                              " vertices have no computable normal and are left out of sampling");
     return out;
 }

@@ -59,8 +59,20 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         reach_ = std::max({reach_, (a + o).norm(), (b + o).norm(), (c + o).norm()});
     }
     detail::build_triangle_tree(e);
+    // Only the spheres of closed parts wall in a solid at the sphere levels, as only closed
+    // triangles do at the exact level: an open part encloses nothing, however nearly closed.
+    std::vector<uint8_t> vertex_closed(mesh.positions.size(), 0);
+    for (size_t f = 0; f < nt; ++f)
+        if (e.closed[f])
+            for (uint32_t v : e.triangles[f]) vertex_closed[v] = 1;
+    std::vector<uint8_t> wall(tree_.sphere_count(), 0);
+    for (size_t k = 0; k < wall.size(); ++k) {
+        const uint32_t i = tree_.sample_index()[k];
+        const uint32_t src = doc.samples.source_index(i);
+        wall[k] = doc.samples.is_face_sample(i) ? (src < nt && e.closed[src]) : (src < vertex_closed.size() && vertex_closed[src]);
+    }
     exact_ = std::move(data);
-    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, *exact_));
+    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, *exact_, wall));
 }
 
 bool CollisionModel::has_mesh() const { return exact_ && !exact_->triangles.empty(); }

@@ -52,9 +52,9 @@ void mesh_anchors(const ExactData& e, SolidData& s) {
 
 } // namespace
 
-SolidData SolidData::build(const CompactTree& tree, const ExactData& e) {
+SolidData SolidData::build(const CompactTree& tree, const ExactData& e, const std::vector<uint8_t>& wall) {
     SolidData s;
-    s.of_spheres = SolidGrid::of_spheres(tree);
+    s.of_spheres = SolidGrid::of_spheres(tree, wall);
     if (!e.triangles.empty()) {
         s.of_triangles = SolidGrid::of_triangles(e);
         mesh_anchors(e, s);

@@ -18,8 +18,9 @@ struct SolidData {
     std::vector<uint32_t> anchor_vertex;   // with a mesh: the vertex each anchor is (exact level)
 
     /// Grids and anchors of a model: pieces are the mesh's vertex-connected components when
-    /// `e` has triangles, else the subtrees of the sampling tree three levels down.
-    static SolidData build(const CompactTree& tree, const ExactData& e);
+    /// `e` has triangles, else the subtrees of the sampling tree three levels down. `wall`:
+    /// per sphere, 1 if it samples a closed part (empty: unknown, every sphere is a wall).
+    static SolidData build(const CompactTree& tree, const ExactData& e, const std::vector<uint8_t>& wall = {});
     /// Bytes held.
     size_t memory_bytes() const;
 };

@@ -44,7 +44,7 @@ bool triangle_touches_box(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0, 
 // Sphere model's side of point q: the nearest sample point (where a sampling sphere touches
 // the surface) and its outward normal. Not the nearest sphere: across a wall thinner than two
 // radii the spheres of both sides coincide, and the tie would pick a side at random.
-bool inside_by_nearest_sample(const CompactTree& tree, const Eigen::Vector3d& q) {
+bool inside_by_nearest_sample(const CompactTree& tree, const std::vector<uint8_t>& wall, const Eigen::Vector3d& q) {
     const auto& nodes = tree.nodes();
     double best = std::numeric_limits<double>::infinity();
     bool inside = false;
@@ -62,6 +62,7 @@ bool inside_by_nearest_sample(const CompactTree& tree, const Eigen::Vector3d& q)
             continue;
         }
         for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+            if (!wall.empty() && !wall[k]) continue;
             const Eigen::Vector3f normal =
                 Eigen::Vector3f(tree.nx()[k], tree.ny()[k], tree.nz()[k]).normalized();
             const Eigen::Vector3f point = tree.sphere_centre(n, k) + n.ss_radius * normal;
@@ -166,11 +167,13 @@ SolidGrid::Cell SolidGrid::at(const Eigen::Vector3f& p) const {
     return Cell(cells_[index(q[0], q[1], q[2])]);
 }
 
-SolidGrid SolidGrid::of_spheres(const CompactTree& tree) {
+SolidGrid SolidGrid::of_spheres(const CompactTree& tree, const std::vector<uint8_t>& wall) {
     SolidGrid g;
     Eigen::AlignedBox3d box;
+    auto is_wall = [&](uint32_t k) { return wall.empty() || wall[k]; };
     for (const CompactNode& n : tree.nodes())
         for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k) {
+            if (!is_wall(k)) continue;
             const Eigen::Vector3d c = tree.sphere_centre(n, k).cast<double>();
             box.extend(c - Eigen::Vector3d::Constant(n.ss_radius)), box.extend(c + Eigen::Vector3d::Constant(n.ss_radius));
         }
@@ -178,6 +181,7 @@ SolidGrid SolidGrid::of_spheres(const CompactTree& tree) {
     g.init(box);
     for (const CompactNode& n : tree.nodes())
         for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k) {
+            if (!is_wall(k)) continue;
             const Eigen::Vector3d c = tree.sphere_centre(n, k).cast<double>();
             const double r = n.ss_radius;
             g.mark(c - Eigen::Vector3d::Constant(r), c + Eigen::Vector3d::Constant(r),
@@ -187,7 +191,7 @@ SolidGrid SolidGrid::of_spheres(const CompactTree& tree) {
                        return d.norm() <= r * (1 + 1e-6) + 1e-4 * h;
                    });
         }
-    g.flood(false, [&](const Eigen::Vector3d& q) { return inside_by_nearest_sample(tree, q); });
+    g.flood(false, [&](const Eigen::Vector3d& q) { return inside_by_nearest_sample(tree, wall, q); });
     return g;
 }
 

@@ -19,9 +19,10 @@ public:
 
     /// A grid with nothing inside.
     SolidGrid() = default;
-    /// Walls are the sampling spheres of `tree`: an open part's thin, sparse shell leaks, so
-    /// only closed shells enclose anything.
-    static SolidGrid of_spheres(const CompactTree& tree);
+    /// Walls are the sampling spheres of `tree` for which `wall` (per sphere, compact order) is
+    /// 1, every sphere if it is empty: the spheres of closed parts when the mesh is known, since
+    /// an open part's shell with a slit narrower than a cell would enclose a solid of its own.
+    static SolidGrid of_spheres(const CompactTree& tree, const std::vector<uint8_t>& wall = {});
     /// Walls are the triangles of closed parts (ExactData::closed); open parts enclose nothing.
     static SolidGrid of_triangles(const ExactData& e);
 

@@ -3,6 +3,7 @@
 #include "geometry/triangle_bvh.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace spt {
 
@@ -27,8 +28,11 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     if (bvh_->any_within(c, (r - protrusion_) * (r - protrusion_))) return true;
     // A centre beyond a wall thinner than the allowance passes the test above; the segment
     // from the tangent point to the centre then crosses the surface. The start is skipped
-    // so the faces at p itself do not count.
-    return bvh_->segment_hits(p, c, 1e-6);
+    // so the faces at p itself do not count: p lies on them only up to the rounding of its
+    // coordinates, which grows with their distance from the file's origin, not with r (a
+    // 1e-4 mesh 1e6 away is rounded to 1e-10, a sizeable fraction of its small spheres).
+    const double rounding = 64 * std::numeric_limits<double>::epsilon() * p.cwiseAbs().maxCoeff();
+    return bvh_->segment_hits(p, c, std::max(1e-6, rounding / r));
 }
 
 float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, uint32_t vertex) const {

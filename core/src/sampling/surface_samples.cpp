@@ -93,16 +93,21 @@ struct FaceSampler {
     void refine(std::array<std::pair<int64_t, int64_t>, 3> v, int level) {
         float r = INFINITY;
         for (auto [i, j] : v) r = std::min(r, corner(i, j));
-        const Eigen::Vector3d p[3] = {point(v[0].first, v[0].second), point(v[1].first, v[1].second),
-                                      point(v[2].first, v[2].second)};
+        // Edge lengths from grid steps and the face's two edge vectors, not from rounded
+        // points: halves of a bisected edge tie exactly, and a tie broken by the rounding of
+        // coordinates would sample the same face differently at another scale or offset.
+        const Eigen::Vector3d e1 = b - a, e2 = c - a;
+        const double q11 = e1.squaredNorm(), q12 = e1.dot(e2), q22 = e2.squaredNorm();
         int k = 0; // edge k runs from v[k] to v[k+1]
-        double longest = 0;
+        double longest2 = 0;
         for (int e = 0; e < 3; ++e) {
-            const double len = (p[(e + 1) % 3] - p[e]).norm();
-            if (len > longest) longest = len, k = e;
+            const double di = double(v[(e + 1) % 3].first - v[e].first) / kGrid;
+            const double dj = double(v[(e + 1) % 3].second - v[e].second) / kGrid;
+            const double len2 = di * di * q11 + 2 * di * dj * q12 + dj * dj * q22;
+            if (len2 > longest2 * (1 + 1e-4)) longest2 = len2, k = e; // near-ties: the first edge
         }
         // Every point of a triangle is within (longest edge)/sqrt(3) of a corner.
-        const double rho = longest / std::sqrt(3.0);
+        const double rho = std::sqrt(longest2 / 3.0);
         if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
         const auto a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
         if (((a.first + b.first) | (a.second + b.second)) & 1) return; // finest grid reached
