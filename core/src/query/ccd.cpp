@@ -11,7 +11,7 @@ namespace {
 // Model units: never a float query with a larger growth (its squares stay far below
 // float's largest, so none overflows into a missed contact).
 constexpr double kMaxGrow = 1e18;
-constexpr int kMaxQueries = 100000; // static queries before the search stops at the interval in hand
+constexpr int kMaxQueries = 20000; // static queries before the search stops at the interval in hand
 
 struct Ccd {
     const CollisionModel& a;
@@ -22,7 +22,7 @@ struct Ccd {
     QueryScratch& scratch;
     double speed, tol;
     double max_grow;    // largest growth asked of a float query: the models' size, at most kMaxGrow
-    double place_error; // rounding of an interpolated translation: a few ulps of the larger end
+    double end0, end1;  // largest translation component at each end
     CcdResult r;
 
     bool may_touch(double t, double grow) {
@@ -31,6 +31,9 @@ struct Ccd {
         // overflows; a growth too large for float that this cannot rule out may touch.
         const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
         if (std::isnan(grow)) return true; // 0 x infinite speed: nothing can be ruled out
+        // The interpolated translation is off by a few ulps of what it sums, |t0| + t |t1 - t0|
+        // (bounded by |t0| + t (|t0| + |t1|), which cannot overflow), not of the far end.
+        const double place_error = 8 * std::numeric_limits<double>::epsilon() * (end0 + t * (end0 + end1));
         if (cannot_meet(a, b, local_translation(a, b, rot, p.translation), grow + place_error)) return false;
         // Grown by more than the models' size, the float query would round the geometry away
         // against the growth (a contact lost at the last bit); the bound in double is as tight.
@@ -75,10 +78,8 @@ CcdResult first_contact(const CollisionModel& a, const CollisionModel& b, const 
     // which the search treats as "anything may move anywhere").
     const double speed = (p1.translation - p0.translation).stableNorm() + rotation_angle(p0, p1) * b.reach();
     const double max_grow = std::min(kMaxGrow, std::max(tol, model_radius(a) + model_radius(b)));
-    const double place_error =
-        8 * std::numeric_limits<double>::epsilon() *
-        std::max(p0.translation.cwiseAbs().maxCoeff(), p1.translation.cwiseAbs().maxCoeff());
-    Ccd c{a, b, p0, p1, q, scratch, speed, tol, max_grow, place_error, {}};
+    Ccd c{a, b, p0, p1, q, scratch, speed, tol, max_grow,
+          p0.translation.cwiseAbs().maxCoeff(), p1.translation.cwiseAbs().maxCoeff(), {}};
     if (c.may_touch(0, 0)) {
         c.r.hit = true, c.r.toi = 0;
         return c.r;
