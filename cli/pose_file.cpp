@@ -10,6 +10,10 @@ namespace spt::cli {
 std::vector<PoseLine> read_pose_file(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw_bad_input(path, "cannot open the pose file");
+    return parse_poses(in, path);
+}
+
+std::vector<PoseLine> parse_poses(std::istream& in, const std::string& path) {
     std::vector<PoseLine> out;
     std::string text;
     for (size_t line = 1; std::getline(in, text); ++line) {
@@ -30,8 +34,12 @@ std::vector<PoseLine> read_pose_file(const std::string& path) {
         }
         if (v.size() != 7 && v.size() != 10)
             fail("expected 7 or 10 numbers (tx ty tz qw qx qy qz [dx dy dz]), found " + std::to_string(v.size()));
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(v[size_t(k)]) > kMaxCoordinate)
+                fail("translation " + std::string(1, "xyz"[k]) + " = " + std::to_string(v[size_t(k)]) +
+                     " is beyond 1e16 in magnitude (docs/queries.md, \"Extreme values\")");
         const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
-        if (!(q.norm() > 1e-12)) fail("the quaternion (qw qx qy qz) has zero length");
+        if (q.coeffs().cwiseAbs().maxCoeff() == 0) fail("the quaternion (qw qx qy qz) is zero");
         PoseLine pl;
         pl.pose = Pose::from(Eigen::Vector3d(v[0], v[1], v[2]), q);
         if (v.size() == 10) pl.direction = Eigen::Vector3d(v[7], v[8], v[9]);

@@ -2,11 +2,16 @@
 // Pose files of `spt query`: one pose of B in A's frame a line,
 // "tx ty tz qw qx qy qz [dx dy dz]"; '#' starts a comment line; blank lines are skipped.
 #include "spt/pose.hpp"
+#include <istream>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace spt::cli {
+
+/// Largest translation component a pose file may hold (model units): beyond it a double
+/// keeps no digit below 1 and the pose is refused as bad input (docs/queries.md).
+constexpr double kMaxCoordinate = 1e16;
 
 /// One pose line: the pose and, if given, B's motion direction (A's frame).
 struct PoseLine {
@@ -15,7 +20,12 @@ struct PoseLine {
     size_t line = 0; ///< 1-based line number in the file
 };
 
-/// Reads a pose file; throws Error(BadInput) "FILE:LINE: problem" on the first bad line.
+/// Reads a pose file; throws Error(BadInput) "FILE:LINE: problem" on the first bad line:
+/// not 7 or 10 finite numbers, a translation beyond kMaxCoordinate, a zero quaternion.
+/// Any other quaternion is normalised; any finite direction is kept (zero: no motion).
 std::vector<PoseLine> read_pose_file(const std::string& path);
+
+/// Same, from a stream; `path` names it in messages.
+std::vector<PoseLine> parse_poses(std::istream& in, const std::string& path);
 
 } // namespace spt::cli

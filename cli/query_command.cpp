@@ -7,6 +7,7 @@
 #include "spt/response.hpp"
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -93,6 +94,9 @@ int run_query(const QueryArgs& args) {
             if (pl.direction)
                 back = backtrack_relative(a->model, b->model, pl.pose, *pl.direction, o, rule, scratch).distance;
         }
+        if (!std::isfinite(depth) || !std::isfinite(back)) // never write NaN or infinity
+            throw Error(ErrorKind::BadInput, args.poses + ":" + std::to_string(pl.line) +
+                                                 ": the query gave a non-finite depth or backtrack");
         std::fprintf(out, "%zu,%d,%.9g,%.9g,%llu,%llu,%lld\n", i, r.collide ? 1 : 0, depth, back,
                      (unsigned long long)r.counters.node_pairs, (unsigned long long)r.counters.sphere_tests,
                      (long long)median);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <vector>
 
 namespace {
 
@@ -99,6 +100,80 @@ TEST_F(CliQuery, OutputFileGetsTheCsv) {
     const fs::path csv = dir_ / "out.csv";
     ASSERT_EQ(run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " -o " + csv.string()).code, 0);
     EXPECT_EQ(slurp(csv).rfind("pose,collide,depth,backtrack,node_pairs,sphere_tests,ns\n0,1,", 0), 0u);
+}
+
+// Extreme values (docs/queries.md, "Extreme values"): refused with the line, or answered
+// promptly with finite output.
+using ExtremePosesCli = CliQuery;
+
+// CSV rows after the header, split at commas.
+std::vector<std::vector<std::string>> rows_of(const std::string& csv) {
+    std::istringstream lines(csv);
+    std::string line;
+    std::vector<std::vector<std::string>> rows;
+    std::getline(lines, line);
+    while (std::getline(lines, line)) {
+        std::vector<std::string> cells;
+        std::istringstream cs(line);
+        for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+TEST_F(ExtremePosesCli, TranslationBeyond1e16IsExitTwoNamingTheLine) {
+    for (const char* t : {"1.0000001e16 0 0", "0 1e25 0", "0 0 -1.7976931348623157e308"}) {
+        const auto poses = write("far.txt", std::string("# far\n0 0 0 1 0 0 0\n") + t + " 1 0 0 0\n");
+        const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string());
+        EXPECT_EQ(r.code, 2) << t;
+        EXPECT_NE(r.err.find("far.txt:3: translation"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("1e16"), std::string::npos) << r.err;
+    }
+}
+
+TEST_F(ExtremePosesCli, ZeroQuaternionIsExitTwoNamingTheLine) {
+    const auto poses = write("zero.txt", "0 0 0 0 0 0 0\n");
+    const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("zero.txt:1: the quaternion"), std::string::npos) << r.err;
+}
+
+TEST_F(ExtremePosesCli, TranslationAtTheBoundAnswersNoCollisionWithoutAWalk) {
+    const auto poses = write("bound.txt", "1e16 -1e16 1e16 1 0 0 0 1 0 0\n-1e16 0 0 0.3 0.1 0.2 0.4 -1 0 0\n");
+    const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --repeat 1");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const auto& row : rows_of(r.out)) {
+        ASSERT_EQ(row.size(), 7u);
+        for (size_t k : {1, 2, 3, 4}) EXPECT_EQ(row[k], "0") << "column " << k; // collide, depth, backtrack, pairs
+    }
+}
+
+TEST_F(ExtremePosesCli, TinyHugeAndUnnormalisedQuaternionsAndDirectionsAnswerAsUnitOnes) {
+    // The same pose near contact, written with its quaternion and its direction scaled.
+    const std::string t = "1.6 0.2 0.1 ";
+    const auto poses = write("scaled.txt", t + "0.9 0.3 0.1 0.2 -1 0.2 0.1\n" +          //
+                                               t + "0.9e-300 0.3e-300 0.1e-300 0.2e-300 -1 0.2 0.1\n" +
+                                               t + "0.9e300 0.3e300 0.1e300 0.2e300 -1 0.2 0.1\n" +
+                                               t + "0.9 0.3 0.1 0.2 -1e-300 0.2e-300 0.1e-300\n" +
+                                               t + "0.9 0.3 0.1 0.2 -1e300 0.2e300 0.1e300\n" +
+                                               t + "0.9 0.3 0.1 0.2 0 0 0\n");
+    for (const char* level : {"bounds", "spheres", "exact"}) {
+        const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() +
+                              " --repeat 1 --level " + std::string(level));
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+        EXPECT_EQ(r.out.find("inf"), std::string::npos) << r.out;
+        const auto rows = rows_of(r.out);
+        ASSERT_EQ(rows.size(), 6u);
+        ASSERT_EQ(rows[0][1], "1") << level; // the pose collides
+        EXPECT_NE(rows[0][3], "0") << level;
+        for (size_t i = 1; i < 6; ++i) {
+            EXPECT_EQ(rows[i][1], rows[0][1]) << level << " row " << i;
+            EXPECT_NEAR(std::stod(rows[i][2]), std::stod(rows[0][2]), 1e-6) << level << " row " << i;
+            // Zero direction: no motion, no backtrack; any other scale: the unit direction's.
+            EXPECT_NEAR(std::stod(rows[i][3]), i == 5 ? 0.0 : std::stod(rows[0][3]), 1e-6) << level << " row " << i;
+        }
+    }
 }
 
 } // namespace

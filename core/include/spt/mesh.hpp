@@ -67,12 +67,21 @@ struct ImportOptions {
     bool fix_orientation = true;  ///< re-wind inconsistent faces, turn inside-out closed parts around
 };
 
+/// Largest vertex coordinate prepare_mesh accepts (model units): beyond it a double keeps
+/// no digit below 1, and a model's squared sizes would overflow float.
+constexpr double kMaxMeshCoordinate = 1e16;
+/// Smallest bounding-box diagonal prepare_mesh accepts (model units): below it squared
+/// distances in float lose their digits (subnormal) or vanish.
+constexpr double kMinMeshDiagonal = 1e-15;
+
 /// Reads every mesh of a file assimp understands, applies node transforms, welds,
 /// fixes orientation and computes normals. Throws Error(BadInput) naming the file.
 ImportedMesh import_mesh(const std::string& path, const ImportOptions& options = {});
 
 /// Welds, checks topology, fixes orientation and computes normals of raw triangles
-/// (as import_mesh does after reading). `name` is used in messages.
+/// (as import_mesh does after reading). `name` is used in messages. Throws Error(BadInput)
+/// for a non-finite coordinate or one beyond kMaxMeshCoordinate, an index out of range, a
+/// diagonal below kMinMeshDiagonal, or no non-degenerate face.
 ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positions,
                           std::vector<Triangle> triangles, const ImportOptions& options = {});
 

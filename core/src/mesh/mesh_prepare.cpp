@@ -5,6 +5,7 @@
 #include "geometry/ray_parity.hpp"
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <queue>
 #include <sstream>
@@ -109,10 +110,15 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     ImportReport& r = out.report;
     m.name = std::move(name);
     r.file_vertices = positions.size();
+    if (positions.size() > size_t(INT32_MAX)) // welding numbers vertices in int32
+        throw_bad_input(m.name, "more than 2^31 - 1 vertices");
 
-    for (size_t i = 0; i < positions.size(); ++i)
+    for (size_t i = 0; i < positions.size(); ++i) {
         if (!positions[i].allFinite())
             throw_bad_input(m.name, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        if (positions[i].cwiseAbs().maxCoeff() > kMaxMeshCoordinate)
+            throw_bad_input(m.name, "vertex " + std::to_string(i) + " has a coordinate beyond 1e16 in magnitude");
+    }
     for (size_t f = 0; f < triangles.size(); ++f)
         for (uint32_t v : triangles[f])
             if (v >= positions.size())
@@ -124,6 +130,9 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     Eigen::Vector3d lo = positions[0], hi = positions[0];
     for (const auto& p : positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
     const double diag = (hi - lo).norm();
+    if (!(diag >= kMinMeshDiagonal))
+        throw_bad_input(m.name, "the mesh is too small: its bounding-box diagonal is below 1e-15 (float cannot "
+                                "hold its squared distances)");
     m.welded_index = detail::weld_positions(positions, options.weld_tolerance * diag, m.positions);
     r.vertices = m.positions.size();
     r.welded = r.file_vertices - r.vertices;

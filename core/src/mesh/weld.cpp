@@ -1,5 +1,6 @@
 // Welds vertices closer than a tolerance through a hash grid.
 #include "mesh/weld.hpp"
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -72,7 +73,12 @@ std::vector<uint32_t> weld_positions(const std::vector<Eigen::Vector3d>& positio
     welded.clear();
     // Cells twice the tolerance: a match lies in this cell, or in a neighbour on a side
     // where the point is within the tolerance of the cell's boundary (3.4 cells on average).
-    const double cell = tolerance > 0 ? 2 * tolerance : 1.0;
+    // A cell also at least 2^-60 of the largest coordinate, so every cell index fits int64
+    // (a larger cell is only slower: matches are still in the cell or a neighbour).
+    double largest = 0;
+    for (const Eigen::Vector3d& p : positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+    double cell = std::max(tolerance > 0 ? 2 * tolerance : 1.0, std::ldexp(largest, -60));
+    if (!(cell > 0) || !std::isfinite(cell)) cell = 1.0;
     const double tol2 = tolerance * tolerance;
     CellTable table;
     std::vector<int32_t> next;

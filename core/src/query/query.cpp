@@ -33,9 +33,43 @@ void b_to_a(const QueryFrame& f, v4f& x, v4f& y, v4f& z) {
 
 } // namespace
 
-QueryFrame::QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a) {
-    Rd = b_in_a.rotation.toRotationMatrix();
+void check_pose(const Pose& p, const char* what) {
+    if (!p.translation.allFinite())
+        throw Error(ErrorKind::BadInput, std::string(what) + ": the translation is not finite");
+    const Eigen::Vector4d q = p.rotation.coeffs();
+    if (!q.allFinite() || q.cwiseAbs().maxCoeff() == 0)
+        throw Error(ErrorKind::BadInput, std::string(what) + ": the rotation quaternion is zero or not finite");
+}
+
+Eigen::Quaterniond unit_rotation(const Eigen::Quaterniond& q) {
+    if (std::abs(q.squaredNorm() - 1) <= 1e-12) return q; // unit already: leave the bits alone
+    return unit_quaternion(q);
+}
+
+double model_radius(const CollisionModel& m) {
+    double r = m.extent();
+    if (!m.tree().nodes().empty()) {
+        const CompactNode& root = m.tree().nodes()[0];
+        const double c = Eigen::Vector3d(root.center[0], root.center[1], root.center[2]).norm();
+        r = std::max({r, c + root.bv_radius, c + (m.bounds_reach().empty() ? 0.0 : m.bounds_reach()[0])});
+    }
+    return r;
+}
+
+bool cannot_meet(const CollisionModel& a, const CollisionModel& b, const Eigen::Vector3d& td, double inflate) {
+    // Every piece of B lies within model_radius(b) of td, every piece of A within
+    // model_radius(a) of 0: a larger gap on one axis means no pair can meet. Slack of
+    // 1e-6 for the rounding of the radii; NaN never happens (poses are checked).
+    const double reach = (model_radius(a) + model_radius(b) + std::max(0.0, inflate)) * (1 + 1e-6);
+    return !(td.cwiseAbs().maxCoeff() <= reach);
+}
+
+QueryFrame::QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, float inflate) {
+    check_pose(b_in_a, "pose of B in A's frame");
+    Rd = unit_rotation(b_in_a.rotation).toRotationMatrix();
     td = local_translation(a, b, Rd, b_in_a.translation);
+    apart = cannot_meet(a, b, td, inflate); // also when td overflowed to infinity
+    if (!td.allFinite()) td = clamp_far(td); // far, finite, same direction
     R = Rd.cast<float>();
     t = td.cast<float>();
     // Float moves of B's centres are off by a few ulps of |t| + |x|; pruning and the
@@ -190,10 +224,20 @@ int movemask(v4i m) {
 #endif
 }
 
+// Lanes swapped in pairs (1 0 3 2) and in halves (2 3 0 1); GCC and clang spell it apart
+// (clang builds the fuzz targets).
+#if defined(__clang__)
+v4f swap_pairs(v4f v) { return __builtin_shufflevector(v, v, 1, 0, 3, 2); }
+v4f swap_halves(v4f v) { return __builtin_shufflevector(v, v, 2, 3, 0, 1); }
+#else
+v4f swap_pairs(v4f v) { return __builtin_shuffle(v, v4i{1, 0, 3, 2}); }
+v4f swap_halves(v4f v) { return __builtin_shuffle(v, v4i{2, 3, 0, 1}); }
+#endif
+
 // Lane of the smallest value among the lanes set in `mask`, or -1 if none is set.
 int lane_of_min(v4f v, v4i mask) {
-    v4f m = v < __builtin_shuffle(v, v4i{1, 0, 3, 2}) ? v : __builtin_shuffle(v, v4i{1, 0, 3, 2});
-    m = m < __builtin_shuffle(m, v4i{2, 3, 0, 1}) ? m : __builtin_shuffle(m, v4i{2, 3, 0, 1});
+    v4f m = v < swap_pairs(v) ? v : swap_pairs(v);
+    m = m < swap_halves(m) ? m : swap_halves(m);
     const v4i hit = (v == m) & mask;
     const int bits = movemask(hit);
     return bits ? __builtin_ctz(unsigned(bits)) : -1; // no branch per lane
@@ -373,7 +417,7 @@ void QueryRun::run() {
 
 QueryRun::QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const QueryOptions& options,
                    QueryScratch& scratch)
-    : A(a), B(b), EA(a.exact()), EB(b.exact()), o(options), s(scratch.buffers()), f(a, b, b_in_a),
+    : A(a), B(b), EA(a.exact()), EB(b.exact()), o(options), s(scratch.buffers()), f(a, b, b_in_a, options.inflate),
       exact(options.level == QueryLevel::Exact) {
     if (exact && !(a.has_mesh() && b.has_mesh()))
         throw Error(ErrorKind::Usage, "level 'exact' needs the triangles of both objects (give meshes, not only .spt files)");
@@ -383,6 +427,10 @@ QueryRun::QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose&
 QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                              const QueryOptions& options, QueryScratch& scratch) {
     QueryRun run(a, b, b_in_a, options, scratch);
+    if (run.f.apart) { // the models cannot meet: one bound test, decided in double
+        run.res.counters.bound_tests = 1;
+        return run.res;
+    }
     if (options.level != QueryLevel::Exact) {
         run.run();
         run.check_containment();
@@ -401,9 +449,13 @@ QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, c
 
 QueryResult collide(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                     const QueryOptions& options, QueryScratch& scratch) {
-    QueryResult r = collide_relative(a, b, relative_pose(pose_a, pose_b), options, scratch);
-    r.deepest.point = pose_a.apply(r.deepest.point);
-    r.deepest.normal = pose_a.rotate(r.deepest.normal);
+    check_pose(pose_a, "pose of A");
+    check_pose(pose_b, "pose of B");
+    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
+    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
+    QueryResult r = collide_relative(a, b, relative_pose(ua, ub), options, scratch);
+    r.deepest.point = ua.apply(r.deepest.point);
+    r.deepest.normal = ua.rotate(r.deepest.normal);
     return r;
 }
 

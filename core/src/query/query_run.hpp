@@ -12,15 +12,33 @@ inline Eigen::Vector3d local_translation(const CollisionModel& a, const Collisio
     return rot * b.origin() + (t - a.origin());
 }
 
+// Throws Error(BadInput) naming `what` unless the pose is finite with a non-zero quaternion.
+void check_pose(const Pose& p, const char* what);
+
+// The pose's rotation as a unit quaternion, whatever its length (finite, non-zero; see
+// unit_quaternion); a quaternion of unit length within 1e-12 is used as it is.
+Eigen::Quaterniond unit_rotation(const Eigen::Quaterniond& q);
+
+// Radius around the model's local origin holding everything a query can test: spheres,
+// triangles and, at level bounds, the leaf bounding spheres below the root (model units).
+double model_radius(const CollisionModel& m);
+
+// True when B, its local origin at `td` in A's local frame, cannot meet A even with every
+// sphere grown by `inflate`: decided in double on the largest axis of td, so any finite
+// (or overflowed) td answers without a float that could overflow.
+bool cannot_meet(const CollisionModel& a, const CollisionModel& b, const Eigen::Vector3d& td, double inflate);
+
 // B's pose in A's frame, between the models' local frames, in double and float, and the
-// rounding margin.
+// rounding margin. `apart`: the models cannot meet even grown by `inflate` (decided in
+// double before any float, so a translation up to the largest double answers at once).
 struct QueryFrame {
-    QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a);
+    QueryFrame(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, float inflate);
     Eigen::Matrix3d Rd;
     Eigen::Vector3d td;
     Eigen::Matrix3f R;
     Eigen::Vector3f t;
     float margin = 0;
+    bool apart = false;
 };
 
 // Grows the scratch for this pair of models and starts a new epoch of lazy stamps.

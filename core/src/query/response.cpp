@@ -15,6 +15,9 @@ Eigen::Vector3d sphere_centre(const CompactTree& t, uint32_t node, uint32_t k) {
     return t.sphere_centre(t.nodes()[node], k).cast<double>();
 }
 
+// Steps of 1% of the diagonal taken before giving up (100 diagonals plus the two extents).
+constexpr int kMaxSteps = 10200;
+
 // Steps of 1% of the larger diagonal from `start` (where the model collides), then bisection
 // to 1e-6 of it: for the exact level, and for a sphere model held by containment alone.
 BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
@@ -31,18 +34,22 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
         return collide_relative(a, b, p, q, scratch).collide;
     };
     if (start == 0 && !collides(0)) return r;
-    const double diag = std::max({a.diagonal(), b.diagonal(), 2 * a.extent(), 2 * b.extent()});
+    double diag = std::max({a.diagonal(), b.diagonal(), 2 * a.extent(), 2 * b.extent()});
+    if (!(diag > 0)) diag = std::max(1.0, start); // no size to step by (a point model): any length serves
     const double step = 0.01 * diag;
+    // Bounded counts, not only lengths: far from s = 0 a step or a halving can be below
+    // the rounding of s, and a loop on lengths alone would never end.
     double lo = start, hi = start + step;
-    while (collides(hi)) {
+    for (int k = 0; collides(hi); ++k) {
         lo = hi, hi += step;
-        if (hi - start > 100 * diag + 2 * (a.extent() + b.extent())) {
+        if (k >= kMaxSteps || !(hi > lo)) {
             r.converged = false;
             break;
         }
     }
-    while (r.converged && hi - lo > 1e-6 * diag) {
+    for (int k = 0; r.converged && hi - lo > 1e-6 * diag && k < 64; ++k) {
         const double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break; // no double between them: as close as it gets
         (collides(mid) ? lo : hi) = mid;
     }
     r.distance = hi;
@@ -55,9 +62,11 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
                                    const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
                                    BacktrackRule rule, QueryScratch& scratch) {
     BacktrackResult r;
-    const double len = motion_in_a.norm();
-    if (!(len > 0) || !std::isfinite(len)) return r; // no motion: no direction to move back along
-    const Eigen::Vector3d back = -motion_in_a / len;
+    // Any finite non-zero motion gives a direction: scaled by its largest component before
+    // normalising, so 1e-300 and 1e300 are directions like 1.
+    const double big = motion_in_a.cwiseAbs().maxCoeff();
+    if (!(big > 0) || !std::isfinite(big)) return r; // no motion: no direction to move back along
+    const Eigen::Vector3d back = -(motion_in_a / big).normalized();
     QueryOptions q = options;
     if (rule == BacktrackRule::Paper) {
         q.mode = QueryMode::Deepest;
@@ -95,7 +104,9 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
             step = std::max(step, -half_b + std::sqrt(std::max(0.0, half_b * half_b - c)));
             reach_max = std::max(reach_max, reach);
         }
-        s += step + 1e-6 * reach_max;
+        const double next = s + step + 1e-6 * reach_max;
+        if (!(next > s) || !std::isfinite(next)) break; // s no longer moves: report unconverged
+        s = next;
     }
     r.converged = false;
     r.distance = s;
@@ -105,8 +116,11 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
 BacktrackResult backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                           const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
                           QueryScratch& scratch) {
-    return backtrack_relative(a, b, relative_pose(pose_a, pose_b), pose_a.rotation.conjugate() * motion, options,
-                              rule, scratch);
+    check_pose(pose_a, "pose of A");
+    check_pose(pose_b, "pose of B");
+    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
+    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
+    return backtrack_relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, scratch);
 }
 
 } // namespace spt
