@@ -1,8 +1,9 @@
 // spt-editor-bench: selection from mouse release to highlighted result on a 1,000,000-vertex
 // mesh (through and visible only), and redrawing all four views of a 100k-triangle mesh with
 // 50k sampling spheres in a 1280x800 window. Needs an X server: run under xvfb-run.
-#include "edit_commands.hpp"
+#include "spt/recipe.hpp"
 #include "main_window.hpp"
+#include "view_widget.hpp"
 #include "mesh/shapes.hpp"
 #include <QApplication>
 #include <QDir>
@@ -26,7 +27,7 @@ SptDocument vertex_document(const TriangleMesh& mesh) {
     const float spacing = float(mesh.diagonal() / std::sqrt(double(mesh.positions.size())));
     for (size_t i = 0; i < mesh.positions.size(); ++i)
         doc.samples.add(mesh.positions[i].cast<float>(), mesh.normals[i].cast<float>(), uint32_t(i), spacing);
-    doc.trees.push_back(editor::unsplit_tree("default", doc.samples));
+    doc.trees.push_back(unsplit_tree("default", doc.samples));
     return doc;
 }
 
@@ -50,11 +51,11 @@ void repaint_views(editor::MainWindow& w) {
     finish_views(w);
 }
 
-void open(editor::MainWindow& w, const TriangleMesh& mesh) {
+bool open(editor::MainWindow& w, const TriangleMesh& mesh) {
     w.document().reset(vertex_document(mesh), mesh);
     w.show();
-    QTest::qWaitForWindowExposed(&w);
-    QTest::qWaitFor([&] {
+    if (!QTest::qWaitForWindowExposed(&w)) return false;
+    return QTest::qWaitFor([&] {
         for (int i = 0; i < 4; ++i)
             if (!w.grid().view(i)->has_drawn()) return false;
         return true;
@@ -96,7 +97,7 @@ int main(int argc, char** argv) {
         const TriangleMesh big = make_torus(1.0, 0.3, 1000, 1000);
         editor::MainWindow w(start);
         w.resize(1280, 800);
-        open(w, big);
+        if (!open(w, big)) return 1;
         size_t through = 0, visible = 0;
         const double t_through = selection_ms(w, false, 11, &through);
         const double t_visible = selection_ms(w, true, 11, &visible);
@@ -108,7 +109,7 @@ int main(int argc, char** argv) {
         const TriangleMesh mid = make_torus(1.0, 0.3, 250, 200);
         editor::MainWindow w(start);
         w.resize(1280, 800);
-        open(w, mid);
+        if (!open(w, mid)) return 1;
         std::vector<double> times;
         for (int k = 0; k < 21; ++k) {
             QElapsedTimer t;
