@@ -21,6 +21,7 @@ std::vector<PoseLine> parse_poses(std::istream& in, const std::string& path) {
         if (first == std::string::npos || text[first] == '#') continue;
         std::istringstream s(text);
         std::vector<double> v;
+        std::vector<std::string> tokens; // as written, for messages
         std::string tok;
         auto fail = [&](const std::string& why) {
             throw Error(ErrorKind::BadInput, path + ":" + std::to_string(line) + ": " + why);
@@ -31,12 +32,13 @@ std::vector<PoseLine> parse_poses(std::istream& in, const std::string& path) {
             if (end == tok.c_str() || *end != '\0') fail("'" + tok + "' is not a number");
             if (!std::isfinite(x)) fail("'" + tok + "' is not finite");
             v.push_back(x);
+            tokens.push_back(tok);
         }
         if (v.size() != 7 && v.size() != 10)
             fail("expected 7 or 10 numbers (tx ty tz qw qx qy qz [dx dy dz]), found " + std::to_string(v.size()));
         for (int k = 0; k < 3; ++k)
             if (std::abs(v[size_t(k)]) > kMaxCoordinate)
-                fail("translation " + std::string(1, "xyz"[k]) + " = " + std::to_string(v[size_t(k)]) +
+                fail("translation " + std::string(1, "xyz"[k]) + " = " + tokens[size_t(k)] +
                      " is beyond 1e16 in magnitude (docs/queries.md, \"Extreme values\")");
         const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
         if (q.coeffs().cwiseAbs().maxCoeff() == 0) fail("the quaternion (qw qx qy qz) is zero");
