@@ -40,13 +40,14 @@ SANITIZE_BUILD ?= build-sanitize
 SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 SANITIZE_TARGETS := spt mesh_tests sampling_tests tree_tests geometry_tests query_tests query_alloc_tests io_tests \
   convert_tests hard_tests hard_extreme_tests cli_tests fuzzers spt-make-resources
-SANITIZE_SKIP := _NOT_BUILT|^Install\.
+SANITIZE_SKIP := _NOT_BUILT|^Install\.|^editor\.|^render\.
+SANITIZE_ONLY := .
 sanitize: deps
 	@cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPT_BUILD_BENCH=OFF \
 	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)" > /dev/null
 	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target $(SANITIZE_TARGETS)
 	@cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --output-on-failure -j $(JOBS) -E '$(SANITIZE_SKIP)'
+	  ctest --output-on-failure -j $(JOBS) -R '$(SANITIZE_ONLY)' -E '$(SANITIZE_SKIP)'
 
 bench: build
 	@cmake --build $(BUILD) --target bench

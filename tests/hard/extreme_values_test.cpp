@@ -172,7 +172,7 @@ TEST(ExtremeCcd, MotionAcrossTheWholeRangeOfDoublesHitsNoLaterThanHalfway) {
         EXPECT_TRUE(std::isfinite(r.toi)) << end;
         EXPECT_LE(r.toi, 0.5) << end;
         EXPECT_GE(r.toi, 0.0) << end;
-        EXPECT_LE(r.queries, 20000) << end;
+        EXPECT_LE(r.queries, 100000) << end;
     }
 }
 

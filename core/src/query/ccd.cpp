@@ -11,7 +11,7 @@ namespace {
 // Model units: never a float query with a larger growth (its squares stay far below
 // float's largest, so none overflows into a missed contact).
 constexpr double kMaxGrow = 1e18;
-constexpr int kMaxQueries = 20000; // static queries before the search stops at the interval in hand
+constexpr int kMaxQueries = 100000; // a guard: a 1e-4 object 1e6 from the origin needs over 20,000 near contact
 
 struct Ccd {
     const CollisionModel& a;
