@@ -3,6 +3,7 @@
 #include "spt/compact_tree.hpp"
 #include "spt/sampling_tree.hpp"
 #include "spt/tree_builder.hpp"
+#include "mesh/shapes.hpp"
 #include "tree/bounds.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
@@ -185,4 +186,22 @@ TEST(BuildSubtree, BuildsUnderTheNodeAndLeavesTheRestAlone) {
     EXPECT_FALSE(t.build_subtree(2, s, o)); // already split
     o.leaf_size = 64;
     EXPECT_FALSE(t.build_subtree(3, s, o)); // 32 samples: no more than the leaf size
+}
+
+TEST(Split, HalvesOfARingAreBoundedNoLargerThanTheRing) {
+    // Half a ring seen from the centre of its own box needs a sphere larger than the ring's;
+    // from the ring's centre it needs no more than the ring's.
+    const SampleSet s = test::vertex_samples(make_torus(1.0, 0.25, 48, 12));
+    SamplingTree t("t", uint32_t(s.size()));
+    t.assign_radii(s, {});
+    t.compute_bounds(s, BoundsMethod::Tight);
+    std::vector<uint32_t> east;
+    for (uint32_t i = 0; i < s.size(); ++i)
+        if (s.position(i).x() > 0) east.push_back(i);
+    ASSERT_TRUE(t.split(1, east, s));
+    for (NodeId half : {NodeId(2), NodeId(3)}) {
+        ASSERT_EQ(t.find(half)->ss_radius, t.find(1)->ss_radius); // the same spheres, only regrouped
+        EXPECT_LE(t.find(half)->bv_radius, t.find(1)->bv_radius) << "node " << half;
+    }
+    EXPECT_EQ(t.validate(uint32_t(s.size())), "");
 }

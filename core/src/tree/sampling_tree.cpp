@@ -66,14 +66,15 @@ float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples
     return r > 0 ? r : 1e-6f;
 }
 
-void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const SampleSet& samples, BoundsMethod method) {
+void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const SampleSet& samples, BoundsMethod method,
+                   const detail::Ball& hint) {
     std::vector<Eigen::Vector3f> c(members.size()), p(members.size());
     std::vector<float> r(members.size(), node.ss_radius);
     for (size_t i = 0; i < members.size(); ++i) {
         p[i] = samples.points[members[i]];
         c[i] = sphere_center(p[i], samples.normals[members[i]], node.ss_radius);
     }
-    detail::bound_run(node, c.data(), r.data(), p.data(), members.size(), {}, method);
+    detail::bound_run(node, c.data(), r.data(), p.data(), members.size(), hint, method);
 }
 
 void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule) {
@@ -186,8 +187,12 @@ EditResult SamplingTree::split(NodeId id, const std::vector<uint32_t>& selection
         return {false, "the selection holds all of node " + std::to_string(id) + "'s samples; nothing would be left"};
     left.ss_radius = node_radius(left.samples, samples, rule);
     right.ss_radius = node_radius(right.samples, samples, rule);
-    bound_samples(left, left.samples, samples, bounds);
-    bound_samples(right, right.samples, samples, bounds);
+    // The parent's centre is a candidate for each half: a half of a ring is bounded best from
+    // the ring's centre, where the centre of its own box would give a sphere larger than the
+    // parent's.
+    const detail::Ball parent{n->center.cast<double>(), double(n->bv_radius)};
+    bound_samples(left, left.samples, samples, bounds, parent);
+    bound_samples(right, right.samples, samples, bounds, parent);
     n->active = false;
     n->samples.clear();
     n->samples.shrink_to_fit();
