@@ -49,8 +49,8 @@ private:
 };
 
 const std::vector<std::string> kOverlays = {"spheres", "bounds", "node",   "wire",  "points", "grid",  "axes",
-                                            "none",    "contacts", "normals", "pairs", "ghost",  "trails"};
-const std::set<std::string> kSceneOnly = {"contacts", "normals", "pairs", "ghost", "trails"};
+                                            "none",    "contacts", "normals", "pairs", "ghost",  "trails", "broad"};
+const std::set<std::string> kSceneOnly = {"contacts", "normals", "pairs", "ghost", "trails", "broad"};
 
 bool is_spt_file(const std::string& path) {
     char magic[6] = {};
@@ -113,11 +113,12 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
     std::set<std::string> names(a.overlays.begin(), a.overlays.end());
     if (a.overlays.empty()) names = {"grid", "axes"};
     for (const std::string& n : names)
-        if (n == "bounds" || n == "node" || n == "wire" || n == "points")
+        if (n == "node" || n == "wire" || n == "points")
             throw Error(ErrorKind::Usage, "--overlay " + n + " is for a mesh or .spt INPUT, not a scene");
     SceneOverlays o;
     o.contacts = names.count("contacts"), o.normals = names.count("normals"), o.pairs = names.count("pairs");
     o.ghost = names.count("ghost"), o.trails = names.count("trails"), o.spheres = names.count("spheres");
+    o.bounds = names.count("bounds"), o.broad = names.count("broad");
     const Scene scene = load_scene(a.input);
     Simulation sim(scene, effects_for_overlays(scene.effects, o));
     auto context = make_offscreen_context(a.backend, width, height);
@@ -130,15 +131,11 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
     };
     record();
     // The camera is fitted once, to the initial state, so that frames line up.
-    std::vector<Pose> initial;
-    for (const SceneObject& so : scene.objects) initial.push_back(so.pose);
-    Bounds bounds = renderer->bounds(drawing.frame(initial, nullptr, {}, {}, {}));
-    if (bounds.empty()) bounds.add(Eigen::Vector3f::Zero());
-    const Camera camera = fit_camera(parse_view(a.view), bounds);
+    const Camera camera = fit_camera(parse_view(a.view), drawing.initial_bounds(*renderer));
     const StepResult* step = nullptr;
     for (int f : frames) {
         while (sim.steps_done() < f) step = &sim.step(), record();
-        Frame frame = drawing.frame(sim.poses(), step, sim.ghost_poses(), trails, o);
+        Frame frame = drawing.frame(sim.poses(), step, sim.ghost_poses(), trails, sim.broad_spheres(), o);
         frame.grid = names.count("grid") > 0;
         frame.axes = names.count("axes") > 0;
         renderer->draw(frame, camera, Viewport{0, 0, width, height}, context->framebuffer());
@@ -272,7 +269,8 @@ Action add_render_command(CLI::App& app) {
     c->footer("Overlays: spheres (sampling spheres), bounds (bounding spheres of --node and --bounds-depth levels\n"
               "below), node (highlight --node), wire (mesh edges), points (mesh vertices), grid, axes, none.\n"
               "A scene (SCENE.json) INPUT: frame k is the state after step k; overlays contacts, normals, pairs,\n"
-              "ghost (pose before the response), trails, spheres, grid, axes (docs/scenes.md).\n"
+              "ghost (pose before the response), trails, bounds (objects' bounding spheres), broad (broad-phase\n"
+              "spheres of the step), spheres, grid, axes (docs/scenes.md).\n"
               "Default overlays: grid,axes (a .spt INPUT: spheres,grid,axes). {frame} in OUT is replaced by the\n"
               "frame number. Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write. See docs/rendering.md.");
     c->add_option("input", a->input, "Mesh file (any format assimp reads), a .spt file (spheres only) or a scene (.json)")

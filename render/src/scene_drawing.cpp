@@ -37,6 +37,9 @@ std::vector<SphereInstance> spheres_of(const CollisionModel& m, const Color& col
     return out;
 }
 
+constexpr Color kBoundsColor{0.1f, 0.45f, 0.95f, 1};
+constexpr Color kBroadColor{0.95f, 0.55f, 0.05f, 1};
+
 } // namespace
 
 EffectSet effects_for_overlays(EffectSet e, const SceneOverlays& o) {
@@ -67,8 +70,23 @@ SceneDrawing::SceneDrawing(Renderer& renderer, const Scene& scene) : scene_(scen
     }
 }
 
+Bounds SceneDrawing::initial_bounds(const Renderer& renderer) const {
+    std::vector<Pose> initial;
+    for (const SceneObject& so : scene_.objects) initial.push_back(so.pose);
+    Bounds b = renderer.bounds(frame(initial, nullptr, {}, {}, {}, {}));
+    if (b.empty()) b.add(Eigen::Vector3f::Zero());
+    return b;
+}
+
+void SceneDrawing::release(Renderer& renderer) {
+    for (MeshHandle m : mesh_) renderer.remove_mesh(m);
+    for (SphereSetHandle s : set_) renderer.remove_spheres(s);
+    mesh_.clear(), set_.clear();
+}
+
 Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step, const std::vector<Pose>& ghost,
-                          const std::vector<std::vector<Eigen::Vector3f>>& trails, const SceneOverlays& o) const {
+                          const std::vector<std::vector<Eigen::Vector3f>>& trails,
+                          const std::vector<BroadSphere>& broad, const SceneOverlays& o) const {
     Frame f;
     for (size_t i = 0; i < poses.size(); ++i) {
         if (mesh_[i].id && !o.spheres) {
@@ -96,6 +114,12 @@ Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step
             }
         }
         if (o.trails && i < trails.size() && trails[i].size() > 1) f.trails.push_back({trails[i], {}});
+        if (o.bounds)
+            f.wire_spheres.push_back({{poses[i].apply(scene_.objects[i].bound_center).cast<float>(),
+                                       float(scene_.objects[i].bound_radius)},
+                                      kBoundsColor});
+        if (o.broad && i < broad.size())
+            f.wire_spheres.push_back({{broad[i].center.cast<float>(), float(broad[i].radius)}, kBroadColor});
     }
     if (step) {
         for (const PairContact& c : step->contacts) {

@@ -6,21 +6,7 @@
 # usage: drive_editor.sh SPT_EDITOR SPT MESH WORKDIR   (run under xvfb-run)
 set -euo pipefail
 editor=$1 spt=$2 mesh=$3 work=$4
-rm -rf "$work"
-mkdir -p "$work"
-export XDG_CONFIG_HOME=$work/config XDG_DATA_HOME=$work/data QT_QPA_PLATFORM=xcb
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-# Prints the id of the first window whose title matches the regular expression $1.
-wait_window() {
-    for _ in $(seq 1 1200); do
-        id=$(xdotool search --name "$1" 2>/dev/null | head -1 || true)
-        if [ -n "$id" ]; then echo "$id"; return 0; fi
-        sleep 0.1
-    done
-    return 1
-}
-wait_file() { for _ in $(seq 1 600); do [ -s "$1" ] && return 0; sleep 0.1; done; return 1; }
+source "$(dirname "$0")/../xdotool_session.sh"
 nodes_of() { "$spt" info "$1" | sed -n "s/^tree 'default': \([0-9]*\) nodes.*/\1/p"; }
 
 # A left drag in window coordinates from ($1, $2) to ($3, $4).

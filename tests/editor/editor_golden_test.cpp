@@ -3,6 +3,7 @@
 // also written to BUILD/test-output/editor for docs/editor.md.
 #include "editor_support.hpp"
 #include "golden.hpp"
+#include "qt_image.hpp"
 #include "spt/render/image.hpp"
 #include <QImage>
 #include <QProcess>
@@ -14,22 +15,6 @@ using namespace spt;
 using namespace spt::test;
 
 namespace {
-
-// The framebuffer's bytes as drawn: Qt labels a grab premultiplied, and converting it to
-// straight alpha would rescale every see-through pixel, so only the byte order is changed.
-render::Image to_image(const QImage& grabbed) {
-    QImage q = grabbed;
-    if (q.format() != QImage::Format_RGBA8888_Premultiplied && q.format() != QImage::Format_RGBA8888)
-        q = q.convertToFormat(q.hasAlphaChannel() ? QImage::Format_RGBA8888_Premultiplied : QImage::Format_RGBA8888);
-
-    render::Image out;
-    out.width = q.width();
-    out.height = q.height();
-    out.rgba.resize(size_t(out.width) * size_t(out.height) * 4);
-    for (int y = 0; y < q.height(); ++y)
-        std::memcpy(out.pixel(0, y), q.constScanLine(y), size_t(out.width) * 4);
-    return out;
-}
 
 // Opens the test document, splits the root by the left half of the front view, frames all.
 std::unique_ptr<editor::MainWindow> split_scene(const TempDir& dir, std::string* error) {

@@ -17,6 +17,8 @@ struct SceneOverlays {
     bool ghost = false;    ///< objects at their pose before the response, see-through
     bool trails = false;   ///< the path of each moving object's origin so far
     bool spheres = false;  ///< sampling spheres of every object instead of its mesh
+    bool bounds = false;   ///< each object's bounding sphere (its broad-phase sphere at rest), wire
+    bool broad = false;    ///< the broad-phase spheres of the step (swept over it with ccd), wire
 };
 
 /// The effects a simulation needs so that `overlays` can be drawn: `scene` plus contacts and
@@ -31,10 +33,17 @@ public:
     SceneDrawing(Renderer& renderer, const Scene& scene);
 
     /// The frame of one state: `poses` (world, object order), the step that led to it (nullptr
-    /// for the initial state), the poses before its response (`ghost`) and each object's origin
-    /// positions so far (`trails`, may be empty when the overlay is off).
+    /// for the initial state), the poses before its response (`ghost`), each object's origin
+    /// positions so far (`trails`) and the step's broad-phase spheres (`broad`); the last three
+    /// may be empty when their overlay is off.
     Frame frame(const std::vector<Pose>& poses, const StepResult* step, const std::vector<Pose>& ghost,
-                const std::vector<std::vector<Eigen::Vector3f>>& trails, const SceneOverlays& overlays) const;
+                const std::vector<std::vector<Eigen::Vector3f>>& trails, const std::vector<BroadSphere>& broad,
+                const SceneOverlays& overlays) const;
+    /// The box `spt render` and the viewer fit their cameras to, so that frames line up: the
+    /// objects at their initial poses, no overlays (world frame; a point at the origin if empty).
+    Bounds initial_bounds(const Renderer& renderer) const;
+    /// Frees the uploads in `renderer` (the one given to the constructor; its context current).
+    void release(Renderer& renderer);
 
 private:
     const Scene& scene_;

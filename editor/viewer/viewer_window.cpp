@@ -1,0 +1,240 @@
+// ViewerWindow: histories (open, reload, re-record for overlays), playback and the shown state.
+#include "viewer_window.hpp"
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QSlider>
+#include <QStatusBar>
+#include <cmath>
+
+namespace spt::editor {
+
+ViewerWindow::ViewerWindow(const ViewerStart& start, QWidget* parent)
+    : QMainWindow(parent), overlays_(start.overlays), speed_(start.speed) {
+    setWindowTitle("spt-viewer");
+    view_ = new SceneView(start.view, this);
+    view_->set_overlays(overlays_);
+    setCentralWidget(view_);
+    connect(view_, &RenderView::message, this, &ViewerWindow::show_message);
+    counters_ = new CountersPanel(this);
+    auto* dock = new QDockWidget("Step counters", this);
+    dock->setObjectName("counters_dock");
+    dock->setWidget(counters_);
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    build_actions();
+    build_toolbar();
+    resize(1280, 800);
+
+    play_timer_.setInterval(15);
+    connect(&play_timer_, &QTimer::timeout, this, &ViewerWindow::tick);
+    // Editors write a file in pieces (or replace it): reload once it has been quiet a moment.
+    reload_timer_.setSingleShot(true);
+    reload_timer_.setInterval(300);
+    connect(&reload_timer_, &QTimer::timeout, this, &ViewerWindow::reload);
+    connect(&watcher_, &QFileSystemWatcher::fileChanged, this, [this](const QString&) { reload_timer_.start(); });
+
+    if (!start.file.isEmpty()) {
+        open(start.file);
+        pending_step_ = start.step;
+        if (start.play) connect(this, &ViewerWindow::historyChanged, this, [this] { set_playing(true); },
+                                Qt::SingleShotConnection);
+    }
+    show_state();
+}
+
+ViewerWindow::~ViewerWindow() = default;
+
+void ViewerWindow::open(const QString& path) {
+    show_message(QString("opening %1 ...").arg(path));
+    start_pending(std::make_unique<SceneHistory>(path, overlays_.scene), 0, true);
+}
+
+void ViewerWindow::reload() {
+    if (!history_) return;
+    watch(history_->path());
+    show_message(QString("%1 changed on disk: reloading ...").arg(history_->path()));
+    start_pending(std::make_unique<SceneHistory>(history_->path(), overlays_.scene), step(), false);
+}
+
+void ViewerWindow::start_pending(std::unique_ptr<SceneHistory> h, int want_step, bool refit) {
+    if (pending_) pending_.release()->deleteLater(); // superseded; it may be emitting
+    pending_ = std::move(h);
+    pending_step_ = want_step;
+    pending_refit_ = refit;
+    SceneHistory* p = pending_.get();
+    connect(p, &SceneHistory::progressed, this, [this, p](int n) {
+        if (p == pending_.get()) pending_progress(n);
+        else if (p == history_.get()) recorded_more(n);
+    });
+    connect(p, &SceneHistory::stopped, this, [this, p] {
+        if (p == pending_.get()) pending_progress(p->recorded());
+        else if (p == history_.get()) recorded_more(p->recorded());
+    });
+    connect(p, &SceneHistory::failed, this, [this, p](const QString& message) {
+        if (p == pending_.get() && !p->loaded()) {
+            // Nothing replaced: the scene shown stays. (Deleted later: it is emitting.)
+            pending_.release()->deleteLater();
+            show_error(message);
+            show_state();
+            return;
+        }
+        show_error(message);
+    });
+    show_state();
+}
+
+void ViewerWindow::pending_progress(int recorded) {
+    // Replace the shown history once the new one has reached the step shown, so playback
+    // does not jump back while a scene is re-recorded.
+    if (!pending_ || !pending_->loaded()) return;
+    if (recorded >= std::min(pending_step_, pending_->target()) || pending_->finished()) adopt_pending();
+    else show_message(QString("recording %1 / %2 ...").arg(recorded).arg(pending_step_));
+}
+
+void ViewerWindow::adopt_pending() {
+    const bool refit = pending_refit_;
+    const int want = pending_step_;
+    const bool new_file = !history_ || history_->path() != pending_->path();
+    if (history_) history_.release()->deleteLater(); // it may be emitting
+    history_ = std::move(pending_);
+    view_->set_history(history_.get(), refit);
+    if (new_file) {
+        watch(history_->path());
+        setWindowTitle(QString("%1 - spt-viewer").arg(QFileInfo(history_->path()).fileName()));
+        show_message(QString("%1: %2 objects, %3 steps of %4 s")
+                         .arg(history_->path())
+                         .arg(history_->scene().objects.size())
+                         .arg(history_->target())
+                         .arg(history_->scene().dt));
+    } else {
+        show_message(QString("%1 recorded again (effects %2)")
+                         .arg(history_->path(), QString::fromStdString(history_->effects().names())));
+    }
+    timeline_->setMaximum(history_->target());
+    set_step(want);
+    emit historyChanged();
+}
+
+void ViewerWindow::recorded_more(int recorded) {
+    (void)recorded;
+    show_state(); // the step label shows how far recording has got
+}
+
+void ViewerWindow::set_step(int k) {
+    const int last = history_ ? std::max(history_->recorded(), 0) : 0;
+    view_->set_step(std::clamp(k, 0, last));
+    show_state();
+    emit stepShown(view_->step());
+}
+
+void ViewerWindow::show_state() {
+    const int k = view_->step();
+    if (!history_) {
+        step_label_->setText(pending_ ? "loading ..." : "no scene");
+        timeline_->setEnabled(false);
+        counters_->show_step(nullptr, {}, 0);
+        return;
+    }
+    timeline_->setEnabled(true);
+    {
+        const QSignalBlocker block(timeline_);
+        timeline_->setValue(k);
+    }
+    const int rec = history_->recorded();
+    step_label_->setText(QString("step %1 / %2%3  t = %4 s")
+                             .arg(k)
+                             .arg(history_->target())
+                             .arg(rec < history_->target() && !history_->finished()
+                                      ? QString(" (recorded %1)").arg(rec)
+                                      : QString())
+                             .arg(double(k) * history_->scene().dt, 0, 'f', 3));
+    const auto s = history_->state(k);
+    if (s) counters_->show_step(s->step ? &*s->step : nullptr, history_->effects(), state_hash(s->poses));
+}
+
+void ViewerWindow::set_playing(bool playing) {
+    playing_ = playing && history_;
+    play_action_->setChecked(playing_);
+    play_action_->setText(playing_ ? "Pause" : "Play");
+    carry_ = 0;
+    if (playing_) {
+        if (history_ && view_->step() >= history_->target()) set_step(0); // play again from the start
+        clock_.start();
+        play_timer_.start();
+    } else {
+        play_timer_.stop();
+    }
+}
+
+void ViewerWindow::set_speed(double speed) {
+    speed_ = std::clamp(speed, 0.01, 100.0);
+    const int i = speed_box_->findData(speed_);
+    if (i >= 0) speed_box_->setCurrentIndex(i);
+}
+
+void ViewerWindow::tick() {
+    if (!history_ || !playing_) return;
+    // Real time times the speed: dt seconds of the scene a step.
+    const double seconds = double(clock_.restart()) * 1e-3;
+    carry_ += seconds * speed_ / std::max(history_->scene().dt, 1e-9);
+    const int advance = int(std::floor(carry_));
+    if (advance <= 0) return;
+    const int rec = history_->recorded();
+    const int want = std::min(view_->step() + advance, history_->target());
+    if (want > rec) {
+        // Ahead of the recording: wait for it instead of skipping.
+        carry_ = 0;
+        if (view_->step() < rec) set_step(rec);
+        return;
+    }
+    carry_ -= advance;
+    set_step(want);
+    if (want >= history_->target()) set_playing(false);
+}
+
+void ViewerWindow::set_overlays(const ViewerOverlays& overlays) {
+    overlays_ = overlays;
+    view_->set_overlays(overlays_);
+    for (auto& [name, action] : overlay_actions_) {
+        const QSignalBlocker block(action);
+        const render::SceneOverlays& o = overlays_.scene;
+        const std::map<QString, bool> on = {{"contacts", o.contacts}, {"normals", o.normals}, {"pairs", o.pairs},
+                                            {"ghost", o.ghost},       {"trails", o.trails},   {"spheres", o.spheres},
+                                            {"bounds", o.bounds},     {"broad", o.broad},     {"grid", overlays_.grid},
+                                            {"axes", overlays_.axes}};
+        action->setChecked(on.at(name));
+    }
+    // Only what an overlay needs is simulated: record again when the effects differ.
+    const SceneHistory* base = pending_ && pending_->loaded() ? pending_.get() : history_.get();
+    if (!base || !base->loaded()) return;
+    const EffectSet want = render::effects_for_overlays(base->scene().effects, overlays_.scene);
+    if (want.bits() == base->effects().bits()) return;
+    start_pending(std::make_unique<SceneHistory>(base->shared_scene(), overlays_.scene), step(), false);
+}
+
+void ViewerWindow::watch(const QString& path) {
+    // A file replaced by rename drops out of the watcher: add it again each time.
+    if (!watcher_.files().isEmpty()) watcher_.removePaths(watcher_.files());
+    if (QFileInfo::exists(path)) watcher_.addPath(path);
+}
+
+void ViewerWindow::show_error(const QString& text) {
+    last_error_ = text;
+    show_message(text);
+    // Window-modal and not blocking: the scene shown stays.
+    auto* box = new QMessageBox(QMessageBox::Warning, "spt-viewer", text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void ViewerWindow::show_message(const QString& text) {
+    last_message_ = text;
+    statusBar()->showMessage(text);
+}
+
+} // namespace spt::editor
