@@ -26,7 +26,7 @@ test: build
 # directory (docs/fuzzing.md).
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= spt_loader pose_file mesh_prepare query
+FUZZ_TARGETS ?= spt_loader pose_file mesh_prepare query scene
 fuzz: deps
 	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPT_FUZZ=ON \
 	  -DSPT_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all" > /dev/null

@@ -77,6 +77,30 @@ TEST(Simulation, GravityAcceleratesDynamicObjectsOnly) {
     EXPECT_NEAR((sim.poses()[2].translation - Eigen::Vector3d(1, 5, 0)).norm(), 0, 1e-12);
 }
 
+TEST(Simulation, MotionBeyondTheRepresentableRangeIsRefusedAndTheStateKept) {
+    const spt::test::SceneDir dir;
+    // Finite everywhere in the file, yet one step carries b to 1e300 (and gravity c to infinity).
+    const Scene s = scene(dir, R"({"spt_scene": 1, "dt": 1e150, "objects": [
+        {"name": "a", "model": "ball.obj", "static": true},
+        {"name": "b", "model": "ball.obj", "position": [5, 0, 0], "velocity": [1e150, 0, 0]}]})");
+    Simulation sim(s, parse_effect_list("motion,contacts", "test"));
+    try {
+        sim.step();
+        FAIL() << "a step to x = 1e300 was taken";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+        EXPECT_NE(std::string(e.what()).find("'b'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("step 1"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(sim.steps_done(), 0);
+    EXPECT_EQ(sim.poses()[1].translation, Eigen::Vector3d(5, 0, 0));
+    const Scene g = scene(dir, R"({"spt_scene": 1, "dt": 1, "gravity": [0, -1e308, 0], "objects": [
+        {"name": "c", "model": "ball.obj"}]})");
+    Simulation fall(g, parse_effect_list("motion,gravity", "test"));
+    EXPECT_THROW(fall.step(), Error);
+    EXPECT_TRUE(fall.poses()[0].translation.allFinite());
+}
+
 // Balls on a jittered 3 x 3 x 3 lattice, 1.1 apart, over a floor, thrown at each other.
 std::string ball_cloud(int n, unsigned seed) {
     std::mt19937 rng(seed);

@@ -63,7 +63,9 @@ public:
     Simulation(const Simulation&) = delete;
     Simulation& operator=(const Simulation&) = delete;
 
-    /// Runs one step and returns what it did (valid until the next step).
+    /// Runs one step and returns what it did (valid until the next step). Throws Error(BadInput)
+    /// naming the object if the motion would carry it beyond 1e16 or to infinity (the state
+    /// stays that of the last step).
     const StepResult& step();
     /// The scene simulated.
     const Scene& scene() const { return scene_; }

@@ -74,6 +74,14 @@ void Simulation::move() {
                 poses_[i].rotation =
                     (Eigen::Quaterniond(Eigen::AngleAxisd(w * dt, angular_[i] / w)) * poses_[i].rotation).normalized();
         }
+        // Refused, not written: a huge dt, velocity or gravity would carry the object past what a
+        // query accepts, or to infinity.
+        const Pose& p = poses_[i];
+        if (!(p.translation.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate) || !p.rotation.coeffs().allFinite() ||
+            !velocity_[i].allFinite())
+            throw Error(ErrorKind::BadInput, scene_.file + ": object '" + o.name + "' leaves the representable range at step " +
+                                                 std::to_string(steps_ + 1) +
+                                                 " (a coordinate beyond 1e16 or not finite): dt, its velocity or gravity is too large");
     }
 }
 
@@ -82,7 +90,15 @@ const StepResult& Simulation::step() {
     r.contacts.clear();
     r.counters = {};
     previous_ = poses_;
-    if (effects_.has(Effect::Motion)) move();
+    if (effects_.has(Effect::Motion)) {
+        const std::vector<Eigen::Vector3d> velocity_before = velocity_;
+        try {
+            move();
+        } catch (const Error&) {
+            poses_ = previous_, velocity_ = velocity_before; // refused: the state stays that of the last step
+            throw;
+        }
+    }
     ++steps_;
     r.step = steps_;
     r.time = double(steps_) * scene_.dt;
