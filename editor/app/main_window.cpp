@@ -1,5 +1,6 @@
 // MainWindow: layout, menus, toolbar, docks, title and closing.
 #include "main_window.hpp"
+#include "cost_panel.hpp"
 #include "tree_panel.hpp"
 #include <QAction>
 #include <QCloseEvent>
@@ -88,6 +89,14 @@ void MainWindow::build_docks() {
     history_dock->setObjectName("history_dock");
     history_dock->setWidget(history);
     addDockWidget(Qt::RightDockWidgetArea, history_dock);
+    cost_ = new CostPanel(doc_, this);
+    auto* cost_dock = new QDockWidget("Cost", this);
+    cost_dock->setObjectName("cost_dock");
+    cost_dock->setWidget(cost_);
+    addDockWidget(Qt::RightDockWidgetArea, cost_dock);
+    tabifyDockWidget(history_dock, cost_dock);
+    history_dock->raise();
+    connect(cost_, &CostPanel::message, this, &MainWindow::show_message);
     connect(panel_, &TreePanel::setRadiusRequested, this, &MainWindow::set_radius);
     connect(panel_, &TreePanel::buildSubtreeRequested, this, &MainWindow::build_subtree);
     connect(panel_, &TreePanel::colorByNodeChosen, this,

@@ -18,6 +18,7 @@ class QPushButton;
 
 namespace spt::editor {
 
+class CostPanel;
 class TreePanel;
 
 /// How the editor was started (spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS]).
@@ -45,6 +46,8 @@ public:
     ViewGrid& grid() { return *grid_; }
     /// The dock's tree panel.
     TreePanel& tree_panel() { return *panel_; }
+    /// The dock's cost panel.
+    CostPanel& cost_panel() { return *cost_; }
     /// Shared view settings (visible-only selection, modifier swap).
     ViewOptions& view_options() { return options_; }
     /// True while a file is being opened in the background.
@@ -110,6 +113,7 @@ private:
     ViewOptions options_;
     ViewGrid* grid_ = nullptr;
     TreePanel* panel_ = nullptr;
+    CostPanel* cost_ = nullptr;
     QString save_path_, source_path_, mesh_path_, pending_save_path_;
     bool unsaved_new_ = false, recovering_ = false;
     bool opening_ = false; // from open_file until its result has been taken in

@@ -23,4 +23,5 @@
 #include "spt/split_recipe.hpp"
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"
+#include "spt/tree_cost.hpp"
 #include "spt/version.hpp"
