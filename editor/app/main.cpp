@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     parser.addPositionalArgument("FILE", "A mesh (converted with default options) or a .spt file");
     parser.addOption({{"o", "output"}, "Where Save (Ctrl+S) writes, without a dialog", "OUT.spt"});
     parser.addOption({"mesh", "The .spt file's mesh, if it is not beside it", "MESH"});
-    parser.addOption({"autosave", "Seconds between recovery files (default 30; 0: off)", "SECONDS", "30"});
+    parser.addOption({"autosave", "Seconds between recovery files for this session (default: the preference, 30; 0: off)", "SECONDS"});
     parser.process(app);
 
     spt::editor::StartOptions options;
@@ -27,9 +27,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "spt-editor: one FILE at most (got %d)\n", int(files.size()));
         return 2;
     }
-    bool ok = false;
-    options.autosave_seconds = parser.value("autosave").toInt(&ok);
-    if (!ok || options.autosave_seconds < 0) {
+    bool ok = true;
+    if (parser.isSet("autosave")) options.autosave_seconds = parser.value("autosave").toInt(&ok);
+    if (!ok || (parser.isSet("autosave") && options.autosave_seconds < 0)) {
         std::fprintf(stderr, "spt-editor: --autosave %s: expected a whole number of seconds >= 0\n",
                      qPrintable(parser.value("autosave")));
         return 2;

@@ -1,6 +1,7 @@
 // MainWindow: layout, menus, toolbar, docks, title and closing.
 #include "main_window.hpp"
 #include "cost_panel.hpp"
+#include "preferences.hpp"
 #include "tree_panel.hpp"
 #include <QAction>
 #include <QCloseEvent>
@@ -58,11 +59,11 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     save_path_ = start_.output;
     connect(&stack_, &QUndoStack::cleanChanged, this, &MainWindow::update_title);
     connect(&stack_, &QUndoStack::indexChanged, this, &MainWindow::update_title);
-    if (start_.autosave_seconds > 0) {
-        autosave_timer_.setInterval(start_.autosave_seconds * 1000);
-        connect(&autosave_timer_, &QTimer::timeout, this, &MainWindow::autosave);
-        autosave_timer_.start();
-    }
+    connect(&autosave_timer_, &QTimer::timeout, this, &MainWindow::autosave);
+    // The command line's --autosave holds for this session; the rest comes from the preferences.
+    Preferences prefs = load_preferences();
+    if (start_.autosave_seconds >= 0) prefs.autosave_seconds = start_.autosave_seconds;
+    apply_preferences(prefs, false);
     resize(1280, 860);
     update_title();
     if (!start_.file.isEmpty()) open_file(start_.file, start_.mesh);
@@ -115,9 +116,7 @@ void MainWindow::build_menus() {
     refresh_recent();
     file->addAction("&Save", QKeySequence::Save, this, [this] { save(); });
     file->addAction("Save &As...", QKeySequence::SaveAs, this, [this] { save_as(); });
-    file->addAction("Re&vert", this, [this] {
-        if (!source_path_.isEmpty()) open_file(source_path_, mesh_path_);
-    });
+    file->addAction("Re&vert", this, [this] { revert(); });
     file->addSeparator();
     file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
 
@@ -143,16 +142,18 @@ void MainWindow::build_menus() {
     });
     edit->addAction("Duplicate tree", this, [this] { duplicate_tree(); });
     edit->addAction("Delete tree", this, [this] { delete_tree(); });
+    edit->addSeparator();
+    edit->addAction("&Preferences...", QKeySequence("Ctrl+,"), this, &MainWindow::show_preferences);
 
     QMenu* view = menuBar()->addMenu("&View");
-    QAction* visible = view->addAction("&Visible-only selection");
+    QAction* visible = visible_action_ = view->addAction("&Visible-only selection");
     visible->setCheckable(true);
     visible->setShortcut(QKeySequence(Qt::Key_X));
     connect(visible, &QAction::toggled, this, [this](bool on) {
         options_.visible_only = on;
         show_message(on ? "selection: visible only" : "selection: through");
     });
-    QAction* swap = view->addAction("Shift/Ctrl as in MeshLab (Ctrl adds)");
+    QAction* swap = swap_action_ = view->addAction("Shift/Ctrl as in MeshLab (Ctrl adds)");
     swap->setCheckable(true);
     connect(swap, &QAction::toggled, this, [this](bool on) { options_.swap_modifiers = on; });
     view->addAction("Frame &all", QKeySequence(Qt::Key_Home), this, [this] {

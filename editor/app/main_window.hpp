@@ -4,6 +4,7 @@
 // saves, a modified mark in the title, recovery files.
 #include "document_loader.hpp"
 #include "editor_document.hpp"
+#include "preferences.hpp"
 #include "recovery.hpp"
 #include "scene.hpp"
 #include "view_grid.hpp"
@@ -26,7 +27,7 @@ struct StartOptions {
     QString file;          ///< mesh or .spt to open
     QString output;        ///< where Save writes (no dialog)
     QString mesh;          ///< the .spt file's mesh, if not beside it
-    int autosave_seconds = 30; ///< recovery file period; 0 turns it off
+    int autosave_seconds = -1; ///< recovery file period, seconds; 0 turns it off; -1: the preference
     QString recovery_dir;  ///< empty: the application data location's "recovery"
 };
 
@@ -63,12 +64,24 @@ public:
 
     /// Starts opening `path` in the background (the document stays until it succeeds).
     void open_file(const QString& path, const QString& mesh_path = {});
+    /// The files of Open Recent, newest first.
+    QStringList recent_files() const;
     /// Offers the recovery files dead editors left; true if one was opened.
     bool offer_recovery();
     /// Saves to `path` atomically; false (message shown) if it could not.
     bool save_to(const QString& path);
     /// Writes the recovery file now if there is unsaved work.
     void autosave();
+    /// Reopens the document's file, dropping unsaved changes after asking (File > Revert);
+    /// false if there is no file or the changes are kept.
+    bool revert();
+    /// Applies preferences at once (recovery period, selection keys and mode, colours) and,
+    /// with `save`, keeps them for the next sessions.
+    void apply_preferences(const Preferences& preferences, bool save = true);
+    /// The preferences in effect.
+    const Preferences& preferences() const { return preferences_; }
+    /// Opens the preferences dialog (Edit > Preferences); accepting it applies them.
+    void show_preferences();
 
     /// Splits the current node by the selection (key S).
     bool split();
@@ -115,7 +128,7 @@ private:
     TreePanel* panel_ = nullptr;
     CostPanel* cost_ = nullptr;
     QString save_path_, source_path_, mesh_path_, pending_save_path_;
-    bool unsaved_new_ = false, recovering_ = false;
+    bool unsaved_new_ = false, recovering_ = false, discard_on_open_ = false;
     bool opening_ = false; // from open_file until its result has been taken in
     QTimer autosave_timer_;
     Recovery recovery_;
@@ -125,6 +138,8 @@ private:
     bool cancelled_ = false;
     QString last_error_, last_message_;
     class QMenu* recent_menu_ = nullptr;
+    Preferences preferences_;
+    class QAction *visible_action_ = nullptr, *swap_action_ = nullptr;
 };
 
 } // namespace spt::editor

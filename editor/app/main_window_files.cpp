@@ -17,7 +17,7 @@ void MainWindow::open_file(const QString& path, const QString& mesh_path) {
         show_message("a file is still being opened");
         return;
     }
-    if (modified() && !maybe_save()) return;
+    if (modified() && !discard_on_open_ && !maybe_save()) return;
     cancelled_ = false;
     opening_ = true;
     progress_->show();
@@ -132,6 +132,27 @@ void MainWindow::add_recent(const QString& path) {
     while (recent.size() > 10) recent.removeLast();
     settings.setValue("recent", recent);
     refresh_recent();
+}
+
+QStringList MainWindow::recent_files() const { return QSettings().value("recent").toStringList(); }
+
+bool MainWindow::revert() {
+    if (source_path_.isEmpty() || unsaved_new_) {
+        show_message("nothing to revert to: the document has not been saved to a file");
+        return false;
+    }
+    if (modified()) {
+        const auto answer = QMessageBox::question(
+            this, "Revert", QString("Revert to %1? The unsaved changes are lost.").arg(source_path_),
+            QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Discard) return false;
+    }
+    // The changes stay (and count as unsaved) until the file has loaded; open_file must not
+    // ask to save them.
+    discard_on_open_ = true;
+    open_file(source_path_, mesh_path_);
+    discard_on_open_ = false;
+    return true;
 }
 
 void MainWindow::refresh_recent() {

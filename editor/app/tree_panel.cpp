@@ -1,6 +1,7 @@
 // TreePanel: trees, nodes and properties; clicking a node makes it current.
 #include "tree_panel.hpp"
 #include <QComboBox>
+#include <QSignalBlocker>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -29,7 +30,8 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     trees_->setObjectName("tree_list");
     top->addWidget(new QLabel("Tree"));
     top->addWidget(trees_, 1);
-    auto* color = new QComboBox;
+    auto* color = color_ = new QComboBox;
+    color->setObjectName("color_by");
     color->addItems({"Colour by level", "Colour by node"});
     top->addWidget(color);
     layout->addLayout(top);
@@ -79,6 +81,11 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     connect(&doc_, &EditorDocument::treeChanged, this, &TreePanel::rebuild);
     connect(&doc_, &EditorDocument::currentChanged, this, &TreePanel::show_current);
     connect(&doc_, &EditorDocument::selectionChanged, this, &TreePanel::show_current);
+}
+
+void TreePanel::show_color_by_node(bool by_node) {
+    const QSignalBlocker block(color_);
+    color_->setCurrentIndex(by_node ? 1 : 0);
 }
 
 BuildOptions TreePanel::build_options() const {

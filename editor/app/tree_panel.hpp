@@ -25,6 +25,8 @@ public:
     QTreeWidget* nodes() const { return nodes_; }
     /// Build options chosen in the panel.
     BuildOptions build_options() const;
+    /// Shows colouring by node (true) or by level without asking for it again.
+    void show_color_by_node(bool by_node);
 
 signals:
     /// The user asked to set the current node's sampling-sphere radius (model units).
@@ -44,6 +46,7 @@ private:
     QDoubleSpinBox* radius_ = nullptr;
     QSpinBox* leaf_size_ = nullptr;
     QComboBox* strategy_ = nullptr;
+    QComboBox* color_ = nullptr;
     bool updating_ = false;
 };
 

@@ -1,0 +1,160 @@
+// The rest of a session's file handling and settings: drag and drop, Open Recent, Revert
+// (asking first), and preferences that apply at once and persist.
+#include "editor_support.hpp"
+#include "tree_panel.hpp"
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTest>
+#include <QTimer>
+#include <QUrl>
+#include <filesystem>
+#include <gtest/gtest.h>
+
+using namespace spt;
+using namespace spt::test;
+
+namespace {
+
+// Presses `button` in the next message box that shows up (a modal question of the window).
+void answer_next_question(QMessageBox::StandardButton button) {
+    QTimer::singleShot(50, [button] {
+        for (int i = 0; i < 100; ++i) {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                box->button(button)->click();
+                return;
+            }
+            QTest::qWait(20);
+        }
+    });
+}
+
+QAction* menu_action(QMenu* menu, const QString& text) {
+    for (QAction* a : menu->actions())
+        if (a->text() == text) return a;
+    return nullptr;
+}
+
+QMenu* file_menu(editor::MainWindow& w) {
+    for (QAction* a : w.menuBar()->actions())
+        if (a->text() == "&File") return a->menu();
+    return nullptr;
+}
+
+} // namespace
+
+TEST(EditorSession, DroppingAFileOnTheWindowOpensIt) {
+    TempDir dir("editor-drop");
+    std::string error;
+    const auto w = open_editor(dir, write_editor_files(dir).spt, &error);
+    ASSERT_TRUE(w) << error;
+    // Another document: the torus saved with one more tree.
+    ASSERT_TRUE(w->add_tree("walking"));
+    const QString other = QString::fromStdString(dir.file("other.spt"));
+    ASSERT_TRUE(w->save_to(other));
+    w->undo_stack().undo();
+    ASSERT_TRUE(w->save_to(QString::fromStdString(dir.file("torus.spt"))));
+    const size_t before = w->document().document().trees.size();
+
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(other)});
+    const QPointF at(w->width() / 2.0, w->height() / 2.0);
+    QDragEnterEvent enter(at.toPoint(), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(w.get(), &enter);
+    EXPECT_TRUE(enter.isAccepted());
+    QDropEvent drop(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(w.get(), &drop);
+    ASSERT_TRUE(wait_ready(*w));
+    EXPECT_EQ(w->document().document().trees.size(), before + 1);
+    EXPECT_NE(w->document().document().tree("walking"), nullptr);
+    EXPECT_TRUE(w->windowTitle().startsWith("other.spt")) << w->windowTitle().toStdString();
+}
+
+TEST(EditorSession, OpenRecentListsOpenedFilesNewestFirstAndReopensThem) {
+    TempDir dir("editor-recent");
+    std::string error;
+    const EditorFiles files = write_editor_files(dir);
+    const auto w = open_editor(dir, files.spt, &error);
+    ASSERT_TRUE(w) << error;
+    const QString second = QString::fromStdString(dir.file("second.spt"));
+    std::filesystem::copy_file(files.spt.toStdString(), second.toStdString());
+    w->open_file(second);
+    ASSERT_TRUE(wait_ready(*w));
+    const QStringList recent = w->recent_files();
+    ASSERT_GE(recent.size(), 2);
+    EXPECT_EQ(recent[0], QFileInfo(second).absoluteFilePath());
+    EXPECT_EQ(recent[1], QFileInfo(files.spt).absoluteFilePath());
+    QMenu* file = file_menu(*w);
+    ASSERT_TRUE(file);
+    QAction* open_recent = menu_action(file, "Open &Recent");
+    ASSERT_TRUE(open_recent && open_recent->menu());
+    QAction* first_file = menu_action(open_recent->menu(), QFileInfo(files.spt).absoluteFilePath());
+    ASSERT_TRUE(first_file) << "the first file is not in Open Recent";
+    first_file->trigger();
+    ASSERT_TRUE(wait_ready(*w));
+    EXPECT_TRUE(w->windowTitle().startsWith("torus.spt")) << w->windowTitle().toStdString();
+    EXPECT_EQ(w->recent_files()[0], QFileInfo(files.spt).absoluteFilePath());
+}
+
+TEST(EditorSession, RevertAsksThenReloadsTheFileAndKeepingTheChangesKeepsThem) {
+    TempDir dir("editor-revert");
+    std::string error;
+    const auto w = open_editor(dir, write_editor_files(dir).spt, &error);
+    ASSERT_TRUE(w) << error;
+    const size_t trees = w->document().document().trees.size();
+    ASSERT_TRUE(w->add_tree("scratch"));
+    ASSERT_TRUE(w->modified());
+    // Cancel keeps the edit.
+    answer_next_question(QMessageBox::Cancel);
+    EXPECT_FALSE(w->revert());
+    EXPECT_EQ(w->document().document().trees.size(), trees + 1);
+    EXPECT_TRUE(w->modified());
+    // Discard reloads the file without asking to save.
+    answer_next_question(QMessageBox::Discard);
+    EXPECT_TRUE(w->revert());
+    ASSERT_TRUE(wait_ready(*w));
+    EXPECT_EQ(w->document().document().trees.size(), trees);
+    EXPECT_FALSE(w->modified());
+    EXPECT_EQ(w->undo_stack().count(), 0);
+}
+
+TEST(EditorSession, PreferencesApplyAtOnceAndPersist) {
+    TempDir dir("editor-preferences");
+    std::string error;
+    {
+        const auto w = open_editor(dir, write_editor_files(dir).spt, &error);
+        ASSERT_TRUE(w) << error;
+        w->show_preferences();
+        auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+        ASSERT_TRUE(dialog) << "no preferences dialog";
+        dialog->findChild<QSpinBox*>("autosave_seconds")->setValue(7);
+        dialog->findChild<QCheckBox*>("swap_modifiers")->setChecked(true);
+        dialog->findChild<QCheckBox*>("visible_only")->setChecked(true);
+        dialog->findChild<QComboBox*>("color_by")->setCurrentIndex(1);
+        dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+        EXPECT_EQ(w->preferences().autosave_seconds, 7);
+        EXPECT_TRUE(w->view_options().swap_modifiers);
+        EXPECT_TRUE(w->view_options().visible_only);
+        EXPECT_EQ(w->tree_panel().findChild<QComboBox*>("color_by")->currentIndex(), 1);
+    }
+    // The next window starts with them; the command line's --autosave wins for its session.
+    editor::StartOptions start = test_start(dir);
+    start.autosave_seconds = -1;
+    editor::MainWindow next(start);
+    EXPECT_EQ(next.preferences().autosave_seconds, 7);
+    EXPECT_TRUE(next.view_options().swap_modifiers);
+    EXPECT_TRUE(next.view_options().visible_only);
+    start.autosave_seconds = 0;
+    editor::MainWindow overridden(start);
+    EXPECT_EQ(overridden.preferences().autosave_seconds, 0);
+    // Back to the defaults, so the other tests of this binary start clean.
+    overridden.apply_preferences(editor::Preferences{});
+}
