@@ -225,14 +225,14 @@ int run_render(const RenderArgs& a) {
         const CompactTree compact(*tree, doc->samples);
         const SphereSetHandle set = renderer->add_spheres(
             sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level));
-        if (show_spheres) {
+        if (show_node) {
+            for (const SphereItem& item : highlighted_node(set, renderer->sphere_count(set),
+                                                           sphere_range(compact, *tree, a.node), show_spheres))
+                frame.spheres.push_back(item);
+        } else {
             SphereItem all;
             all.spheres = set;
             frame.spheres.push_back(all);
-        }
-        if (show_node) {
-            const SphereRange r = sphere_range(compact, *tree, a.node);
-            frame.spheres.push_back(SphereItem{set, Eigen::Affine3f::Identity(), r.first, r.count, highlight_color()});
         }
     }
     if (tree && overlays.count("bounds"))

@@ -79,13 +79,10 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         item.style.opacity = data_.spheres.empty() ? 1.0f : 0.3f;
         f.meshes.push_back(item);
     }
-    if (!data_.spheres.empty() && spheres.id) {
-        render::SphereItem all;
-        all.spheres = spheres;
-        f.spheres.push_back(all);
-        f.spheres.push_back(render::SphereItem{spheres, Eigen::Affine3f::Identity(), data_.highlight.first,
-                                               data_.highlight.count, render::highlight_color()});
-    }
+    if (!data_.spheres.empty() && spheres.id)
+        for (const render::SphereItem& item :
+             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true))
+            f.spheres.push_back(item);
     if (!data_.selected.empty() && selected.id) {
         render::SphereItem sel;
         sel.spheres = selected;

@@ -92,6 +92,7 @@ void Renderer::Impl::begin_spheres(const Eigen::Matrix4f& model_view) {
     gl.UniformMatrix4fv(prog.sphere.projection, 1, GL_FALSE, proj.data());
     gl.Uniform1i(prog.sphere.ortho, ortho ? 1 : 0);
     gl.Uniform1i(prog.sphere.override_color, 0);
+    gl.Uniform1f(prog.sphere.fade, 0.0f);
 }
 
 // Instanced draw of spheres [first, first + count) of the buffer bound to `vao`.
@@ -119,6 +120,7 @@ void Renderer::Impl::draw_sphere_items(const Frame& f) {
             gl.Uniform1i(prog.sphere.override_color, 1);
             gl.Uniform4f(prog.sphere.color, item.color->r, item.color->g, item.color->b, item.color->a);
         }
+        gl.Uniform1f(prog.sphere.fade, std::clamp(item.fade, 0.0f, 1.0f));
         draw_sphere_range(s.vao, s.vbo, item.first, count);
     }
 }

@@ -86,6 +86,7 @@ uniform mat4 u_projection;
 uniform int u_ortho;
 uniform int u_override_color;
 uniform vec4 u_color;
+uniform float u_fade;
 out vec3 v_quad;
 flat out vec3 v_center;
 flat out float v_radius;
@@ -96,6 +97,7 @@ void main() {
     v_center = c;
     v_radius = r;
     v_color = u_override_color == 1 ? u_color : a_color;
+    v_color.rgb = mix(v_color.rgb, vec3(0.84, 0.85, 0.87), u_fade); // dimmed: towards a light grey
     vec3 q;
     if (u_ortho == 1) {
         q = c + vec3(a_corner * r, 0.0);
@@ -252,6 +254,7 @@ Programs build_programs(const GlFunctions& gl) {
     p.sphere.projection = loc(p.sphere.id, "u_projection");
     p.sphere.ortho = loc(p.sphere.id, "u_ortho");
     p.sphere.override_color = loc(p.sphere.id, "u_override_color");
+    p.sphere.fade = loc(p.sphere.id, "u_fade");
     p.sphere.color = loc(p.sphere.id, "u_color");
     p.circle.id = link(gl, kCircleVs, kCircleFs, "circle");
     p.circle.view = loc(p.circle.id, "u_view");

@@ -27,7 +27,7 @@ struct LineProgram {
 // Ray-cast sphere impostors, one triangle per instance.
 struct SphereProgram {
     GLuint id = 0;
-    GLint model_view = -1, projection = -1, ortho = -1, override_color = -1, color = -1;
+    GLint model_view = -1, projection = -1, ortho = -1, override_color = -1, color = -1, fade = -1;
 };
 
 // Wire circles of bounding spheres, instanced.

@@ -94,6 +94,18 @@ SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, N
     return {};
 }
 
+std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all) {
+    std::vector<SphereItem> items;
+    if (show_all) {
+        SphereItem all;
+        all.spheres = set;
+        if (node.count < set_size) all.fade = kDimmedFade;
+        items.push_back(all);
+    }
+    items.push_back(SphereItem{set, Eigen::Affine3f::Identity(), node.first, node.count, highlight_color()});
+    return items;
+}
+
 std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, const Eigen::Vector3d& origin, NodeId id, int levels,
                                          const Color& color, const Eigen::Affine3f& pose) {
     const Eigen::Vector3f o = origin.cast<float>();

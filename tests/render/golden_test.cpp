@@ -49,6 +49,11 @@ TEST(golden, node_bounds) {
     EXPECT_GOLDEN(r.view(spt::test::node_bounds_scene(*r.renderer), View::Front), "node_bounds");
 }
 
+TEST(golden, node_highlighted_rest_dimmed) {
+    OffscreenRenderer r("osmesa", kSize, kSize);
+    EXPECT_GOLDEN(r.view(spt::test::node_dimmed_scene(*r.renderer), View::Front), "node_dimmed");
+}
+
 TEST(golden, collision_pairs) {
     OffscreenRenderer r("osmesa", kSize, kSize);
     size_t pairs = 0;

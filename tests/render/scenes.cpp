@@ -69,6 +69,18 @@ Frame level_spheres_scene(Renderer& r) {
     return f;
 }
 
+Frame node_dimmed_scene(Renderer& r) {
+    const TriangleMesh mesh = box_figure();
+    const SptDocument doc = make_document(mesh);
+    const SamplingTree& tree = doc.trees.front();
+    const CompactTree compact(tree, doc.samples);
+    Frame f;
+    const std::vector<SphereInstance> spheres = sampling_spheres(compact, tree, ColorBy::Level);
+    const SphereSetHandle set = r.add_spheres(spheres);
+    f.spheres = highlighted_node(set, uint32_t(spheres.size()), sphere_range(compact, tree, 3), true);
+    return f;
+}
+
 Frame node_bounds_scene(Renderer& r) {
     const TriangleMesh mesh = box_figure();
     const SptDocument doc = make_document(mesh);

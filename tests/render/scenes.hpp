@@ -30,6 +30,8 @@ render::Frame level_spheres_scene(render::Renderer& r);
 // The figure's tree: bounding spheres of node 2 and two levels below it, the
 // node's spheres highlighted over the others.
 render::Frame node_bounds_scene(render::Renderer& r);
+/// The figure's spheres by level with node 3 highlighted and the rest dimmed (highlighted_node), no mesh.
+render::Frame node_dimmed_scene(render::Renderer& r);
 // Two tori, the second posed to overlap the first; colliding sampling-sphere pairs
 // (brute force) with contact points and normals. `pairs` receives their number.
 render::Frame collision_scene(render::Renderer& r, size_t* pairs = nullptr);

@@ -35,6 +35,15 @@ struct SphereRange {
 /// no such node.
 SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id);
 
+/// How much the spheres of nodes that are not highlighted are faded (SphereItem::fade).
+constexpr float kDimmedFade = 0.7f;
+
+/// The sphere items of set `set` (sampling_spheres()) with node range `node` highlighted:
+/// with `show_all`, every sphere dimmed first (unless the node holds them all), then the
+/// node's spheres in the highlight colour; without, the node's spheres alone. What the
+/// editor's views and `spt render --overlay node` draw.
+std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all);
+
 /// Bounding spheres of node `id` and of its descendants down to `levels` levels
 /// below it (0: the node alone), moved from the tree's local frame into the object frame
 /// by `origin` (SampleSet::origin), then by `pose`. The node itself gets `color`,
