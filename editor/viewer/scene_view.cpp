@@ -48,7 +48,8 @@ render::Frame SceneView::frame() const {
     render::Frame f;
     const auto state = history_ && drawing_ ? history_->state(step_) : nullptr;
     if (state) {
-        const auto trails = overlays_.scene.trails ? history_->trails(step_) : decltype(history_->trails(0)){};
+        const std::vector<std::vector<Eigen::Vector3f>> trails =
+            overlays_.scene.trails ? history_->trails(step_) : std::vector<std::vector<Eigen::Vector3f>>{};
         f = drawing_->frame(state->poses, state->step ? &*state->step : nullptr, state->ghost, trails, state->broad,
                             overlays_.scene);
     }

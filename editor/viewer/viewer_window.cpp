@@ -58,7 +58,7 @@ void ViewerWindow::reload() {
     if (!history_) return;
     watch(history_->path());
     show_message(QString("%1 changed on disk: reloading ...").arg(history_->path()));
-    start_pending(std::make_unique<SceneHistory>(history_->path(), overlays_.scene), step(), false);
+    start_pending(std::make_unique<SceneHistory>(history_->path(), overlays_.scene), kFollowShownStep, false);
 }
 
 void ViewerWindow::start_pending(std::unique_ptr<SceneHistory> h, int want_step, bool refit) {
@@ -69,11 +69,11 @@ void ViewerWindow::start_pending(std::unique_ptr<SceneHistory> h, int want_step,
     SceneHistory* p = pending_.get();
     connect(p, &SceneHistory::progressed, this, [this, p](int n) {
         if (p == pending_.get()) pending_progress(n);
-        else if (p == history_.get()) recorded_more(n);
+        else if (p == history_.get()) show_state(); // the step label says how far recording has got
     });
     connect(p, &SceneHistory::stopped, this, [this, p] {
         if (p == pending_.get()) pending_progress(p->recorded());
-        else if (p == history_.get()) recorded_more(p->recorded());
+        else if (p == history_.get()) show_state();
     });
     connect(p, &SceneHistory::failed, this, [this, p](const QString& message) {
         if (p == pending_.get() && !p->loaded()) {
@@ -92,13 +92,14 @@ void ViewerWindow::pending_progress(int recorded) {
     // Replace the shown history once the new one has reached the step shown, so playback
     // does not jump back while a scene is re-recorded.
     if (!pending_ || !pending_->loaded()) return;
-    if (recorded >= std::min(pending_step_, pending_->target()) || pending_->finished()) adopt_pending();
-    else show_message(QString("recording %1 / %2 ...").arg(recorded).arg(pending_step_));
+    const int want = pending_step_ == kFollowShownStep ? step() : pending_step_;
+    if (recorded >= std::min(want, pending_->target()) || pending_->finished()) adopt_pending();
+    else show_message(QString("recording %1 / %2 ...").arg(recorded).arg(want));
 }
 
 void ViewerWindow::adopt_pending() {
     const bool refit = pending_refit_;
-    const int want = pending_step_;
+    const int want = pending_step_ == kFollowShownStep ? step() : pending_step_;
     const bool new_file = !history_ || history_->path() != pending_->path();
     if (history_) history_.release()->deleteLater(); // it may be emitting
     history_ = std::move(pending_);
@@ -118,11 +119,6 @@ void ViewerWindow::adopt_pending() {
     timeline_->setMaximum(history_->target());
     set_step(want);
     emit historyChanged();
-}
-
-void ViewerWindow::recorded_more(int recorded) {
-    (void)recorded;
-    show_state(); // the step label shows how far recording has got
 }
 
 void ViewerWindow::set_step(int k) {
@@ -214,7 +210,7 @@ void ViewerWindow::set_overlays(const ViewerOverlays& overlays) {
     if (!base || !base->loaded()) return;
     const EffectSet want = render::effects_for_overlays(base->scene().effects, overlays_.scene);
     if (want.bits() == base->effects().bits()) return;
-    start_pending(std::make_unique<SceneHistory>(base->shared_scene(), overlays_.scene), step(), false);
+    start_pending(std::make_unique<SceneHistory>(base->shared_scene(), overlays_.scene), kFollowShownStep, false);
 }
 
 void ViewerWindow::watch(const QString& path) {

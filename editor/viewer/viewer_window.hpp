@@ -84,7 +84,6 @@ private:
     void start_pending(std::unique_ptr<SceneHistory> h, int want_step, bool refit);
     void adopt_pending();
     void pending_progress(int recorded);
-    void recorded_more(int recorded);
     void show_state();
     void tick();
     void overlay_toggled();
@@ -103,6 +102,9 @@ private:
     QAction* play_action_ = nullptr;
     std::map<QString, QAction*> overlay_actions_;
     std::unique_ptr<SceneHistory> history_, pending_;
+    // The step a pending history must reach before it replaces the shown one, or
+    // kFollowShownStep: the step shown when it gets there (reload, re-recording while playing).
+    static constexpr int kFollowShownStep = -1;
     int pending_step_ = 0;
     bool pending_refit_ = false;
     ViewerOverlays overlays_;

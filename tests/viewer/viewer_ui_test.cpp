@@ -149,10 +149,18 @@ TEST(ViewerUi, OverlayThatNeedsAnEffectRecordsAgainAndKeepsTheStep) {
     int depth_queries = 0;
     for (int k = 1; k <= 50; ++k) w->set_step(k), depth_queries += w->counters()->value("depth_queries").toInt();
     EXPECT_GT(depth_queries, 0);
-    // Off again: only what the scene asks for is simulated.
+    // Off again, while playing: only what the scene asks for is simulated, and the new
+    // recording takes over without sending the playhead back.
+    w->set_step(10);
+    w->set_speed(0.25);
+    w->set_playing(true);
+    const editor::SceneHistory* before = w->history();
     contacts->trigger();
-    ASSERT_TRUE(wait_recorded(*w, 50));
+    const int at_toggle = w->step();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return w->history() != before && !w->busy(); }, 60000));
     EXPECT_FALSE(w->history()->effects().has(Effect::Depth));
+    EXPECT_GE(w->step(), at_toggle) << "re-recording sent the playhead back";
+    w->set_playing(false);
 }
 
 TEST(ViewerUi, ExportRangeWritesOnePngAStepEqualToSptRender) {
