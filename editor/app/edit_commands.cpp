@@ -110,7 +110,12 @@ EditOutcome make_build_subtree(EditorDocument& doc, NodeId id, const BuildOption
     SamplingTree after = doc.tree();
     const EditResult r = after.build_subtree(id, doc.samples(), options);
     if (!r) return refused(r.reason);
-    return {std::make_unique<TreeStateCommand>(doc, std::move(after), id,
+    return make_built_subtree(doc, id, std::move(after), options);
+}
+
+EditOutcome make_built_subtree(EditorDocument& doc, NodeId id, SamplingTree built, const BuildOptions& options) {
+    if (!doc.has_tree()) return refused(QString("no document is open"));
+    return {std::make_unique<TreeStateCommand>(doc, std::move(built), id,
                                                QString("Build subtree under node %1 (leaf size %2)")
                                                    .arg(node_text(id)).arg(options.leaf_size)),
             {}};

@@ -26,6 +26,9 @@ EditOutcome make_merge(EditorDocument& doc, NodeId id);
 EditOutcome make_set_radius(EditorDocument& doc, NodeId id, float radius);
 /// Builds a subtree automatically under active node `id`.
 EditOutcome make_build_subtree(EditorDocument& doc, NodeId id, const BuildOptions& options);
+/// The same edit from a tree built elsewhere (in the background) from the edited tree:
+/// `built` is the edited tree with the subtree under `id` built with `options`.
+EditOutcome make_built_subtree(EditorDocument& doc, NodeId id, SamplingTree built, const BuildOptions& options);
 /// Adds a tree whose root holds every sample, named `name` (unique, non-empty).
 EditOutcome make_add_tree(EditorDocument& doc, const QString& name);
 /// Renames tree `index`.

@@ -40,6 +40,22 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     cancel_->hide();
     statusBar()->addPermanentWidget(progress_);
     statusBar()->addPermanentWidget(cancel_);
+    build_progress_ = new QProgressBar;
+    build_progress_->setRange(0, 0);
+    build_progress_->setMaximumWidth(160);
+    build_progress_->hide();
+    build_cancel_ = new QPushButton("Cancel build");
+    build_cancel_->setObjectName("cancel_build");
+    build_cancel_->hide();
+    statusBar()->addPermanentWidget(build_progress_);
+    statusBar()->addPermanentWidget(build_cancel_);
+    // Core's builder cannot be interrupted: Cancel drops its result when it arrives.
+    connect(build_cancel_, &QPushButton::clicked, this, [this] {
+        build_cancelled_ = true;
+        build_progress_->hide();
+        build_cancel_->hide();
+    });
+    connect(&build_watcher_, &QFutureWatcher<BuildJob>::finished, this, &MainWindow::build_finished);
     connect(cancel_, &QPushButton::clicked, this, [this] {
         // Conversion cannot be interrupted inside core; its result is dropped when it arrives.
         cancelled_ = true;
@@ -71,6 +87,7 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
 
 MainWindow::~MainWindow() {
     watcher_.waitForFinished();
+    build_watcher_.waitForFinished();
     recovery_.clear();
     // The stack's last signals and the widgets that refer to members go before the members.
     stack_.disconnect(this);

@@ -6,12 +6,14 @@
 #include "editor_document.hpp"
 #include "preferences.hpp"
 #include "recovery.hpp"
+#include "spt/tree_builder.hpp"
 #include "scene.hpp"
 #include "view_grid.hpp"
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QTimer>
 #include <QUndoStack>
+#include <optional>
 
 class QLabel;
 class QProgressBar;
@@ -89,8 +91,14 @@ public:
     bool merge();
     /// Sets the current node's sampling-sphere radius.
     bool set_radius(float radius);
-    /// Builds a subtree under the current node with the panel's options.
+    /// Builds a subtree under the current node with the panel's options: at once for a node
+    /// of fewer than background_build_samples() samples, else in the background (progress,
+    /// Cancel); false if refused.
     bool build_subtree();
+    /// True while a subtree is being built in the background.
+    bool building() const { return build_pending_; }
+    /// Nodes with at least this many samples are built in the background (tests lower it).
+    void set_background_build_samples(size_t samples) { background_build_samples_ = samples; }
     /// Adds a tree named `name` (a free name if empty).
     bool add_tree(const QString& name = {});
     /// Renames the edited tree.
@@ -133,6 +141,19 @@ private:
     QTimer autosave_timer_;
     Recovery recovery_;
     QFutureWatcher<LoadResult> watcher_;
+    struct BuildJob {
+        std::optional<SamplingTree> tree; // the edited tree with the subtree built
+        QString refusal;     // why core refused, if it did
+    };
+    QFutureWatcher<BuildJob> build_watcher_;
+    size_t background_build_samples_ = 20000;
+    int build_stack_index_ = -1, build_tree_index_ = -1;
+    NodeId build_node_ = 0;
+    BuildOptions build_options_;
+    bool build_cancelled_ = false, build_pending_ = false; // pending: started, result not yet taken in
+    QProgressBar* build_progress_ = nullptr;
+    QPushButton* build_cancel_ = nullptr;
+    void build_finished();
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     bool cancelled_ = false;

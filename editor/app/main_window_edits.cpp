@@ -2,6 +2,9 @@
 #include "edit_commands.hpp"
 #include "main_window.hpp"
 #include "tree_panel.hpp"
+#include <QProgressBar>
+#include <QPushButton>
+#include <QtConcurrent/QtConcurrentRun>
 
 namespace spt::editor {
 
@@ -23,7 +26,45 @@ bool MainWindow::merge() { return push(make_merge(doc_, doc_.current())); }
 bool MainWindow::set_radius(float radius) { return push(make_set_radius(doc_, doc_.current(), radius)); }
 
 bool MainWindow::build_subtree() {
-    return push(make_build_subtree(doc_, doc_.current(), panel_->build_options()));
+    if (building()) return push({nullptr, "a subtree is still being built"});
+    const TreeNode* node = doc_.has_tree() ? doc_.tree().find(doc_.current()) : nullptr;
+    if (!node || node->samples.size() < background_build_samples_)
+        return push(make_build_subtree(doc_, doc_.current(), panel_->build_options()));
+    // A large node: core builds it on a copy while the views stay live; the result is pushed
+    // only if the document has not been edited meanwhile.
+    build_stack_index_ = stack_.index();
+    build_tree_index_ = doc_.tree_index();
+    build_node_ = doc_.current();
+    build_options_ = panel_->build_options();
+    build_cancelled_ = false;
+    build_pending_ = true;
+    build_progress_->show();
+    build_cancel_->show();
+    show_message(QString("building a subtree under node %1 (%2 samples)...")
+                     .arg(qulonglong(build_node_))
+                     .arg(node->samples.size()));
+    build_watcher_.setFuture(QtConcurrent::run(
+        [tree = doc_.tree(), samples = doc_.samples(), id = build_node_, options = build_options_]() mutable {
+            BuildJob job;
+            const EditResult r = tree.build_subtree(id, samples, options);
+            if (!r) job.refusal = QString::fromStdString(r.reason);
+            job.tree = std::move(tree);
+            return job;
+        }));
+    return true;
+}
+
+void MainWindow::build_finished() {
+    build_pending_ = false;
+    build_progress_->hide();
+    build_cancel_->hide();
+    if (build_cancelled_) return show_message("building the subtree cancelled");
+    BuildJob job = build_watcher_.result();
+    if (!job.refusal.isEmpty()) return show_message(job.refusal);
+    if (stack_.index() != build_stack_index_ || doc_.tree_index() != build_tree_index_)
+        return show_message("the tree was edited while the subtree was being built: not applied, build again");
+    doc_.set_current(build_node_);
+    push(make_built_subtree(doc_, build_node_, std::move(*job.tree), build_options_));
 }
 
 bool MainWindow::add_tree(const QString& name) {

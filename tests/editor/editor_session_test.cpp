@@ -1,6 +1,7 @@
 // The rest of a session's file handling and settings: drag and drop, Open Recent, Revert
 // (asking first), and preferences that apply at once and persist.
 #include "editor_support.hpp"
+#include "spt/spt_file.hpp"
 #include "tree_panel.hpp"
 #include <QAction>
 #include <QApplication>
@@ -157,4 +158,31 @@ TEST(EditorSession, PreferencesApplyAtOnceAndPersist) {
     EXPECT_EQ(overridden.preferences().autosave_seconds, 0);
     // Back to the defaults, so the other tests of this binary start clean.
     overridden.apply_preferences(editor::Preferences{});
+}
+
+TEST(EditorSession, ALargeNodeIsBuiltInTheBackgroundAndAnEditMeanwhileDropsTheResult) {
+    TempDir dir("editor-background-build");
+    std::string error;
+    const auto w = open_editor(dir, write_editor_files(dir).spt, &error);
+    ASSERT_TRUE(w) << error;
+    w->set_background_build_samples(0); // every node counts as large
+    // What the same build gives at once, for comparison.
+    SamplingTree expected = w->document().tree();
+    ASSERT_TRUE(expected.build_subtree(w->document().current(), w->document().samples(),
+                                       w->tree_panel().build_options()));
+    ASSERT_TRUE(w->build_subtree());
+    EXPECT_FALSE(w->build_subtree()) << "a second build started while one was running";
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !w->building() && w->undo_stack().count() == 1; }, 120000))
+        << w->last_message().toStdString();
+    SptDocument with_expected = w->document().document();
+    with_expected.trees[size_t(w->document().tree_index())] = expected;
+    EXPECT_EQ(encode_spt(w->document().document()), encode_spt(with_expected));
+    // An edit while building: the result would overwrite it, so it is dropped.
+    w->undo_stack().undo();
+    ASSERT_TRUE(w->build_subtree());
+    ASSERT_TRUE(w->add_tree("meanwhile"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !w->building(); }, 120000));
+    QTest::qWait(50);
+    EXPECT_EQ(w->undo_stack().count(), 1) << "the stale build was pushed";
+    EXPECT_TRUE(w->last_message().contains("not applied")) << w->last_message().toStdString();
 }
