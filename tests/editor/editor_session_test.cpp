@@ -134,8 +134,9 @@ TEST(EditorSession, PreferencesApplyAtOnceAndPersist) {
         const auto w = open_editor(dir, write_editor_files(dir).spt, &error);
         ASSERT_TRUE(w) << error;
         w->show_preferences();
-        auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+        auto* dialog = w->findChild<editor::PreferencesDialog*>();
         ASSERT_TRUE(dialog) << "no preferences dialog";
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
         dialog->findChild<QSpinBox*>("autosave_seconds")->setValue(7);
         dialog->findChild<QCheckBox*>("swap_modifiers")->setChecked(true);
         dialog->findChild<QCheckBox*>("visible_only")->setChecked(true);
