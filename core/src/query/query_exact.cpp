@@ -1,5 +1,5 @@
-// Level `exact`: the two triangle trees walked against each other, pruned by
-// bounding spheres and oriented boxes, leaves decided by exact triangle-triangle tests.
+// Level `exact`: the two triangle trees walked against each other, pruned by bounding
+// spheres, then slabs or oriented boxes; leaves decided by exact triangle-triangle tests.
 #include "query/query_run.hpp"
 #include "query/exact_data.hpp"
 #include "geometry/obb.hpp"
@@ -26,18 +26,6 @@ const float* QueryRun::b_tri_sphere(uint32_t tri) {
     return out;
 }
 
-const detail::PlacedTriangleNode& QueryRun::b_tri_node(uint32_t j) {
-    detail::PlacedTriangleNode& out = s.bnodes[j];
-    if (s.bnode_stamp[j] != s.epoch) {
-        s.bnode_stamp[j] = s.epoch;
-        const TriangleNode& n = EB.tri_nodes[j];
-        const Eigen::Vector3f c = f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t;
-        out.center[0] = c.x(), out.center[1] = c.y(), out.center[2] = c.z();
-        out.box = placed(n.box, f.R, f.t);
-    }
-    return out;
-}
-
 bool QueryRun::triangle_pair(uint32_t ta, uint32_t tb) {
     const float* sa = &EA.tri_sphere[4 * size_t(ta)];
     const float* sb = b_tri_sphere(tb);
@@ -57,9 +45,10 @@ void QueryRun::run_triangles() {
     if (an.empty() || bn.empty()) return;
     const bool any = o.mode != QueryMode::All; // deepest asks the triangles only whether they meet
     auto centre_a = [&](uint32_t i) { return Eigen::Vector3f(an[i].center[0], an[i].center[1], an[i].center[2]); };
+    // B's nodes are moved into A's frame where the walk needs them, not stored: a copy
+    // per node would double the memory a walk reads.
     auto centre_b = [&](uint32_t j) {
-        const float* c = b_tri_node(j).center;
-        return Eigen::Vector3f(c[0], c[1], c[2]);
+        return Eigen::Vector3f(f.R * Eigen::Vector3f(bn[j].center[0], bn[j].center[1], bn[j].center[2]) + f.t);
     };
     auto& stack = s.stack;
     stack.clear();
@@ -74,7 +63,18 @@ void QueryRun::run_triangles() {
         ++res.counters.bound_tests;
         if ((ca - cb).squaredNorm() > prune * prune) continue;
         ++res.counters.bound_tests;
-        if (obbs_disjoint(na.box, b_tri_node(j).box, f.margin)) continue;
+        if (na.boxed | nb.boxed) { // a rod or a sliver: only a box tells it from a ball
+            if (obbs_disjoint(na.box(), nb.box(), f.R, f.t, f.margin)) continue;
+        } else { // each node's slab (box axis 0) against the other's sphere, each in its own frame
+            const Eigen::Vector3f d = cb - ca;
+            const Eigen::Vector3f e = f.R.transpose() * (ca - f.t) - Eigen::Vector3f(nb.center[0], nb.center[1], nb.center[2]);
+            if (std::abs(na.axis[0][0] * d.x() + na.axis[0][1] * d.y() + na.axis[0][2] * d.z()) >
+                na.half[0] + nb.radius + f.margin)
+                continue;
+            if (std::abs(nb.axis[0][0] * e.x() + nb.axis[0][1] * e.y() + nb.axis[0][2] * e.z()) >
+                nb.half[0] + na.radius + f.margin)
+                continue;
+        }
         roots_overlap = true; // the first pair to pass is the roots
         if (na.is_leaf() && nb.is_leaf()) {
             for (uint32_t p = na.first; p < na.first + na.count; ++p)
