@@ -1,6 +1,7 @@
 #pragma once
 // The buffers behind QueryScratch: grown to the largest models met, reused by every query.
 #include "spt/query_scratch.hpp"
+#include "geometry/obb.hpp"
 #include <Eigen/Core>
 #include <utility>
 #include <vector>
@@ -24,6 +25,8 @@ struct ScratchBuffers {
     std::vector<uint32_t> vert_stamp;
     std::vector<float> btri;                 // B's triangle bounding spheres in A's frame (lazy)
     std::vector<uint32_t> tri_stamp;
+    std::vector<Obb> bboxes;                 // boxes of B's triangle-tree nodes in A's frame (lazy, box tests only)
+    std::vector<uint32_t> bbox_stamp;
     std::vector<float> d2;                   // distance matrix of one leaf pair
     std::vector<float> ga, gb;               // culled spheres gathered (x, y, z blocks)
     std::vector<uint32_t> ia, ib;            // their sphere indices

@@ -16,6 +16,7 @@ namespace {
 constexpr uint32_t kLeafTriangles = 4; // most triangles in a leaf, all of them compact
 constexpr double kCompactTriangle = 0.25; // compact: twice the area >= this * longest edge^2 (height >= 1/4 of it)
 constexpr float kElongatedNode = 0.3f;    // elongated: the box's middle half extent < this * the sphere's radius
+constexpr float kFlatLeaf = 0.1f;         // several triangles a leaf only if the box's thinnest half extent < this * radius
 
 struct Builder {
     ExactData& e;
@@ -45,12 +46,15 @@ struct Builder {
         return n;
     }
 
-    // A leaf: one triangle, or up to kLeafTriangles compact ones in a compact node (the leaf's
-    // triangle pairs are told apart by the triangles' own spheres only, which fit compact
-    // triangles and not needles).
+    // A leaf: one triangle, or up to kLeafTriangles compact ones in a compact, flat node (a
+    // patch of one surface). Within a leaf, triangle pairs are told apart by the triangles'
+    // own spheres only, which fit compact triangles and not needles, and a leaf's box fits
+    // a patch and not a handful of triangles at random angles.
     bool leaf(const TriangleNode& n, uint32_t begin, uint32_t end) const {
         if (end - begin <= 1) return true;
         if (end - begin > kLeafTriangles || n.boxed) return false;
+        const float thinnest = std::min({n.half[0], n.half[1], n.half[2]});
+        if (thinnest >= kFlatLeaf * n.radius) return false; // not a patch of one surface (a soup)
         for (uint32_t k = begin; k < end; ++k)
             if (!compact[e.tri_order[k]]) return false;
         return true;
