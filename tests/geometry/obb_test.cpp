@@ -83,6 +83,21 @@ TEST(Obb, ParallelBoxesFaceToFaceAreSeparatedByTheGapAlone) {
     EXPECT_FALSE(obbs_disjoint(a, b, I, {0.5f, 0.3f, 0.0f}, 1e-5f));
 }
 
+// A tree node stores two axes and rebuilds the third: it must be the axis the extents were
+// measured along, bit for bit.
+TEST(Obb, ThirdAxisIsTheFloatCrossProductOfTheFirstTwo) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int it = 0; it < 50; ++it) {
+        std::vector<Eigen::Vector3d> pts;
+        for (int i = 0; i < 12; ++i) pts.push_back({100 + u(rng), 3 * u(rng), 0.1 * u(rng)});
+        const Obb b = fit_obb(pts);
+        const Eigen::Vector3f w = third_axis(b.axis[0], b.axis[1]);
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(b.axis[2][k], w[k]);
+        for (const auto& p : pts) EXPECT_TRUE(holds(b, p));
+    }
+}
+
 TEST(Obb, EmptyAndDegeneratePointSets) {
     const Obb empty = fit_obb({});
     EXPECT_TRUE(obbs_disjoint(empty, empty, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero(), 0));

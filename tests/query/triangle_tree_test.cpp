@@ -11,7 +11,8 @@ namespace {
 void check_subtree(const ExactData& e, uint32_t i, std::vector<int>& seen, int& leaves) {
     const TriangleNode& n = e.tri_nodes[i];
     const Eigen::Vector3d c(n.center[0], n.center[1], n.center[2]);
-    const Eigen::Vector3d bc(n.box.center[0], n.box.center[1], n.box.center[2]);
+    const Obb box = n.box();
+    const Eigen::Vector3d bc(box.center[0], box.center[1], box.center[2]);
     std::vector<uint32_t> stack{i};
     while (!stack.empty()) {
         const TriangleNode& m = e.tri_nodes[stack.back()];
@@ -25,14 +26,17 @@ void check_subtree(const ExactData& e, uint32_t i, std::vector<int>& seen, int& 
                 const Eigen::Vector3d& p = e.positions[v];
                 EXPECT_LE((p - c).norm(), double(n.radius)) << "node " << i;
                 for (int k = 0; k < 3; ++k) {
-                    const Eigen::Vector3d axis(n.box.axis[k][0], n.box.axis[k][1], n.box.axis[k][2]);
-                    EXPECT_LE(std::abs(axis.dot(p - bc)), double(n.box.half[k])) << "node " << i;
+                    const Eigen::Vector3d axis(box.axis[k][0], box.axis[k][1], box.axis[k][2]);
+                    EXPECT_LE(std::abs(axis.dot(p - bc)), double(box.half[k])) << "node " << i;
                 }
             }
     }
     if (n.is_leaf()) {
         ++leaves;
-        EXPECT_EQ(n.count, 1u); // one triangle a leaf: the boxes do the pruning
+        EXPECT_LE(n.count, 4u);
+        if (n.count > 1) {
+            EXPECT_EQ(n.boxed, 0u) << "node " << i; // several triangles only in a compact node
+        }
         for (uint32_t k = n.first; k < n.first + n.count; ++k) ++seen[e.tri_order[k]];
     } else {
         check_subtree(e, i + 1, seen, leaves);
@@ -40,7 +44,7 @@ void check_subtree(const ExactData& e, uint32_t i, std::vector<int>& seen, int& 
     }
 }
 
-TEST(TriangleTree, EveryTriangleInOneLeafInsideEveryAncestorsSphereAndSlab) {
+TEST(TriangleTree, EveryTriangleInOneLeafInsideEveryAncestorsSphereAndBox) {
     // Far from the origin, so float rounding of centres and slab offsets matters.
     TriangleMesh m = make_torus(1.0, 0.35, 24, 12);
     for (auto& p : m.positions) p += Eigen::Vector3d(3e3, -2e3, 1e3);
@@ -51,6 +55,42 @@ TEST(TriangleTree, EveryTriangleInOneLeafInsideEveryAncestorsSphereAndSlab) {
     check_subtree(e, 0, seen, leaves);
     for (int s : seen) EXPECT_EQ(s, 1);
     EXPECT_EQ(e.tri_nodes.size(), size_t(2 * leaves - 1));
+}
+
+// Needles (height a hundredth of their length) get a leaf each and elongated nodes: a leaf's
+// triangle pairs are told apart only by the triangles' spheres, which do not fit needles.
+TEST(TriangleTree, NeedleTrianglesGetALeafEachAndBoxes) {
+    std::vector<Eigen::Vector3d> p;
+    std::vector<Triangle> t;
+    for (int i = 0; i < 16; ++i) {
+        const uint32_t v = uint32_t(p.size());
+        const double x = 0.05 * i;
+        p.push_back({x, 0, 0}), p.push_back({x, 1, 0}), p.push_back({x + 0.01, 0.5, 0});
+        t.push_back({v, v + 1, v + 2});
+    }
+    const TriangleMesh m = prepare_mesh("needles", std::move(p), std::move(t)).mesh;
+    const auto o = test::make_object(m);
+    const ExactData& e = o->model.exact();
+    int leaves = 0;
+    for (const TriangleNode& n : e.tri_nodes)
+        if (n.is_leaf()) {
+            ++leaves;
+            EXPECT_EQ(n.count, 1u);
+            EXPECT_EQ(n.boxed, 1u);
+        }
+    EXPECT_EQ(leaves, 16);
+}
+
+// A finely meshed smooth surface (compact triangles) shares leaves of up to four triangles,
+// and its small nodes are compact (sphere and slab).
+TEST(TriangleTree, CompactTrianglesShareLeaves) {
+    const auto o = test::make_object(make_torus(1.0, 0.35, 48, 24));
+    const ExactData& e = o->model.exact();
+    size_t leaves = 0, boxed_leaves = 0;
+    for (const TriangleNode& n : e.tri_nodes)
+        if (n.is_leaf()) ++leaves, boxed_leaves += n.boxed;
+    EXPECT_LT(leaves, e.tri_order.size() / 2);
+    EXPECT_LT(boxed_leaves, leaves / 10);
 }
 
 TEST(TriangleTree, ZeroAreaTrianglesAreLeftOutAndCounted) {

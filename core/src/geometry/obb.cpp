@@ -19,9 +19,17 @@ Obb fit_obb(const std::vector<Eigen::Vector3d>& points) {
     Eigen::Matrix3d axes = eig.eigenvectors(); // columns; a right-handed orthonormal basis
     if (!axes.allFinite() || std::abs(axes.determinant()) < 0.5) axes.setIdentity();
     // Extents are measured along the float axes actually stored, around the stored centre.
+    // The third axis is the float cross product of the first two (see third_axis), so that a
+    // node can store two axes and rebuild the third bit for bit.
     Eigen::Vector3d a[3], lo, hi;
+    float af[2][3];
     for (int k = 0; k < 3; ++k) {
-        a[k] = detail::float_rounded(axes.col(k).normalized());
+        if (k < 2) {
+            a[k] = detail::float_rounded(axes.col(k).normalized());
+            for (int j = 0; j < 3; ++j) af[k][j] = float(a[k][j]);
+        } else {
+            a[k] = third_axis(af[0], af[1]).cast<double>();
+        }
         lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];
         for (const auto& p : points) {
             const double v = a[k].dot(p);

@@ -15,8 +15,14 @@ struct Obb {
     float half[3] = {-1, -1, -1};                         ///< half extents; negative: empty, bounds nothing
 };
 
-/// Box along the principal axes of `points`, holding every point after float rounding.
+/// Box along the principal axes of `points`, holding every point after float rounding. Its
+/// third axis is third_axis(axis[0], axis[1]), so a box can be stored with two axes.
 Obb fit_obb(const std::vector<Eigen::Vector3d>& points);
+
+/// u x v in float: a box's third axis from its first two (unit, up to float rounding).
+inline Eigen::Vector3f third_axis(const float u[3], const float v[3]) {
+    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
 
 /// Box `b` moved by x -> R x + t (centre and axes; the half extents stay).
 Obb placed(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t);

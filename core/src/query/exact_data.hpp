@@ -6,16 +6,33 @@
 
 namespace spt {
 
-/// One node of the exact level's triangle tree (local frame, model units, 76 bytes).
-struct TriangleNode {
-    float center[3] = {0, 0, 0}; ///< bounding-sphere centre of the triangles below
-    float radius = 0;            ///< bounding-sphere radius
-    Obb box;                     ///< principal-axis box holding the triangles below
+/// One node of the exact level's triangle tree (local frame, model units), in one 64-byte
+/// cache line: a bounding sphere and an oriented box sharing one centre. A compact node is
+/// pruned by its sphere and its slab along box axis 0 (least spread), an elongated one (`boxed`: a
+/// rod, a sliver) by its whole box (docs/queries.md). The box's third axis is rebuilt from
+/// the first two (third_axis), as it was fitted.
+struct alignas(64) TriangleNode {
+    float center[3] = {0, 0, 0};               ///< centre of the box and of the bounding sphere
+    float radius = 0;                          ///< bounding-sphere radius
+    float axis[2][3] = {{1, 0, 0}, {0, 1, 0}}; ///< the box's first two unit axes; axis 0 of least spread
+    float half[3] = {-1, -1, -1};              ///< the box's half extents; negative: empty
     uint32_t first = 0;          ///< inner node: index of the right child; leaf: first slot in tri_order
-    uint32_t count = 0;          ///< leaf: number of triangles (1 to 4); inner node: 0
+    uint32_t count = 0;          ///< leaf: number of triangles (1, or up to 4 compact ones); inner node: 0
+    uint32_t boxed = 0;          ///< 1: elongated, pruned by its box; 0: by its sphere and slab
     /// True for a leaf.
     bool is_leaf() const { return count != 0; }
+    /// The node's box with all three axes.
+    Obb box() const {
+        Obb b;
+        const Eigen::Vector3f w = third_axis(axis[0], axis[1]);
+        for (int k = 0; k < 3; ++k) {
+            b.center[k] = center[k], b.half[k] = half[k];
+            b.axis[0][k] = axis[0][k], b.axis[1][k] = axis[1][k], b.axis[2][k] = w[k];
+        }
+        return b;
+    }
 };
+static_assert(sizeof(TriangleNode) == 64, "one cache line a node");
 
 /// The mesh of an object for the `exact` level, with its own triangle tree. The
 /// sampling tree is the wrong hierarchy for triangles: a CAD face sampled to a

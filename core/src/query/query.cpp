@@ -93,12 +93,12 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
         if (s.bverts.size() < nv) s.bverts.resize(nv), s.vert_stamp.resize(nv, 0);
         if (s.btri.size() < 4 * nt) s.btri.resize(4 * nt), s.tri_stamp.resize(nt, 0);
         const size_t nn = b.exact().tri_nodes.size();
-        if (s.bnodes.size() < nn) s.bnodes.resize(nn), s.bnode_stamp.resize(nn, 0);
+        if (s.bboxes.size() < nn) s.bboxes.resize(nn), s.bbox_stamp.resize(nn, 0);
     }
     if (++s.epoch == 0) { // wrapped: forget every stamp
         std::fill(s.vert_stamp.begin(), s.vert_stamp.end(), 0);
         std::fill(s.tri_stamp.begin(), s.tri_stamp.end(), 0);
-        std::fill(s.bnode_stamp.begin(), s.bnode_stamp.end(), 0);
+        std::fill(s.bbox_stamp.begin(), s.bbox_stamp.end(), 0);
         s.epoch = 1;
     }
     s.pairs.clear();

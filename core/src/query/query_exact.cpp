@@ -1,11 +1,28 @@
-// Level `exact`: the two triangle trees walked against each other, pruned by
-// bounding spheres and oriented boxes, leaves decided by exact triangle-triangle tests.
+// Level `exact`: the two triangle trees walked against each other, pruned by bounding
+// spheres, then slabs or oriented boxes; leaves decided by exact triangle-triangle tests.
 #include "query/query_run.hpp"
 #include "query/exact_data.hpp"
 #include "geometry/obb.hpp"
 #include "geometry/tri_tri.hpp"
 
 namespace spt {
+namespace {
+
+// True if the sphere (centre c, radius r; n's frame) misses node n's box.
+bool sphere_misses_box(const TriangleNode& n, const Eigen::Vector3f& c, float r) {
+    const Eigen::Vector3f d = c - Eigen::Vector3f(n.center[0], n.center[1], n.center[2]);
+    const Eigen::Vector3f w = third_axis(n.axis[0], n.axis[1]);
+    const float along[3] = {Eigen::Vector3f(n.axis[0][0], n.axis[0][1], n.axis[0][2]).dot(d),
+                            Eigen::Vector3f(n.axis[1][0], n.axis[1][1], n.axis[1][2]).dot(d), w.dot(d)};
+    float out2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        const float o = std::max(std::abs(along[k]) - n.half[k], 0.0f);
+        out2 += o * o;
+    }
+    return out2 > r * r;
+}
+
+} // namespace
 
 const Eigen::Vector3d& QueryRun::b_vertex(uint32_t v) {
     if (s.vert_stamp[v] != s.epoch) {
@@ -26,14 +43,11 @@ const float* QueryRun::b_tri_sphere(uint32_t tri) {
     return out;
 }
 
-const detail::PlacedTriangleNode& QueryRun::b_tri_node(uint32_t j) {
-    detail::PlacedTriangleNode& out = s.bnodes[j];
-    if (s.bnode_stamp[j] != s.epoch) {
-        s.bnode_stamp[j] = s.epoch;
-        const TriangleNode& n = EB.tri_nodes[j];
-        const Eigen::Vector3f c = f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t;
-        out.center[0] = c.x(), out.center[1] = c.y(), out.center[2] = c.z();
-        out.box = placed(n.box, f.R, f.t);
+const Obb& QueryRun::b_tri_box(uint32_t j) {
+    Obb& out = s.bboxes[j];
+    if (s.bbox_stamp[j] != s.epoch) {
+        s.bbox_stamp[j] = s.epoch;
+        out = placed(EB.tri_nodes[j].box(), f.R, f.t);
     }
     return out;
 }
@@ -57,9 +71,10 @@ void QueryRun::run_triangles() {
     if (an.empty() || bn.empty()) return;
     const bool any = o.mode != QueryMode::All; // deepest asks the triangles only whether they meet
     auto centre_a = [&](uint32_t i) { return Eigen::Vector3f(an[i].center[0], an[i].center[1], an[i].center[2]); };
+    // B's node centres are moved into A's frame where the walk needs them, not stored (a
+    // copy per node would double the memory a walk reads); boxes are stored when first moved.
     auto centre_b = [&](uint32_t j) {
-        const float* c = b_tri_node(j).center;
-        return Eigen::Vector3f(c[0], c[1], c[2]);
+        return Eigen::Vector3f(f.R * Eigen::Vector3f(bn[j].center[0], bn[j].center[1], bn[j].center[2]) + f.t);
     };
     auto& stack = s.stack;
     stack.clear();
@@ -74,16 +89,41 @@ void QueryRun::run_triangles() {
         ++res.counters.bound_tests;
         if ((ca - cb).squaredNorm() > prune * prune) continue;
         ++res.counters.bound_tests;
-        if (obbs_disjoint(na.box, b_tri_node(j).box, f.margin)) continue;
+        if (na.boxed | nb.boxed) { // a rod or a sliver: only a box tells it from a ball
+            if (obbs_disjoint(na.box(), b_tri_box(j), f.margin)) continue;
+        } else { // each node's slab (box axis 0) against the other's sphere, each in its own frame
+            const Eigen::Vector3f d = cb - ca;
+            const Eigen::Vector3f e = f.R.transpose() * (ca - f.t) - Eigen::Vector3f(nb.center[0], nb.center[1], nb.center[2]);
+            if (std::abs(na.axis[0][0] * d.x() + na.axis[0][1] * d.y() + na.axis[0][2] * d.z()) >
+                na.half[0] + nb.radius + f.margin)
+                continue;
+            if (std::abs(nb.axis[0][0] * e.x() + nb.axis[0][1] * e.y() + nb.axis[0][2] * e.z()) >
+                nb.half[0] + na.radius + f.margin)
+                continue;
+        }
         roots_overlap = true; // the first pair to pass is the roots
         if (na.is_leaf() && nb.is_leaf()) {
-            for (uint32_t p = na.first; p < na.first + na.count; ++p)
+            // Against a needle (an elongated leaf, one triangle) each compact triangle of the
+            // other leaf is tried by its own sphere against the needle's box first: the
+            // needle's sphere is far larger than the needle.
+            const bool a_vs_box = nb.boxed && na.count > 1, b_vs_box = na.boxed && nb.count > 1;
+            for (uint32_t p = na.first; p < na.first + na.count; ++p) {
+                if (a_vs_box) {
+                    const float* sa = &ea.tri_sphere[4 * size_t(ea.tri_order[p])];
+                    const Eigen::Vector3f c = f.R.transpose() * (Eigen::Vector3f(sa[0], sa[1], sa[2]) - f.t);
+                    if (sphere_misses_box(nb, c, sa[3] + f.margin)) continue;
+                }
                 for (uint32_t q = nb.first; q < nb.first + nb.count; ++q) {
+                    if (b_vs_box) {
+                        const float* sb = b_tri_sphere(eb.tri_order[q]);
+                        if (sphere_misses_box(na, Eigen::Vector3f(sb[0], sb[1], sb[2]), sb[3] + f.margin)) continue;
+                    }
                     if (!triangle_pair(ea.tri_order[p], eb.tri_order[q])) continue;
                     res.collide = true;
                     if (any) return;
                     s.tri_pairs.push_back({ea.tri_order[p], eb.tri_order[q]});
                 }
+            }
             continue;
         }
         // Descend the larger sphere; any takes the nearer child first.

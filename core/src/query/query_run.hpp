@@ -57,8 +57,9 @@ struct QueryRun {
     Eigen::Vector3f b_node_centre(uint32_t j) const;
     const Eigen::Vector3d& b_vertex(uint32_t v);
     const float* b_tri_sphere(uint32_t tri);
-    // Node j of B's triangle tree in A's frame (moved once per query).
-    const detail::PlacedTriangleNode& b_tri_node(uint32_t j);
+    // The box of node j of B's triangle tree in A's frame (moved once per query, when a box
+    // test first needs it: a small tree's nodes meet many of the other's).
+    const Obb& b_tri_box(uint32_t j);
     bool triangle_pair(uint32_t ta, uint32_t tb);
     // Level `exact`: walks the triangle trees; sets res.collide (and, in mode all, the triangle pairs).
     void run_triangles();

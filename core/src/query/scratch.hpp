@@ -17,12 +17,6 @@ struct NodePairVisit {
     float d2;     // squared centre distance
 };
 
-// A node of B's triangle tree moved into A's frame: its sphere centre and its box.
-struct PlacedTriangleNode {
-    float center[3];
-    Obb box;
-};
-
 struct ScratchBuffers {
     std::vector<std::pair<uint32_t, uint32_t>> stack;  // triangle-tree walk (level exact)
     std::vector<NodePairVisit> visits;                 // sampling-tree walk
@@ -31,8 +25,8 @@ struct ScratchBuffers {
     std::vector<uint32_t> vert_stamp;
     std::vector<float> btri;                 // B's triangle bounding spheres in A's frame (lazy)
     std::vector<uint32_t> tri_stamp;
-    std::vector<PlacedTriangleNode> bnodes;  // B's triangle-tree nodes in A's frame (lazy)
-    std::vector<uint32_t> bnode_stamp;
+    std::vector<Obb> bboxes;                 // boxes of B's triangle-tree nodes in A's frame (lazy, box tests only)
+    std::vector<uint32_t> bbox_stamp;
     std::vector<float> d2;                   // distance matrix of one leaf pair
     std::vector<float> ga, gb;               // culled spheres gathered (x, y, z blocks)
     std::vector<uint32_t> ia, ib;            // their sphere indices
