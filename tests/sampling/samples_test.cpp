@@ -50,14 +50,14 @@ TEST(RadiusLimiter, ThinPlateCapsRadiusAtHalfItsThicknessPlusAllowance) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 0.1, 8), "plate");
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
-    const float r = limiter.limit(Eigen::Vector3d(0.1, 0.2, 0.05), {0, 0, 1}, 1.0f, 0);
+    const float r = limiter.limit(Eigen::Vector3d(0.1, 0.2, 0.05), {0, 0, 1}, 1.0f, false);
     EXPECT_NEAR(r, (0.1 + allowance) / 2, 0.01 * 0.055 + 1e-4);
 }
 
 TEST(RadiusLimiter, FlatInteriorKeepsTheRequestedRadius) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 8), "cube");
     const RadiusLimiter limiter(m.mesh, 0.001);
-    EXPECT_EQ(limiter.limit(Eigen::Vector3d(0, 0, 1), {0, 0, 1}, 0.5f, 0), 0.5f);
+    EXPECT_EQ(limiter.limit(Eigen::Vector3d(0, 0, 1), {0, 0, 1}, 0.5f, false), 0.5f);
 }
 
 TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
@@ -67,7 +67,7 @@ TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
     const Eigen::Vector3f corner(1, 1, 1), n = corner.normalized();
-    const float r = limiter.limit(corner.cast<double>(), n, 1.0f, 0);
+    const float r = limiter.limit(corner.cast<double>(), n, 1.0f, false);
     EXPECT_NEAR(r * (1 - 1 / std::sqrt(3.0)), allowance, allowance * 0.02);
 }
 
@@ -75,7 +75,7 @@ TEST(RadiusLimiter, SphereThroughAThinRodIsCaughtFromOutside) {
     // Far larger than the rod: the centre passes through and lies outside the body.
     const ImportedMesh m = meshgen::prepare(meshgen::cylinder(0.05, 2.0, 24), "rod");
     const RadiusLimiter limiter(m.mesh, 0.005);
-    const float r = limiter.limit(Eigen::Vector3d(0.05, 0, 1.0), {1, 0, 0}, 1.0f, 0);
+    const float r = limiter.limit(Eigen::Vector3d(0.05, 0, 1.0), {1, 0, 0}, 1.0f, false);
     EXPECT_LT(r, 0.06f);
     EXPECT_GT(r, 0.04f);
 }
@@ -125,13 +125,29 @@ TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
     }
 }
 
-TEST(RadiusLimiter, OpenSheetCapsRadiusAtHalfTheAllowance) {
-    // Centred behind the sheet, a sphere pokes out of the back by its diameter.
+TEST(RadiusLimiter, OpenSheetSpheresAreTwoSidedOnALadderUpToTheirCap) {
+    // Centred on the sheet, a sphere pokes out of either side by its radius: the cap, or the
+    // rung of the ladder cap * 2^(-k/2) at or below the radius asked for.
     const TriangleMesh sheet = make_sheet(2, 4);
-    const double allowance = 0.01;
-    const RadiusLimiter limiter(sheet, allowance);
+    const double allowance = 0.01, cap = 0.02;
+    const RadiusLimiter limiter(sheet, allowance, cap);
     EXPECT_TRUE(limiter.on_open_part(0));
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, 0), allowance / 2, 1e-6);
+    EXPECT_TRUE(limiter.face_on_open_part(0));
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, true), cap, 1e-8);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 0.015f, true), cap / std::sqrt(2.0), 1e-8);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 0.0101f, true), cap / 2, 1e-8);
+    EXPECT_NEAR(RadiusLimiter(sheet, allowance).limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, true), allowance, 1e-8);
+}
+
+TEST(Samples, EverySampleOfAnOpenPartIsTwoSidedAndCentredOnTheSurface) {
+    const TriangleMesh sheet = make_sheet(2, 4);
+    const SampleSet s = test::vertex_samples(sheet);
+    ASSERT_GT(s.size(), 0u);
+    for (size_t i = 0; i < s.size(); ++i) {
+        EXPECT_TRUE(s.is_two_sided(i));
+        EXPECT_EQ(s.sphere_centre(i, 0.3f), s.points[i]);
+        EXPECT_LT(s.source_index(i), sheet.positions.size());
+    }
 }
 
 TEST(RadiusLimiter, OpenBoxInventsNoSolidButAClosedCubeBesideItKeepsItsRadii) {
@@ -161,7 +177,10 @@ TEST(RadiusLimiter, OpenBoxInventsNoSolidButAClosedCubeBesideItKeepsItsRadii) {
     EXPECT_FALSE(limiter.on_open_part(cube_vertex));
     // The cup's floor, seen from inside (normal +z into the cup): a sphere below it would lie
     // outside the cup; a side wall's back is enclosed by the other walls, and still capped.
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.2, 0.1, -1), {0, 0, -1}, 0.5f, cup_vertex), allowance / 2, 1e-6);
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(1, 0.1, 0), {1, 0, 0}, 0.5f, cup_vertex), allowance / 2, 1e-6);
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(5.5, 0.1, 0), {1, 0, 0}, 0.3f, cube_vertex), 0.3f, 0.3f * 0.011);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.2, 0.1, -1), {0, 0, -1}, 0.5f, limiter.on_open_part(cup_vertex)),
+                allowance, 1e-6);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(1, 0.1, 0), {1, 0, 0}, 0.5f, limiter.on_open_part(cup_vertex)), allowance,
+                1e-6);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(5.5, 0.1, 0), {1, 0, 0}, 0.3f, limiter.on_open_part(cube_vertex)), 0.3f,
+                0.3f * 0.011);
 }
