@@ -125,6 +125,35 @@ TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
     }
 }
 
+TEST(Samples, TwoSidedFaceSamplesHoldEveryPointOfTheirTriangle) {
+    // An open sheet of long thin and right triangles: every point of a face lies inside a
+    // two-sided sphere of that face, within kTwoSidedCoverage of its radius.
+    std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {3, 0, 0}, {3, 0.4, 0}, {0, 0.4, 0}, {1.5, 2, 0.3}};
+    const ImportedMesh m = prepare_mesh("sheet", p, {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}});
+    SampleSet s;
+    const double r = 0.2;
+    const RadiusLimiter limiter(m.mesh, 0.01, r);
+    RadiusRule fixed;
+    fixed.fixed = float(r);
+    for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f) add_face_samples(s, limiter, f, 0.05, fixed, 0.5f);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f) {
+        const auto& t = m.mesh.triangles[f];
+        for (int k = 0; k < 400; ++k) {
+            double a = u(rng), b = u(rng);
+            if (a + b > 1) a = 1 - a, b = 1 - b;
+            const Eigen::Vector3d q = m.mesh.positions[t[0]] + a * (m.mesh.positions[t[1]] - m.mesh.positions[t[0]]) +
+                                      b * (m.mesh.positions[t[2]] - m.mesh.positions[t[0]]);
+            double nearest = INFINITY;
+            for (size_t i = 0; i < s.size(); ++i)
+                if (s.source_index(i) == f) nearest = std::min(nearest, (s.position(i) - q).norm());
+            EXPECT_LE(nearest, kTwoSidedCoverage * r * (1 + 1e-5)) << "face " << f;
+        }
+    }
+    for (size_t i = 0; i < s.size(); ++i) EXPECT_TRUE(s.is_two_sided(i));
+}
+
 TEST(RadiusLimiter, OpenSheetSpheresAreTwoSidedOnALadderUpToTheirCap) {
     // Centred on the sheet, a sphere pokes out of either side by its radius: the cap, or the
     // rung of the ladder cap * 2^(-k/2) at or below the radius asked for.

@@ -66,6 +66,19 @@ double max_face_sample_gap(double radius, double eps) {
 
 namespace {
 
+// Largest distance from a point of a triangle (squared edge lengths `len2`) to its nearest
+// corner: the circumradius of an acute triangle, at most half the longest edge otherwise
+// (the circumcentre lies outside and the farthest points lie on the edges). Never above
+// (longest edge)/sqrt(3), and far below it for slivers and right triangles.
+double nearest_corner_bound(const double len2[3]) {
+    const int c = len2[0] >= len2[1] ? (len2[0] >= len2[2] ? 0 : 2) : (len2[1] >= len2[2] ? 1 : 2);
+    const double c2 = len2[c], a2 = len2[(c + 1) % 3], b2 = len2[(c + 2) % 3];
+    if (a2 + b2 <= c2) return 0.5 * std::sqrt(c2);
+    const double den = 4 * a2 * b2 - (a2 + b2 - c2) * (a2 + b2 - c2); // 16 x area^2
+    const double circum2 = den > 0 ? a2 * b2 * c2 / den : INFINITY;
+    return std::sqrt(std::min(circum2, c2 / 3.0));
+}
+
 // Adaptive sampling of one triangle on a dyadic barycentric grid: a sub-triangle is fine
 // when every point of it is close enough to one of its corners for that corner's sphere:
 // within the tolerance of a one-sided sphere, inside a two-sided one (open parts).
@@ -109,17 +122,21 @@ struct FaceSampler {
         const Eigen::Vector3d e1 = b - a, e2 = c - a;
         const double q11 = e1.squaredNorm(), q12 = e1.dot(e2), q22 = e2.squaredNorm();
         int k = 0; // edge k runs from v[k] to v[k+1]
-        double longest2 = 0;
+        double longest2 = 0, len2[3];
         for (int e = 0; e < 3; ++e) {
             const double di = double(v[(e + 1) % 3].first - v[e].first) / kGrid;
             const double dj = double(v[(e + 1) % 3].second - v[e].second) / kGrid;
-            const double len2 = di * di * q11 + 2 * di * dj * q12 + dj * dj * q22;
-            if (len2 > longest2 * (1 + 1e-4)) longest2 = len2, k = e; // near-ties: the first edge
+            len2[e] = di * di * q11 + 2 * di * dj * q12 + dj * dj * q22;
+            if (len2[e] > longest2 * (1 + 1e-4)) longest2 = len2[e], k = e; // near-ties: the first edge
         }
         // Every point of a triangle is within (longest edge)/sqrt(3) of a corner. A one-sided
         // sphere lies flat under the face, a two-sided one is centred on it.
-        const double rho = std::sqrt(longest2 / 3.0);
-        if (two_sided ? rho <= kTwoSidedCoverage * double(r) : std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
+        if (two_sided) {
+            if (nearest_corner_bound(len2) <= kTwoSidedCoverage * double(r)) return;
+        } else {
+            const double rho = std::sqrt(longest2 / 3.0);
+            if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
+        }
         const auto a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
         if (((a.first + b.first) | (a.second + b.second)) & 1) return; // finest grid reached
         const std::pair<int64_t, int64_t> m{(a.first + b.first) / 2, (a.second + b.second) / 2};
