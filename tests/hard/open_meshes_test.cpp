@@ -107,7 +107,7 @@ TEST(OpenMeshes, OpenSurfacesThatCrossAlwaysCollideAtTheSphereLevel) {
 // Known to fail (issue 11 stays open on it): open sheets against themselves at random poses.
 // No crossing is missed any more (above), but two-sided spheres poke out of either side by
 // their radius (0.25% of the diagonal), and at random poses a dense soup passes that close to
-// itself often: measured sheet 99.5%, fan 98.25% (7 false contacts), soup 88.25% (47 false
+// itself often: measured sheet 99.5%, fan 98.25% (7 false contacts), soup 88.5% (46 false
 // contacts, every one within 0.5% of the diagonal) of 400 random poses (docs/hard-cases.md).
 TEST(OpenMeshes, DISABLED_DefaultSpheresAgreeWithExactWhereOpenSheetsCrossEachOther) {
     for (const Subject& subject : open_meshes()) {

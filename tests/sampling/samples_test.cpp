@@ -99,6 +99,28 @@ TEST(Samples, FaceGapFormulaIsExactForAFlatFace) {
     EXPECT_NEAR(std::sqrt(h * h + r * r) - r, eps, 1e-12);
 }
 
+namespace {
+
+// Largest distance from `points` random points of face f to the nearest sample on f.
+double farthest_from_own_samples(const TriangleMesh& mesh, const SampleSet& s, uint32_t f, int points, std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(0, 1);
+    const auto& t = mesh.triangles[f];
+    double worst = 0;
+    for (int k = 0; k < points; ++k) {
+        double a = u(rng), b = u(rng);
+        if (a + b > 1) a = 1 - a, b = 1 - b;
+        const Eigen::Vector3d p = mesh.positions[t[0]] + a * (mesh.positions[t[1]] - mesh.positions[t[0]]) +
+                                  b * (mesh.positions[t[2]] - mesh.positions[t[0]]);
+        double nearest = INFINITY;
+        for (size_t i = 0; i < s.size(); ++i)
+            if (s.source_index(i) == f) nearest = std::min(nearest, (s.position(i) - p).norm());
+        worst = std::max(worst, nearest);
+    }
+    return worst;
+}
+
+} // namespace
+
 TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(3, 1, 0.5, 1), "slab");
     SampleSet s;
@@ -109,20 +131,8 @@ TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
     std::vector<uint32_t> tris(m.mesh.triangles.size());
     for (uint32_t f = 0; f < tris.size(); ++f) tris[f] = f, add_face_samples(s, limiter, f, eps, fixed, 1.0f);
     std::mt19937 rng(3);
-    std::uniform_real_distribution<double> u(0, 1);
-    for (uint32_t f = 0; f < tris.size(); ++f) {
-        const auto& t = m.mesh.triangles[f];
-        for (int k = 0; k < 200; ++k) {
-            double a = u(rng), b = u(rng);
-            if (a + b > 1) a = 1 - a, b = 1 - b;
-            const Eigen::Vector3d p = m.mesh.positions[t[0]] + a * (m.mesh.positions[t[1]] - m.mesh.positions[t[0]]) +
-                                      b * (m.mesh.positions[t[2]] - m.mesh.positions[t[0]]);
-            double nearest = INFINITY;
-            for (size_t i = 0; i < s.size(); ++i)
-                if (s.source_index(i) == f) nearest = std::min(nearest, (s.position(i) - p).norm());
-            EXPECT_LE(nearest, gap * (1 + 1e-5)) << "face " << f;
-        }
-    }
+    for (uint32_t f = 0; f < tris.size(); ++f)
+        EXPECT_LE(farthest_from_own_samples(m.mesh, s, f, 200, rng), gap * (1 + 1e-5)) << "face " << f;
 }
 
 TEST(Samples, TwoSidedFaceSamplesHoldEveryPointOfTheirTriangle) {
@@ -137,20 +147,8 @@ TEST(Samples, TwoSidedFaceSamplesHoldEveryPointOfTheirTriangle) {
     fixed.fixed = float(r);
     for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f) add_face_samples(s, limiter, f, 0.05, fixed, 0.5f);
     std::mt19937 rng(5);
-    std::uniform_real_distribution<double> u(0, 1);
-    for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f) {
-        const auto& t = m.mesh.triangles[f];
-        for (int k = 0; k < 400; ++k) {
-            double a = u(rng), b = u(rng);
-            if (a + b > 1) a = 1 - a, b = 1 - b;
-            const Eigen::Vector3d q = m.mesh.positions[t[0]] + a * (m.mesh.positions[t[1]] - m.mesh.positions[t[0]]) +
-                                      b * (m.mesh.positions[t[2]] - m.mesh.positions[t[0]]);
-            double nearest = INFINITY;
-            for (size_t i = 0; i < s.size(); ++i)
-                if (s.source_index(i) == f) nearest = std::min(nearest, (s.position(i) - q).norm());
-            EXPECT_LE(nearest, kTwoSidedCoverage * r * (1 + 1e-5)) << "face " << f;
-        }
-    }
+    for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f)
+        EXPECT_LE(farthest_from_own_samples(m.mesh, s, f, 400, rng), kTwoSidedCoverage * r * (1 + 1e-5)) << "face " << f;
     for (size_t i = 0; i < s.size(); ++i) EXPECT_TRUE(s.is_two_sided(i));
 }
 
