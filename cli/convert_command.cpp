@@ -116,7 +116,12 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     if (opt.tolerance && !std::isfinite(st.worst_predicted_gap))
         std::cerr << "  warning: the tree gave some face samples smaller spheres than assumed; gaps may exceed "
                   << a.tolerance << "\n";
-    if (st.automatic_tolerance > 0)
+    if (st.automatic_tolerance > 0 && st.uncovered_open_faces > 0)
+        std::cerr << "  note: vertex samples alone would leave " << st.uncovered_open_faces
+                  << " faces of open parts partly outside every sphere; faces were sampled until the spheres hold "
+                  << "them, closed parts to a tolerance of " << st.automatic_tolerance << " (" << fmt(100 * kAutoTolerance)
+                  << "% of the diagonal) (--vertices-only to keep vertex samples only)\n";
+    else if (st.automatic_tolerance > 0)
         std::cerr << "  note: vertex samples alone would leave the surface uncovered deeper than "
                   << st.automatic_tolerance << " (" << fmt(100 * kAutoTolerance) << "% of the diagonal); faces were "
                   << "sampled to that tolerance (--vertices-only to keep vertex samples only)\n";

@@ -62,7 +62,7 @@ void Scene::rebuild_selection() {
     const Eigen::Vector3f origin = s.origin.cast<float>();
     for (uint32_t i : doc_.selection()) {
         const float r = sample_radius_[i];
-        data_.selected.push_back({{origin + sphere_center(s.points[i], s.normals[i], r), r}, selection_color()});
+        data_.selected.push_back({{origin + s.sphere_centre(i, r), r}, selection_color()});
     }
     ++data_.selected_revision;
     ++data_.revision;

@@ -58,7 +58,7 @@ double largest_uncovered_depth(const TriangleMesh& mesh, const SptDocument& doc,
     for (const TreeNode* n : doc.trees[0].active_nodes())
         for (uint32_t i : n->samples) {
             spheres.push_back({doc.samples.origin +
-                                   sphere_center(doc.samples.points[i], doc.samples.normals[i], n->ss_radius).cast<double>(),
+                                   doc.samples.sphere_centre(i, n->ss_radius).cast<double>(),
                                double(n->ss_radius)});
             max_r = std::max(max_r, double(n->ss_radius));
         }

@@ -26,22 +26,34 @@ std::vector<Subject> open_meshes() {
             {"gapped box", make_gapped_box(0.5, 0.02), false}};
 }
 
-// Every part is open, so every sampling sphere is capped at half the protrusion allowance: the
-// model is a two-sided shell within the allowance of the surface, and holds no volume.
-TEST(OpenMeshes, EverySphereOfAnOpenPartStaysWithinTheAllowanceOfTheSurface) {
+// Every part is open, so every sampling sphere is two-sided: centred on the surface, its radius
+// at most the protrusion allowance, so the model is a shell within the allowance of the surface
+// on both sides, and holds no volume.
+TEST(OpenMeshes, EverySphereOfAnOpenPartIsCentredOnTheSurfaceWithinTheAllowance) {
     for (const Subject& subject : open_meshes()) {
         for (uint8_t open : subject.mesh.on_open_part) ASSERT_EQ(open, 1) << subject.name;
         const auto o = hard::make_object(subject.mesh);
-        const double cap = 0.5 * kDefaultProtrusion * subject.mesh.diagonal();
-        for (const CompactNode& n : o->model.tree().nodes())
+        const double cap = kDefaultProtrusion * subject.mesh.diagonal();
+        const CompactTree& t = o->model.tree();
+        size_t off_surface = 0, one_sided = 0;
+        for (const CompactNode& n : t.nodes()) {
             EXPECT_LE(n.ss_radius, cap * (1 + 1e-6)) << subject.name;
+            for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k) {
+                const uint32_t i = t.sample_index()[k];
+                one_sided += !o->doc.samples.is_two_sided(i);
+                off_surface += t.sphere_centre(n, k) != o->doc.samples.points[i];
+            }
+        }
+        EXPECT_EQ(one_sided, 0u) << subject.name;
+        EXPECT_EQ(off_surface, 0u) << subject.name;
     }
 }
 
 // Random poses of `a` against `b` (translations uniform in a cube of a's diagonal around its
 // centre, so that a good share collide): the fraction on which the default spheres agree with
 // exact. Prints the figures docs/hard-cases.md quotes.
-double random_pose_agreement(const hard::Object& a, const hard::Object& b, const char* name, const char* against) {
+double random_pose_agreement(const hard::Object& a, const hard::Object& b, const char* name, const char* against,
+                             int* false_negatives = nullptr) {
     const double diag = a.mesh.diagonal();
     const V centre = 0.5 * (a.mesh.bounds().first + a.mesh.bounds().second);
     std::mt19937 rng(31);
@@ -60,6 +72,7 @@ double random_pose_agreement(const hard::Object& a, const hard::Object& b, const
     std::printf("[ agreement ] %s against %s: %d of %d random poses (%.2f%%), %d collide, %d false contacts\n", name,
                 against, agree, poses, 100.0 * agree / poses, collide, false_pos);
     EXPECT_GT(collide, poses / 20) << "too few contacts to measure: " << name;
+    if (false_negatives) *false_negatives = poses - agree - false_pos;
     return double(agree) / poses;
 }
 
@@ -79,11 +92,23 @@ TEST(OpenMeshes, DefaultSpheresAgreeWithExactAtRandomPosesOfOpenShellsAgainstThe
     }
 }
 
-// Known to fail (issue 11 stays open on it): two open sheets crossing along a line pass
-// between the spheres. An open part's spheres are tangent to the surface behind it, capped at
-// half the allowance, and face sampling spaces them for the tolerance, wider than their
-// radius: the layer has gaps through it (docs/sampling.md, "Open parts"). Measured: sheet
-// 96.0%, fan 95.5%, soup 83.75% of 400 random poses, every miss a false negative.
+// Two open surfaces that cross share a point, which lies inside a sphere of each (two-sided
+// spheres hold every point of their faces), so those spheres overlap: no crossing is missed.
+TEST(OpenMeshes, OpenSurfacesThatCrossAlwaysCollideAtTheSphereLevel) {
+    for (const Subject& subject : open_meshes()) {
+        if (!subject.crossing_sheets) continue;
+        const auto o = hard::make_object(subject.mesh);
+        int false_negatives = -1;
+        random_pose_agreement(*o, *o, subject.name, "itself", &false_negatives);
+        EXPECT_EQ(false_negatives, 0) << subject.name;
+    }
+}
+
+// Known to fail (issue 11 stays open on it): open sheets against themselves at random poses.
+// No crossing is missed any more (above), but two-sided spheres poke out of either side by
+// their radius (0.25% of the diagonal), and at random poses a dense soup passes that close to
+// itself often: measured sheet 99.5%, fan 98.25% (7 false contacts), soup 88.5% (46 false
+// contacts, every one within 0.5% of the diagonal) of 400 random poses (docs/hard-cases.md).
 TEST(OpenMeshes, DISABLED_DefaultSpheresAgreeWithExactWhereOpenSheetsCrossEachOther) {
     for (const Subject& subject : open_meshes()) {
         if (!subject.crossing_sheets) continue;

@@ -2,6 +2,7 @@
 #include "meshgen.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
+#include "spt/query.hpp"
 #include "test_support.hpp"
 #include <cmath>
 #include <cstring>
@@ -79,6 +80,32 @@ TEST(SptFile, RoundTripKeepsEverything) {
     const SptDocument doc = small_document(0.2);
     EXPECT_GT(doc.samples.size(), 26u); // face samples too
     expect_same(doc, decode_spt(encode_spt(doc), "mem"));
+}
+
+TEST(SptFile, TwoSidedSamplesOfAnOpenPartRoundTripAndStayCentredWithoutTheMesh) {
+    // An open box (no top): its samples are two-sided, and a model made from the file alone
+    // (no mesh, parts unknown) still centres their spheres on the surface and walls nothing in.
+    auto raw = meshgen::box(1, 1, 1, 2);
+    std::vector<spt::Triangle> t;
+    for (const auto& tri : raw.triangles) {
+        bool top = true;
+        for (uint32_t v : tri) top = top && raw.positions[v].z() > 0.49;
+        if (!top) t.push_back(tri);
+    }
+    const ImportedMesh m = prepare_mesh("cup.obj", raw.positions, std::move(t));
+    const SptDocument doc = make_document(m.mesh);
+    const SptDocument back = decode_spt(encode_spt(doc), "mem");
+    expect_same(doc, back);
+    for (size_t i = 0; i < back.samples.size(); ++i) ASSERT_TRUE(back.samples.is_two_sided(i)) << i;
+    const CollisionModel model(back);
+    const CompactTree& tree = model.tree();
+    for (const CompactNode& n : tree.nodes())
+        for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k)
+            ASSERT_EQ(tree.sphere_centre(n, k), back.samples.points[tree.sample_index()[k]]);
+    // A small cube inside the cup: open parts enclose nothing, with or without the mesh.
+    const SptDocument cube = make_document(meshgen::prepare(meshgen::box(0.2, 0.2, 0.2, 1), "cube.obj").mesh);
+    QueryScratch s;
+    EXPECT_FALSE(collide_relative(model, CollisionModel(cube), Pose{}, {}, s).collide);
 }
 
 TEST(SptFile, SaveIsAtomicAndLoadReadsItBack) {

@@ -50,14 +50,14 @@ TEST(RadiusLimiter, ThinPlateCapsRadiusAtHalfItsThicknessPlusAllowance) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 0.1, 8), "plate");
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
-    const float r = limiter.limit(Eigen::Vector3d(0.1, 0.2, 0.05), {0, 0, 1}, 1.0f, 0);
+    const float r = limiter.limit(Eigen::Vector3d(0.1, 0.2, 0.05), {0, 0, 1}, 1.0f, false);
     EXPECT_NEAR(r, (0.1 + allowance) / 2, 0.01 * 0.055 + 1e-4);
 }
 
 TEST(RadiusLimiter, FlatInteriorKeepsTheRequestedRadius) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(2, 2, 2, 8), "cube");
     const RadiusLimiter limiter(m.mesh, 0.001);
-    EXPECT_EQ(limiter.limit(Eigen::Vector3d(0, 0, 1), {0, 0, 1}, 0.5f, 0), 0.5f);
+    EXPECT_EQ(limiter.limit(Eigen::Vector3d(0, 0, 1), {0, 0, 1}, 0.5f, false), 0.5f);
 }
 
 TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
@@ -67,7 +67,7 @@ TEST(RadiusLimiter, CubeCornerProtrudesAtMostTheAllowance) {
     const double allowance = 0.01;
     const RadiusLimiter limiter(m.mesh, allowance);
     const Eigen::Vector3f corner(1, 1, 1), n = corner.normalized();
-    const float r = limiter.limit(corner.cast<double>(), n, 1.0f, 0);
+    const float r = limiter.limit(corner.cast<double>(), n, 1.0f, false);
     EXPECT_NEAR(r * (1 - 1 / std::sqrt(3.0)), allowance, allowance * 0.02);
 }
 
@@ -75,7 +75,7 @@ TEST(RadiusLimiter, SphereThroughAThinRodIsCaughtFromOutside) {
     // Far larger than the rod: the centre passes through and lies outside the body.
     const ImportedMesh m = meshgen::prepare(meshgen::cylinder(0.05, 2.0, 24), "rod");
     const RadiusLimiter limiter(m.mesh, 0.005);
-    const float r = limiter.limit(Eigen::Vector3d(0.05, 0, 1.0), {1, 0, 0}, 1.0f, 0);
+    const float r = limiter.limit(Eigen::Vector3d(0.05, 0, 1.0), {1, 0, 0}, 1.0f, false);
     EXPECT_LT(r, 0.06f);
     EXPECT_GT(r, 0.04f);
 }
@@ -99,6 +99,28 @@ TEST(Samples, FaceGapFormulaIsExactForAFlatFace) {
     EXPECT_NEAR(std::sqrt(h * h + r * r) - r, eps, 1e-12);
 }
 
+namespace {
+
+// Largest distance from `points` random points of face f to the nearest sample on f.
+double farthest_from_own_samples(const TriangleMesh& mesh, const SampleSet& s, uint32_t f, int points, std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(0, 1);
+    const auto& t = mesh.triangles[f];
+    double worst = 0;
+    for (int k = 0; k < points; ++k) {
+        double a = u(rng), b = u(rng);
+        if (a + b > 1) a = 1 - a, b = 1 - b;
+        const Eigen::Vector3d p = mesh.positions[t[0]] + a * (mesh.positions[t[1]] - mesh.positions[t[0]]) +
+                                  b * (mesh.positions[t[2]] - mesh.positions[t[0]]);
+        double nearest = INFINITY;
+        for (size_t i = 0; i < s.size(); ++i)
+            if (s.source_index(i) == f) nearest = std::min(nearest, (s.position(i) - p).norm());
+        worst = std::max(worst, nearest);
+    }
+    return worst;
+}
+
+} // namespace
+
 TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
     const ImportedMesh m = meshgen::prepare(meshgen::box(3, 1, 0.5, 1), "slab");
     SampleSet s;
@@ -109,29 +131,50 @@ TEST(Samples, FaceSamplesCoverEveryPointOfTheirTriangle) {
     std::vector<uint32_t> tris(m.mesh.triangles.size());
     for (uint32_t f = 0; f < tris.size(); ++f) tris[f] = f, add_face_samples(s, limiter, f, eps, fixed, 1.0f);
     std::mt19937 rng(3);
-    std::uniform_real_distribution<double> u(0, 1);
-    for (uint32_t f = 0; f < tris.size(); ++f) {
-        const auto& t = m.mesh.triangles[f];
-        for (int k = 0; k < 200; ++k) {
-            double a = u(rng), b = u(rng);
-            if (a + b > 1) a = 1 - a, b = 1 - b;
-            const Eigen::Vector3d p = m.mesh.positions[t[0]] + a * (m.mesh.positions[t[1]] - m.mesh.positions[t[0]]) +
-                                      b * (m.mesh.positions[t[2]] - m.mesh.positions[t[0]]);
-            double nearest = INFINITY;
-            for (size_t i = 0; i < s.size(); ++i)
-                if (s.source_index(i) == f) nearest = std::min(nearest, (s.position(i) - p).norm());
-            EXPECT_LE(nearest, gap * (1 + 1e-5)) << "face " << f;
-        }
-    }
+    for (uint32_t f = 0; f < tris.size(); ++f)
+        EXPECT_LE(farthest_from_own_samples(m.mesh, s, f, 200, rng), gap * (1 + 1e-5)) << "face " << f;
 }
 
-TEST(RadiusLimiter, OpenSheetCapsRadiusAtHalfTheAllowance) {
-    // Centred behind the sheet, a sphere pokes out of the back by its diameter.
+TEST(Samples, TwoSidedFaceSamplesHoldEveryPointOfTheirTriangle) {
+    // An open sheet of long thin and right triangles: every point of a face lies inside a
+    // two-sided sphere of that face, within kTwoSidedCoverage of its radius.
+    std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {3, 0, 0}, {3, 0.4, 0}, {0, 0.4, 0}, {1.5, 2, 0.3}};
+    const ImportedMesh m = prepare_mesh("sheet", p, {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}});
+    SampleSet s;
+    const double r = 0.2;
+    const RadiusLimiter limiter(m.mesh, 0.01, r);
+    RadiusRule fixed;
+    fixed.fixed = float(r);
+    for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f) add_face_samples(s, limiter, f, 0.05, fixed, 0.5f);
+    std::mt19937 rng(5);
+    for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f)
+        EXPECT_LE(farthest_from_own_samples(m.mesh, s, f, 400, rng), kTwoSidedCoverage * r * (1 + 1e-5)) << "face " << f;
+    for (size_t i = 0; i < s.size(); ++i) EXPECT_TRUE(s.is_two_sided(i));
+}
+
+TEST(RadiusLimiter, OpenSheetSpheresAreTwoSidedOnALadderUpToTheirCap) {
+    // Centred on the sheet, a sphere pokes out of either side by its radius: the cap, or the
+    // rung of the ladder cap * 2^(-k/2) at or below the radius asked for.
     const TriangleMesh sheet = make_sheet(2, 4);
-    const double allowance = 0.01;
-    const RadiusLimiter limiter(sheet, allowance);
+    const double allowance = 0.01, cap = 0.02;
+    const RadiusLimiter limiter(sheet, allowance, cap);
     EXPECT_TRUE(limiter.on_open_part(0));
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, 0), allowance / 2, 1e-6);
+    EXPECT_TRUE(limiter.face_on_open_part(0));
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, true), cap, 1e-8);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 0.015f, true), cap / std::sqrt(2.0), 1e-8);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 0.0101f, true), cap / 2, 1e-8);
+    EXPECT_NEAR(RadiusLimiter(sheet, allowance).limit(Eigen::Vector3d(0.1, 0.2, 0), {0, 0, 1}, 1.0f, true), allowance, 1e-8);
+}
+
+TEST(Samples, EverySampleOfAnOpenPartIsTwoSidedAndCentredOnTheSurface) {
+    const TriangleMesh sheet = make_sheet(2, 4);
+    const SampleSet s = test::vertex_samples(sheet);
+    ASSERT_GT(s.size(), 0u);
+    for (size_t i = 0; i < s.size(); ++i) {
+        EXPECT_TRUE(s.is_two_sided(i));
+        EXPECT_EQ(s.sphere_centre(i, 0.3f), s.points[i]);
+        EXPECT_LT(s.source_index(i), sheet.positions.size());
+    }
 }
 
 TEST(RadiusLimiter, OpenBoxInventsNoSolidButAClosedCubeBesideItKeepsItsRadii) {
@@ -161,7 +204,10 @@ TEST(RadiusLimiter, OpenBoxInventsNoSolidButAClosedCubeBesideItKeepsItsRadii) {
     EXPECT_FALSE(limiter.on_open_part(cube_vertex));
     // The cup's floor, seen from inside (normal +z into the cup): a sphere below it would lie
     // outside the cup; a side wall's back is enclosed by the other walls, and still capped.
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.2, 0.1, -1), {0, 0, -1}, 0.5f, cup_vertex), allowance / 2, 1e-6);
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(1, 0.1, 0), {1, 0, 0}, 0.5f, cup_vertex), allowance / 2, 1e-6);
-    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(5.5, 0.1, 0), {1, 0, 0}, 0.3f, cube_vertex), 0.3f, 0.3f * 0.011);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(0.2, 0.1, -1), {0, 0, -1}, 0.5f, limiter.on_open_part(cup_vertex)),
+                allowance, 1e-6);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(1, 0.1, 0), {1, 0, 0}, 0.5f, limiter.on_open_part(cup_vertex)), allowance,
+                1e-6);
+    EXPECT_NEAR(limiter.limit(Eigen::Vector3d(5.5, 0.1, 0), {1, 0, 0}, 0.3f, limiter.on_open_part(cube_vertex)), 0.3f,
+                0.3f * 0.011);
 }

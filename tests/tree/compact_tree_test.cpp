@@ -27,7 +27,7 @@ TEST(CompactTree, LeftChildFollowsParentAndRightIsIndexed) {
         }
         for (uint32_t k = 0; k < n.count; ++k) {
             const uint32_t sample = c.sample_index()[n.first + k];
-            const Eigen::Vector3f ctr = sphere_center(s.points[sample], s.normals[sample], src.ss_radius);
+            const Eigen::Vector3f ctr = s.sphere_centre(sample, src.ss_radius);
             EXPECT_EQ(c.sphere_centre(n, n.first + k), ctr);
             EXPECT_EQ(c.centres(n)[k], ctr.x()); // block: x's, y's, z's
             EXPECT_EQ(c.centres(n)[n.count + k], ctr.y());

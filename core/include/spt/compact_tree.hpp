@@ -51,6 +51,9 @@ public:
     const int8_t* ny() const { return ny_.data(); }
     /// z of each sphere's sample normal as snorm8 (value/127), sphere order.
     const int8_t* nz() const { return nz_.data(); }
+    /// Per sphere, sphere order: 1 if two-sided (an open part's sphere, centred on the surface;
+    /// its normal gives an axis, not a side). nullptr when no sphere is two-sided.
+    const uint8_t* two_sided() const { return two_sided_.empty() ? nullptr : two_sided_.data(); }
     /// Sample index (into the SampleSet) of each sphere.
     const uint32_t* sample_index() const { return sample_index_.data(); }
     /// Number of spheres.
@@ -63,6 +66,7 @@ private:
     std::vector<CompactNode> nodes_;
     std::vector<float> centres_;
     std::vector<int8_t> nx_, ny_, nz_;
+    std::vector<uint8_t> two_sided_; // empty when no sphere is
     std::vector<uint32_t> sample_index_;
     size_t sphere_count_ = 0;
 };

@@ -13,12 +13,14 @@ struct ConvertOptions {
     /// Model units: adds face samples so that no surface point is more than tolerance/2
     /// outside every sampling sphere (two objects' gaps together stay within it).
     std::optional<double> tolerance;
-    /// How far a sampling sphere may poke out of the mesh, model units. Default: a quarter
-    /// of the tolerance if set, else kDefaultProtrusion x the mesh diagonal.
+    /// How far a sampling sphere may poke out of the mesh, model units. Default: an eighth
+    /// of the tolerance if set, else kDefaultProtrusion x the mesh diagonal. Two-sided spheres (open
+    /// parts) take up to this, or without it half the tolerance (docs/sampling.md).
     std::optional<double> protrusion;
     std::string tree_name = "default"; ///< name of the tree in the document
     /// Without a tolerance: if vertex samples alone would leave the surface uncovered deeper
-    /// than kAutoTolerance x the diagonal, sample the faces to that tolerance.
+    /// than kAutoTolerance x the diagonal, or leave a face of an open part partly outside every
+    /// sphere, sample the faces to that tolerance (open parts: until their spheres hold them).
     bool auto_tolerance = true;
 };
 
@@ -35,6 +37,8 @@ struct ConvertStats {
     size_t face_samples = 0;         ///< samples added on faces (tolerance-driven)
     double worst_predicted_gap = 0;  ///< largest uncovered depth the final radii allow on a face, model units
     double automatic_tolerance = 0;  ///< > 0: the tolerance applied because vertices left holes
+    size_t uncovered_open_faces = 0; ///< faces of open parts that vertex samples alone leave partly outside every
+                                     ///< (two-sided) sphere; any makes the automatic tolerance apply
     double sample_seconds = 0;       ///< wall time of sampling and radius limiting, seconds
     double build_seconds = 0;        ///< wall time of building the tree, seconds
 };

@@ -27,19 +27,32 @@ std::vector<float> radius_in_use(const SamplingTree& tree, size_t n) {
     return r;
 }
 
-// Largest uncovered depth that vertex samples alone leave on a face: every point of a face
-// is within (longest edge)/sqrt(3) of a corner, whose sphere lies flat under it.
-double vertex_only_gap(const TriangleMesh& mesh, const SampleSet& s, const std::vector<float>& radius) {
+struct VertexOnlyGaps {
+    double worst = 0;             // largest uncovered depth on a face, model units
+    size_t uncovered_open = 0;    // faces of open parts not held by their corners' spheres
+};
+
+// What vertex samples alone leave uncovered: every point of a face is within
+// (longest edge)/sqrt(3) of a corner, whose sphere lies flat under it, or on an open part is
+// centred on it and must hold it (within kTwoSidedCoverage of its radius, as face sampling asks).
+VertexOnlyGaps vertex_only_gaps(const RadiusLimiter& limiter, const SampleSet& s, const std::vector<float>& radius) {
+    const TriangleMesh& mesh = limiter.mesh();
     std::vector<float> at_vertex(mesh.positions.size(), 0);
     for (size_t i = 0; i < s.size(); ++i) at_vertex[s.source_index(i)] = radius[i];
-    double worst = 0;
-    for (const auto& t : mesh.triangles) {
+    VertexOnlyGaps g;
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+        const auto& t = mesh.triangles[f];
         const auto &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
         const double rho = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / std::sqrt(3.0);
         const double r = std::min({at_vertex[t[0]], at_vertex[t[1]], at_vertex[t[2]]});
-        worst = std::max(worst, std::sqrt(rho * rho + r * r) - r);
+        if (limiter.face_on_open_part(f)) {
+            g.worst = std::max(g.worst, rho - r);
+            g.uncovered_open += rho > kTwoSidedCoverage * r;
+        } else {
+            g.worst = std::max(g.worst, std::sqrt(rho * rho + r * r) - r);
+        }
     }
-    return worst;
+    return g;
 }
 
 } // namespace
@@ -55,9 +68,17 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
         options.protrusion ? *options.protrusion
                            : (options.tolerance ? *options.tolerance / 8 : kDefaultProtrusion * mesh.diagonal());
     if (!(protrusion > 0) || !std::isfinite(protrusion)) throw Error(ErrorKind::Usage, "protrusion must be positive");
+    // A two-sided sphere (open part) pokes out of either side of the surface by exactly its
+    // radius, with no edge or thin wall to pass: it may take the object's whole share of a
+    // tolerance, half of it (the default allowance without one: the automatic tolerance's half).
+    const double two_sided_radius =
+        options.protrusion ? *options.protrusion : (options.tolerance ? *options.tolerance / 2 : protrusion);
+
+    if (mesh.positions.size() > kMaxSourceIndex || mesh.triangles.size() > kMaxSourceIndex)
+        throw_bad_input(mesh.name, "more than " + std::to_string(kMaxSourceIndex) + " vertices or triangles");
 
     auto t0 = Clock::now();
-    const RadiusLimiter limiter(mesh, protrusion);
+    const RadiusLimiter limiter(mesh, protrusion, two_sided_radius);
     const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius);
     if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
     st.vertex_samples = vertex_samples.size();
@@ -71,15 +92,19 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
         t0 = Clock::now();
         doc.trees.push_back(build_tree(options.tree_name, doc.samples, options.build));
         st.build_seconds = seconds_since(t0);
-        st.worst_predicted_gap = vertex_only_gap(mesh, doc.samples, radius_in_use(doc.trees[0], doc.samples.size()));
+        const VertexOnlyGaps gaps = vertex_only_gaps(limiter, doc.samples, radius_in_use(doc.trees[0], doc.samples.size()));
+        st.worst_predicted_gap = std::max(0.0, gaps.worst);
+        st.uncovered_open_faces = gaps.uncovered_open;
         const double automatic = kAutoTolerance * mesh.diagonal();
-        if (!options.auto_tolerance || st.worst_predicted_gap <= automatic) return doc;
-        // Vertices alone leave holes (large flat faces): sample the faces too.
+        if (!options.auto_tolerance || (st.worst_predicted_gap <= automatic && gaps.uncovered_open == 0)) return doc;
+        // Vertices alone leave holes (large flat faces), or leave faces of open parts outside
+        // their spheres (two open sheets crossing there could pass between them): sample the faces too.
         ConvertOptions with_faces = options;
         with_faces.tolerance = automatic;
         ConvertStats again;
         SptDocument sampled = make_document(mesh, with_faces, &again);
         again.automatic_tolerance = automatic;
+        again.uncovered_open_faces = gaps.uncovered_open;
         again.sample_seconds += st.sample_seconds, again.build_seconds += st.build_seconds;
         st = again;
         return sampled;
@@ -101,7 +126,10 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
     const std::vector<float> used = radius_in_use(tree, s.size());
     bool holds = true;
     for (size_t i = vertex_samples.size(); i < s.size(); ++i)
-        holds = holds && used[i] >= rule.for_sample(s.spacing[i], s.max_radius[i]) / kRadiusClassRatio * (1 - 1e-6f);
+        // Two-sided samples keep their own radius, up to the bfloat16 rounding of a spacing
+        // that ties with it (the 10% margin of kTwoSidedCoverage absorbs that).
+        holds = holds && used[i] >= rule.for_sample(s.spacing[i], s.max_radius[i]) *
+                                        (s.is_two_sided(i) ? 0.99f : (1 - 1e-6f) / kRadiusClassRatio);
     st.worst_predicted_gap = holds ? eps : INFINITY;
     doc.samples = std::move(s);
     st.face_samples = doc.samples.size() - vertex_samples.size();

@@ -169,7 +169,7 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         at = r.offset();
         s.sources[i] = r.get<uint32_t>("sample source");
         const bool face = s.sources[i] & kFaceSampleBit;
-        const uint32_t src = s.sources[i] & ~kFaceSampleBit;
+        const uint32_t src = s.sources[i] & kMaxSourceIndex; // bit 30: two-sided (open part)
         if (src >= (face ? doc.mesh.triangle_count : doc.mesh.vertex_count))
             r.fail(at, "sample " + std::to_string(i) + " refers to " + (face ? "triangle " : "vertex ") + std::to_string(src) +
                            " beyond the mesh");

@@ -26,7 +26,11 @@ const SamplingTree& pick_tree(const SptDocument& doc, const std::string& name) {
 
 CollisionModel::CollisionModel(const SptDocument& doc, const std::string& tree_name) {
     init(doc, tree_name);
-    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, exact()));
+    // Without the mesh its parts are unknown, but a two-sided sample is on an open part: it
+    // walls in nothing.
+    std::vector<uint8_t> wall(tree_.sphere_count(), 0);
+    for (size_t k = 0; k < wall.size(); ++k) wall[k] = !doc.samples.is_two_sided(tree_.sample_index()[k]);
+    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, exact(), wall));
 }
 
 CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh, const std::string& tree_name) {
@@ -69,7 +73,8 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     for (size_t k = 0; k < wall.size(); ++k) {
         const uint32_t i = tree_.sample_index()[k];
         const uint32_t src = doc.samples.source_index(i);
-        wall[k] = doc.samples.is_face_sample(i) ? (src < nt && e.closed[src]) : (src < vertex_closed.size() && vertex_closed[src]);
+        wall[k] = !doc.samples.is_two_sided(i) &&
+                  (doc.samples.is_face_sample(i) ? (src < nt && e.closed[src]) : (src < vertex_closed.size() && vertex_closed[src]));
     }
     exact_ = std::move(data);
     solid_ = std::make_shared<SolidData>(SolidData::build(tree_, *exact_, wall));

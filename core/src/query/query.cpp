@@ -156,6 +156,7 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     const bool cull = o.normal_culling;
     if (cull) {
         // u: from A's node towards B's node. A keeps n.u >= -cos; B, in its own frame, n.(-u) >= -cos.
+        // A two-sided sphere faces both ways: always kept.
         Eigen::Vector3f u = b_node_centre(j) - ca;
         const float len = u.norm();
         const float limit = -o.cull_cos * 127.0f; // normals are snorm8
@@ -165,13 +166,14 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
         if (len > 0) {
             u /= len;
             const Eigen::Vector3f ub = -(f.R.transpose() * u);
+            const uint8_t *two_a = ta.two_sided(), *two_b = tb.two_sided();
             count_a = 0;
             for (uint32_t p = 0, k = na.first; p < na.count; ++p, ++k)
-                if (ta.nx()[k] * u.x() + ta.ny()[k] * u.y() + ta.nz()[k] * u.z() >= limit)
+                if ((two_a && two_a[k]) || ta.nx()[k] * u.x() + ta.ny()[k] * u.y() + ta.nz()[k] * u.z() >= limit)
                     gax[count_a] = ax[p], gay[count_a] = ay[p], gaz[count_a] = az[p], s.ia[count_a++] = k;
             count_b = 0;
             for (uint32_t q = 0, k = nb.first; q < nb.count; ++q, ++k)
-                if (tb.nx()[k] * ub.x() + tb.ny()[k] * ub.y() + tb.nz()[k] * ub.z() >= limit)
+                if ((two_b && two_b[k]) || tb.nx()[k] * ub.x() + tb.ny()[k] * ub.y() + tb.nz()[k] * ub.z() >= limit)
                     gbx[count_b] = bx[q], gby[count_b] = by[q], gbz[count_b] = bz[q], s.ib[count_b++] = k;
             ax = gax, ay = gay, az = gaz, bx = gbx, by = gby, bz = gbz;
         } else {

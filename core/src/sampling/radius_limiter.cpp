@@ -7,8 +7,9 @@
 
 namespace spt {
 
-RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion)
-    : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion) {
+RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion, double two_sided_radius)
+    : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion),
+      two_sided_radius_(two_sided_radius > 0 ? two_sided_radius : protrusion) {
     // A vertex is on an open part if one of its faces is (prepare_mesh found the parts).
     const size_t nv = mesh.positions.size();
     const bool known = mesh.on_open_part.size() == mesh.triangles.size();
@@ -35,11 +36,20 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     return bvh_->segment_hits(p, c, std::max(1e-6, rounding / r));
 }
 
-float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, uint32_t vertex) const {
+float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, bool two_sided) const {
+    // Where inside and outside are not defined, no solid may be invented: a sphere of an open
+    // part is centred on its surface and stays within the allowance of it, on both sides.
+    if (two_sided) {
+        // The largest rung of a ladder R, R/sqrt(2), R/2, ... at or below r_max: few distinct
+        // radii, so the tree builder can keep one radius per active node (radius_class.hpp).
+        const double top = two_sided_radius_;
+        if (!(r_max < top)) return float(top);
+        if (!(r_max > 0)) return r_max;
+        int k = std::max(0, int(std::ceil(2 * std::log2(top / r_max))));
+        while (k < 4000 && top * std::exp2(-0.5 * k) > r_max) ++k;
+        return float(top * std::exp2(-0.5 * k));
+    }
     const Eigen::Vector3d n = nf.cast<double>();
-    // Where inside and outside are not defined, no solid may be invented: the spheres of an
-    // open part stay within the allowance of its surface, on both sides.
-    if (on_open_part(vertex)) r_max = std::min(r_max, float(protrusion_ / 2));
     // Protrusion grows with r (a centre that passes through a thin part counts as outside),
     // so the largest allowed radius is found by bisection.
     if (!protrudes(p, n, r_max)) return r_max;

@@ -15,23 +15,33 @@ class TriangleBvh;
 /// protrusion allowance: a sphere wider than a thin part, or than a sharp edge allows,
 /// would report contacts that are not there. On an open part (faces joined by edges with a
 /// boundary or non-manifold edge: a sheet, an open box, a soup) inside and outside are not
-/// defined, and a sphere behind the surface would invent a solid there: its radius is
-/// capped at half the allowance, so it pokes out of the back by at most the allowance.
+/// defined, and a sphere behind the surface would invent a solid there: a sample there is
+/// two-sided, its sphere centred on the surface with a radius of at most its own cap.
 class RadiusLimiter {
 public:
-    /// Indexes `mesh` (kept by reference); `protrusion` in model units, > 0.
-    RadiusLimiter(const TriangleMesh& mesh, double protrusion);
+    /// Indexes `mesh` (kept by reference); `protrusion` in model units, > 0; `two_sided_radius`
+    /// (model units, > 0; default `protrusion`) caps the radius of two-sided spheres, which poke
+    /// out of either side of the surface by exactly their radius.
+    RadiusLimiter(const TriangleMesh& mesh, double protrusion, double two_sided_radius = 0);
     ~RadiusLimiter();
     RadiusLimiter(const RadiusLimiter&) = delete;
     RadiusLimiter& operator=(const RadiusLimiter&) = delete;
     /// Largest r <= r_max (within 1%) whose sphere at (p, n) protrudes at most the allowance;
-    /// p in the mesh's object frame; `vertex` is a mesh vertex of the sample's face (or the
-    /// sample's own vertex).
-    float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, uint32_t vertex) const;
-    /// True if `vertex` belongs to an open part (TriangleMesh::on_open_part; unknown counts as open).
+    /// p in the mesh's object frame. `two_sided`: the sample is on an open part and its sphere
+    /// is centred at p, so every point of it is within r of the surface: the largest of
+    /// two_sided_radius() x 2^(-k/2), k >= 0, that is at most r_max (a short ladder of radii).
+    float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, bool two_sided) const;
+    /// True if `vertex` belongs to an open part (one of its faces does; TriangleMesh::on_open_part,
+    /// unknown counts as open).
     bool on_open_part(uint32_t vertex) const { return vertex >= open_part_.size() || open_part_[vertex]; }
+    /// True if triangle `face` is on an open part (TriangleMesh::on_open_part; unknown counts as open).
+    bool face_on_open_part(uint32_t face) const {
+        return mesh_.on_open_part.size() != mesh_.triangles.size() || mesh_.on_open_part[face];
+    }
     /// The protrusion allowance, model units.
     double protrusion() const { return protrusion_; }
+    /// The largest radius of a two-sided sphere, model units.
+    double two_sided_radius() const { return two_sided_radius_; }
     /// The mesh being indexed.
     const TriangleMesh& mesh() const { return mesh_; }
 
@@ -40,6 +50,7 @@ private:
     const TriangleMesh& mesh_;
     std::unique_ptr<detail::TriangleBvh> bvh_;
     double protrusion_;
+    double two_sided_radius_;
     std::vector<uint8_t> open_part_; // per vertex: one of its faces is on an open part (TriangleMesh::on_open_part)
 };
 

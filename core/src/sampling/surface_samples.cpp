@@ -22,6 +22,13 @@ Eigen::Vector3d local_origin(const TriangleMesh& mesh) {
     return o.allFinite() ? o : Eigen::Vector3d::Zero();
 }
 
+float search_radius(const RadiusRule& rule, float spacing, bool two_sided) {
+    // A two-sided radius is not searched: it is the rung at or below the rule's radius, so
+    // that the rule gives every two-sided sample exactly its max_radius.
+    const float want = rule.for_sample(spacing, INFINITY);
+    return two_sided ? want : kRadiusSearchHeadroom * want;
+}
+
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule) {
     const size_t n = mesh.positions.size();
     std::vector<double> edge_sum(n, 0);
@@ -45,8 +52,9 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
         // off the surface, and a segment from there to the centre can graze the faces at the vertex.
         const Eigen::Vector3d& p = mesh.positions[v];
         const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
-        s.add((p - s.origin).cast<float>(), nrm, v, spacing,
-              limiter.limit(p, nrm, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), v));
+        const bool two_sided = limiter.on_open_part(v);
+        s.add((p - s.origin).cast<float>(), nrm, v | (two_sided ? kTwoSidedBit : 0), spacing,
+              limiter.limit(p, nrm, search_radius(rule, spacing, two_sided), two_sided));
     }
     return s;
 }
@@ -58,8 +66,22 @@ double max_face_sample_gap(double radius, double eps) {
 
 namespace {
 
+// Largest distance from a point of a triangle (squared edge lengths `len2`) to its nearest
+// corner: the circumradius of an acute triangle, at most half the longest edge otherwise
+// (the circumcentre lies outside and the farthest points lie on the edges). Never above
+// (longest edge)/sqrt(3), and far below it for slivers and right triangles.
+double nearest_corner_bound(const double len2[3]) {
+    const int c = len2[0] >= len2[1] ? (len2[0] >= len2[2] ? 0 : 2) : (len2[1] >= len2[2] ? 1 : 2);
+    const double c2 = len2[c], a2 = len2[(c + 1) % 3], b2 = len2[(c + 2) % 3];
+    if (a2 + b2 <= c2) return 0.5 * std::sqrt(c2);
+    const double den = 4 * a2 * b2 - (a2 + b2 - c2) * (a2 + b2 - c2); // 16 x area^2
+    const double circum2 = den > 0 ? a2 * b2 * c2 / den : INFINITY;
+    return std::sqrt(std::min(circum2, c2 / 3.0));
+}
+
 // Adaptive sampling of one triangle on a dyadic barycentric grid: a sub-triangle is fine
-// when every point of it is close enough to one of its corners for that corner's sphere.
+// when every point of it is close enough to one of its corners for that corner's sphere:
+// within the tolerance of a one-sided sphere, inside a two-sided one (open parts).
 struct FaceSampler {
     static constexpr int kLevels = 20; // finest grid: 2^-20 of the triangle
     static constexpr int64_t kGrid = int64_t(1) << kLevels;
@@ -68,7 +90,7 @@ struct FaceSampler {
     uint32_t face;
     Eigen::Vector3d a, b, c;
     Eigen::Vector3f normal;
-    uint32_t corner_vertex; // any vertex of the face: it names the face's connected part
+    bool two_sided; // the face is on an open part: spheres centred on it, which must cover it
     float spacing;
     RadiusRule rule;
     float factor;
@@ -82,9 +104,10 @@ struct FaceSampler {
         auto it = radius_at.find({i, j});
         if (it != radius_at.end()) return it->second;
         const Eigen::Vector3d p = point(i, j); // on the face: limited there, stored local in float
-        const float cap = limiter.limit(p, normal, kRadiusSearchHeadroom * rule.for_sample(spacing, INFINITY), corner_vertex);
-        out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit, spacing, cap);
-        const float r = factor * rule.for_sample(spacing, out.max_radius.back());
+        const float cap = limiter.limit(p, normal, search_radius(rule, spacing, two_sided), two_sided);
+        out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit | (two_sided ? kTwoSidedBit : 0), spacing, cap);
+        // An active node of two-sided samples keeps their own radius (radius_class.hpp).
+        const float r = (two_sided ? 1.0f : factor) * rule.for_sample(spacing, out.max_radius.back());
         radius_at[{i, j}] = r;
         return r;
     }
@@ -99,16 +122,21 @@ struct FaceSampler {
         const Eigen::Vector3d e1 = b - a, e2 = c - a;
         const double q11 = e1.squaredNorm(), q12 = e1.dot(e2), q22 = e2.squaredNorm();
         int k = 0; // edge k runs from v[k] to v[k+1]
-        double longest2 = 0;
+        double longest2 = 0, len2[3];
         for (int e = 0; e < 3; ++e) {
             const double di = double(v[(e + 1) % 3].first - v[e].first) / kGrid;
             const double dj = double(v[(e + 1) % 3].second - v[e].second) / kGrid;
-            const double len2 = di * di * q11 + 2 * di * dj * q12 + dj * dj * q22;
-            if (len2 > longest2 * (1 + 1e-4)) longest2 = len2, k = e; // near-ties: the first edge
+            len2[e] = di * di * q11 + 2 * di * dj * q12 + dj * dj * q22;
+            if (len2[e] > longest2 * (1 + 1e-4)) longest2 = len2[e], k = e; // near-ties: the first edge
         }
-        // Every point of a triangle is within (longest edge)/sqrt(3) of a corner.
-        const double rho = std::sqrt(longest2 / 3.0);
-        if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
+        // Every point of a triangle is within (longest edge)/sqrt(3) of a corner. A one-sided
+        // sphere lies flat under the face, a two-sided one is centred on it.
+        if (two_sided) {
+            if (nearest_corner_bound(len2) <= kTwoSidedCoverage * double(r)) return;
+        } else {
+            const double rho = std::sqrt(longest2 / 3.0);
+            if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
+        }
         const auto a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
         if (((a.first + b.first) | (a.second + b.second)) & 1) return; // finest grid reached
         const std::pair<int64_t, int64_t> m{(a.first + b.first) / 2, (a.second + b.second) / 2};
@@ -128,7 +156,8 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     if (!(fn.norm() > 0)) return;
     // Spacing stands for the mesh's own resolution (it sets default radii), not the grid's.
     const float spacing = float(((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0);
-    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), t[0], spacing, rule, radius_factor, eps, {}};
+    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), limiter.face_on_open_part(face),
+                   spacing, rule, radius_factor, eps, {}};
     const int64_t g = FaceSampler::kGrid;
     fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
 }

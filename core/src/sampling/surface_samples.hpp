@@ -14,13 +14,25 @@ constexpr float kRadiusSearchHeadroom = 2.0f;
 /// zero for a mesh around its file's origin).
 Eigen::Vector3d local_origin(const TriangleMesh& mesh);
 
+/// Radius passed to RadiusLimiter::limit for a sample of local `spacing`: kRadiusSearchHeadroom x
+/// the rule's radius, or for a two-sided sample the rule's radius itself.
+float search_radius(const RadiusRule& rule, float spacing, bool two_sided);
+
 /// One sample per vertex with a valid normal, relative to local_origin(mesh); spacing = mean length of its edges,
-/// max_radius from `limiter`, searched up to kRadiusSearchHeadroom x rule.for_sample.
+/// max_radius from `limiter` (search_radius); vertices of open parts are two-sided.
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {});
 
+/// Two-sided spheres (open parts) must hold every point of their face, not merely come within
+/// a tolerance of it, so that two open surfaces that cross always have overlapping spheres:
+/// face samples are placed so that every point of a face is within this fraction of a
+/// sphere's radius from its centre (the rest is a margin for rounding).
+constexpr double kTwoSidedCoverage = 0.9;
+
 /// Adds face samples (face normals, relative to samples.origin) on `triangle`, refining adaptively until every point of
-/// it lies within reach of a face sample whose sphere leaves it at most `eps` uncovered,
-/// assuming each sample's radius is `radius_factor` x rule.for_sample(spacing, max_radius).
+/// it lies within reach of a face sample whose sphere leaves it at most `eps` uncovered (on an
+/// open part: lies inside the sphere, within kTwoSidedCoverage of its radius; the samples are
+/// two-sided), assuming each sample's radius is `radius_factor` x rule.for_sample(spacing, max_radius)
+/// (two-sided: 1 x, as the builder keeps their radius).
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
                       const RadiusRule& rule, float radius_factor);
 

@@ -45,12 +45,16 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
             float* block = centres_.data() + 3 * sphere;
             for (uint32_t k = 0; k < c.count; ++k) {
                 const uint32_t s = n->samples[k];
-                const Eigen::Vector3f ctr = sphere_center(samples.points[s], samples.normals[s], n->ss_radius);
+                const Eigen::Vector3f ctr = samples.sphere_centre(s, n->ss_radius);
                 block[k] = ctr.x(), block[c.count + k] = ctr.y(), block[2 * c.count + k] = ctr.z();
                 nx_[sphere] = to_snorm8(samples.normals[s].x());
                 ny_[sphere] = to_snorm8(samples.normals[s].y());
                 nz_[sphere] = to_snorm8(samples.normals[s].z());
                 sample_index_[sphere] = s;
+                if (samples.is_two_sided(s)) {
+                    if (two_sided_.empty()) two_sided_.assign(total, 0);
+                    two_sided_[sphere] = 1;
+                }
                 ++sphere;
             }
             nodes_.push_back(c);
@@ -65,7 +69,8 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
 
 size_t CompactTree::memory_bytes() const {
     return nodes_.capacity() * sizeof(CompactNode) + centres_.capacity() * sizeof(float) +
-           (nx_.capacity() + ny_.capacity() + nz_.capacity()) + sample_index_.capacity() * sizeof(uint32_t);
+           (nx_.capacity() + ny_.capacity() + nz_.capacity()) + two_sided_.capacity() +
+           sample_index_.capacity() * sizeof(uint32_t);
 }
 
 } // namespace spt

@@ -72,7 +72,7 @@ void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const S
     std::vector<float> r(members.size(), node.ss_radius);
     for (size_t i = 0; i < members.size(); ++i) {
         p[i] = samples.points[members[i]];
-        c[i] = sphere_center(p[i], samples.normals[members[i]], node.ss_radius);
+        c[i] = samples.sphere_centre(members[i], node.ss_radius);
     }
     detail::bound_run(node, c.data(), r.data(), p.data(), members.size(), hint, method);
 }
@@ -98,7 +98,7 @@ void append_spheres(const TreeNode& n, const SampleSet& samples, std::vector<Eig
                     std::vector<float>& r, std::vector<Eigen::Vector3f>& p) {
     for (uint32_t s : n.samples) {
         p.push_back(samples.points[s]);
-        c.push_back(sphere_center(samples.points[s], samples.normals[s], n.ss_radius));
+        c.push_back(samples.sphere_centre(s, n.ss_radius));
         r.push_back(n.ss_radius);
     }
 }

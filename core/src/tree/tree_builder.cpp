@@ -169,7 +169,7 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
         const auto& p = samples.points[i];
         const float own = options.radius.for_sample(samples.spacing[i], samples.max_radius.empty() ? INFINITY
                                                                                             : samples.max_radius[i]);
-        builder.items[k] = {{p.x(), p.y(), p.z()}, i, radius_class(own)};
+        builder.items[k] = {{p.x(), p.y(), p.z()}, i, samples.is_two_sided(i) ? two_sided_radius_class(own) : radius_class(own)};
     }
     builder.out.reserve(2 * members.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1);
     builder.build(0, members.size(), root_id());
