@@ -32,12 +32,13 @@ void Scene::rebuild_mesh() {
 void Scene::rebuild_tree() {
     data_.spheres.clear();
     compact_.reset();
-    sample_radius_.assign(doc_.samples().size(), 0.0f);
+    sphere_of_sample_.assign(doc_.samples().size(), UINT32_MAX);
     if (doc_.has_tree()) {
         compact_ = std::make_unique<CompactTree>(doc_.tree(), doc_.samples());
         data_.spheres = render::sampling_spheres(*compact_, doc_.tree(), color_by_);
-        for (const TreeNode* n : doc_.tree().active_nodes())
-            for (uint32_t s : n->samples) sample_radius_[s] = n->ss_radius;
+        const uint32_t* sample = compact_->sample_index();
+        for (uint32_t k = 0; k < uint32_t(compact_->sphere_count()); ++k)
+            if (sample[k] < sphere_of_sample_.size()) sphere_of_sample_[sample[k]] = k;
     }
     ++data_.spheres_revision;
     rebuild_current();
@@ -56,21 +57,18 @@ void Scene::rebuild_current() {
 }
 
 void Scene::rebuild_selection() {
+    // A selected sample's own sphere turns the selection colour: no second set of spheres to upload and draw.
     data_.selected.clear();
-    const SampleSet& s = doc_.samples();
-    // The same float arithmetic as the tree's spheres, so a selected sphere covers its sphere exactly.
-    const Eigen::Vector3f origin = s.origin.cast<float>();
-    for (uint32_t i : doc_.selection()) {
-        const float r = sample_radius_[i];
-        data_.selected.push_back({{origin + sphere_center(s.points[i], s.normals[i], r), r}, selection_color()});
-    }
+    data_.selected.reserve(doc_.selection().size());
+    for (uint32_t i : doc_.selection())
+        if (i < sphere_of_sample_.size() && sphere_of_sample_[i] != UINT32_MAX)
+            data_.selected.push_back(sphere_of_sample_[i]);
     ++data_.selected_revision;
     ++data_.revision;
     emit changed();
 }
 
-render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle spheres,
-                           render::SphereSetHandle selected) const {
+render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle spheres) const {
     render::Frame f;
     if (data_.mesh && mesh.id) {
         render::MeshItem item;
@@ -80,16 +78,20 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         f.meshes.push_back(item);
     }
     if (!data_.spheres.empty() && spheres.id) {
-        render::SphereItem all;
-        all.spheres = spheres;
-        f.spheres.push_back(all);
-        f.spheres.push_back(render::SphereItem{spheres, Eigen::Affine3f::Identity(), data_.highlight.first,
-                                               data_.highlight.count, render::highlight_color()});
-    }
-    if (!data_.selected.empty() && selected.id) {
-        render::SphereItem sel;
-        sel.spheres = selected;
-        f.spheres.push_back(sel);
+        // `spt render` draws every sphere, then the current node's again in the highlight colour. The
+        // same picture for less: the spheres before and after the node's range, then the range (drawn
+        // last, it wins depth ties as it does there).
+        const uint32_t n = uint32_t(data_.spheres.size());
+        const uint32_t first = std::min(data_.highlight.first, n);
+        const uint32_t end = std::min(n, first + std::min(data_.highlight.count, n - first));
+        const std::optional<render::Color> marked =
+            data_.selected.empty() ? std::nullopt : std::optional<render::Color>(selection_color());
+        if (first > 0) f.spheres.push_back(render::SphereItem{spheres, Eigen::Affine3f::Identity(), 0, first, {}, marked});
+        if (end < n)
+            f.spheres.push_back(render::SphereItem{spheres, Eigen::Affine3f::Identity(), end, n - end, {}, marked});
+        if (end > first)
+            f.spheres.push_back(render::SphereItem{spheres, Eigen::Affine3f::Identity(), first, end - first,
+                                                   render::highlight_color(), marked});
     }
     f.wire_spheres = data_.wires;
     return f;
