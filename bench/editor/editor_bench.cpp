@@ -83,6 +83,65 @@ double selection_ms(editor::MainWindow& w, bool visible_only, int runs, size_t* 
     return median(times);
 }
 
+// Median ms of `f` over `runs` calls.
+template <class F> double median_ms(int runs, F&& f) {
+    std::vector<double> times;
+    for (int k = 0; k < runs; ++k) {
+        QElapsedTimer t;
+        t.start();
+        f();
+        times.push_back(double(t.nsecsElapsed()) * 1e-6);
+    }
+    return median(times);
+}
+
+// Times the parts of one selection in the front view (the bench's first rectangle there):
+// core alone, the document (core + scene + panel), one view's repaint with and without a changed
+// selection (upload + draw vs draw).
+void selection_parts(editor::MainWindow& w, const TriangleMesh& mesh, int runs) {
+    editor::ViewWidget* v = w.grid().view(1);
+    editor::EditorDocument& doc = w.document();
+    const ViewProjection view = v->view_projection();
+    const float fw = float(view.width), fh = float(view.height);
+    const PixelRect rect{fw / 6, fh / 6, fw / 6 + fw / 2, fh / 6 + fh / 2};
+    for (bool visible : {false, true}) {
+        const RecipeStroke stroke{view, rect, SelectionMode::Replace, visible};
+        std::vector<uint32_t> hits;
+        const double core = median_ms(runs, [&] {
+            hits = apply_stroke(doc.samples(), doc.tree(), doc.current(), {}, stroke, &mesh);
+        });
+        std::printf("| part: core apply_stroke, %s | %.1f ms | %zu samples hit |\n", visible ? "visible only" : "through",
+                    core, hits.size());
+    }
+    {
+        const RecipeStroke stroke{view, rect, SelectionMode::Replace, false};
+        const std::vector<uint32_t> hits = apply_stroke(doc.samples(), doc.tree(), doc.current(), {}, stroke, &mesh);
+        std::vector<uint32_t> half;
+        for (uint32_t i = 0; i < doc.samples().size(); i += 2) half.push_back(i);
+        std::vector<uint32_t> out;
+        const double add = median_ms(runs, [&] { out = combine_selection(half, hits, SelectionMode::Add); });
+        const double sub = median_ms(runs, [&] { out = combine_selection(half, hits, SelectionMode::Subtract); });
+        std::printf("| part: core combine_selection, add / subtract | %.1f / %.1f ms | every other sample with the hits |\n",
+                    add, sub);
+    }
+    const double select = median_ms(runs, [&] { doc.select_rect(view, rect, SelectionMode::Replace, false); });
+    std::printf("| part: EditorDocument::select_rect, through (core, scene, panel; no draw) | %.1f ms | |\n", select);
+    repaint_views(w);
+    const auto repaint_one = [&] {
+        v->repaint();
+        v->makeCurrent();
+        v->context()->functions()->glFinish();
+        v->doneCurrent();
+    };
+    const double draw = median_ms(runs, repaint_one);
+    const double changed = median_ms(runs, [&] {
+        doc.set_selection(doc.selection());
+        repaint_one();
+    });
+    std::printf("| part: one view's repaint, nothing changed / selection changed | %.1f / %.1f ms | front view |\n", draw,
+                changed);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -98,6 +157,7 @@ int main(int argc, char** argv) {
         editor::MainWindow w(start);
         w.resize(1280, 800);
         if (!open(w, big)) return 1;
+        selection_parts(w, big, 5);
         size_t through = 0, visible = 0;
         const double t_through = selection_ms(w, false, 11, &through);
         const double t_visible = selection_ms(w, true, 11, &visible);

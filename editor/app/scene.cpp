@@ -32,12 +32,13 @@ void Scene::rebuild_mesh() {
 void Scene::rebuild_tree() {
     data_.spheres.clear();
     compact_.reset();
-    sample_radius_.assign(doc_.samples().size(), 0.0f);
+    sphere_of_sample_.assign(doc_.samples().size(), UINT32_MAX);
     if (doc_.has_tree()) {
         compact_ = std::make_unique<CompactTree>(doc_.tree(), doc_.samples());
         data_.spheres = render::sampling_spheres(*compact_, doc_.tree(), color_by_);
-        for (const TreeNode* n : doc_.tree().active_nodes())
-            for (uint32_t s : n->samples) sample_radius_[s] = n->ss_radius;
+        const uint32_t* sample = compact_->sample_index();
+        for (uint32_t k = 0; k < uint32_t(compact_->sphere_count()); ++k)
+            if (sample[k] < sphere_of_sample_.size()) sphere_of_sample_[sample[k]] = k;
     }
     ++data_.spheres_revision;
     rebuild_current();
@@ -56,21 +57,18 @@ void Scene::rebuild_current() {
 }
 
 void Scene::rebuild_selection() {
+    // A selected sample's own sphere turns the selection colour: no second set of spheres to upload and draw.
     data_.selected.clear();
-    const SampleSet& s = doc_.samples();
-    // The same float arithmetic as the tree's spheres, so a selected sphere covers its sphere exactly.
-    const Eigen::Vector3f origin = s.origin.cast<float>();
-    for (uint32_t i : doc_.selection()) {
-        const float r = sample_radius_[i];
-        data_.selected.push_back({{origin + s.sphere_centre(i, r), r}, selection_color()});
-    }
+    data_.selected.reserve(doc_.selection().size());
+    for (uint32_t i : doc_.selection())
+        if (i < sphere_of_sample_.size() && sphere_of_sample_[i] != UINT32_MAX)
+            data_.selected.push_back(sphere_of_sample_[i]);
     ++data_.selected_revision;
     ++data_.revision;
     emit changed();
 }
 
-render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle spheres,
-                           render::SphereSetHandle selected) const {
+render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle spheres) const {
     render::Frame f;
     if (data_.mesh && mesh.id) {
         render::MeshItem item;
@@ -79,14 +77,15 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         item.style.opacity = data_.spheres.empty() ? 1.0f : 0.3f;
         f.meshes.push_back(item);
     }
-    if (!data_.spheres.empty() && spheres.id)
-        for (const render::SphereItem& item :
-             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true))
+    if (!data_.spheres.empty() && spheres.id) {
+        // The selection: its samples' own spheres marked in the selection colour.
+        const std::optional<render::Color> marked =
+            data_.selected.empty() ? std::nullopt : std::optional<render::Color>(selection_color());
+        for (render::SphereItem item :
+             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true)) {
+            item.marked_color = marked;
             f.spheres.push_back(item);
-    if (!data_.selected.empty() && selected.id) {
-        render::SphereItem sel;
-        sel.spheres = selected;
-        f.spheres.push_back(sel);
+        }
     }
     f.wire_spheres = data_.wires;
     return f;

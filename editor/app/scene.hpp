@@ -1,8 +1,9 @@
 #pragma once
 // What the four views draw, made once from the document for all of them: the mesh, the
 // sampling spheres of the edited tree (coloured by level or node), the current node
-// highlighted with its bounding sphere, and the selected samples' spheres. Each part
-// carries a revision so a view re-uploads only what changed.
+// highlighted with its bounding sphere, and the selected samples' spheres (marks on the
+// sampling spheres, drawn in the selection colour). Each part carries a revision so a view
+// re-uploads only what changed.
 #include "editor_document.hpp"
 #include "spt/render/frame.hpp"
 #include "spt/render/tree_overlay.hpp"
@@ -18,7 +19,7 @@ struct SceneData {
     const TriangleMesh* mesh = nullptr;             ///< null when the mesh is unknown
     std::vector<render::SphereInstance> spheres;    ///< every sampling sphere, CompactTree order
     render::SphereRange highlight;                  ///< the current node's spheres
-    std::vector<render::SphereInstance> selected;   ///< spheres of the selected samples
+    std::vector<uint32_t> selected;                 ///< indices into `spheres` of the selected samples
     std::vector<render::WireSphere> wires;          ///< bounding sphere of the current node
     uint64_t mesh_revision = 0;      ///< changes when the mesh changes
     uint64_t spheres_revision = 0;   ///< changes when `spheres` changes
@@ -35,9 +36,8 @@ public:
     /// The current draw data.
     const SceneData& data() const { return data_; }
     /// The frame every view draws (what `spt render --overlay spheres,node,grid,axes --node ID` draws, plus the
-    /// selection); handles are the view's own uploads.
-    render::Frame frame(render::MeshHandle mesh, render::SphereSetHandle spheres,
-                        render::SphereSetHandle selected) const;
+    /// selection as marks on `spheres`); handles are the view's own uploads.
+    render::Frame frame(render::MeshHandle mesh, render::SphereSetHandle spheres) const;
     /// Colours spheres by level (default) or by node.
     void set_color_by(render::ColorBy by);
     /// How spheres are coloured.
@@ -55,7 +55,7 @@ private:
     EditorDocument& doc_;
     SceneData data_;
     render::ColorBy color_by_ = render::ColorBy::Level;
-    std::vector<float> sample_radius_; // radius of each sample's active node
+    std::vector<uint32_t> sphere_of_sample_; // index into data_.spheres of each sample; UINT32_MAX if none
     std::unique_ptr<CompactTree> compact_;
 };
 

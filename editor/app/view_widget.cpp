@@ -27,7 +27,8 @@ ViewProjection ViewWidget::view_projection() const {
 void ViewWidget::frame_selection() {
     if (doc_.selection().empty()) return frame_all();
     render::Bounds b;
-    for (const auto& s : scene_.data().selected) b.add_sphere(s.sphere.center, s.sphere.radius);
+    for (uint32_t i : scene_.data().selected)
+        b.add_sphere(scene_.data().spheres[i].sphere.center, scene_.data().spheres[i].sphere.radius);
     const render::Camera fitted = render::fit_camera(view(), b);
     camera_mut().target = fitted.target;
     camera_mut().radius = fitted.radius;
@@ -37,7 +38,7 @@ void ViewWidget::frame_selection() {
 
 void ViewWidget::forget_uploads() {
     mesh_rev_ = spheres_rev_ = selected_rev_ = 0;
-    mesh_ = {}, spheres_ = {}, selected_ = {};
+    mesh_ = {}, spheres_ = {};
 }
 
 void ViewWidget::upload(render::Renderer& renderer) {
@@ -51,15 +52,15 @@ void ViewWidget::upload(render::Renderer& renderer) {
         renderer.remove_spheres(spheres_);
         spheres_ = d.spheres.empty() ? render::SphereSetHandle{} : renderer.add_spheres(d.spheres);
         spheres_rev_ = d.spheres_revision;
+        selected_rev_ = 0; // a new set has no marks
     }
     if (selected_rev_ != d.selected_revision) {
-        renderer.remove_spheres(selected_);
-        selected_ = d.selected.empty() ? render::SphereSetHandle{} : renderer.add_spheres(d.selected);
+        if (spheres_.id) renderer.set_sphere_marks(spheres_, d.selected);
         selected_rev_ = d.selected_revision;
     }
 }
 
-render::Frame ViewWidget::frame() const { return scene_.frame(mesh_, spheres_, selected_); }
+render::Frame ViewWidget::frame() const { return scene_.frame(mesh_, spheres_); }
 
 bool ViewWidget::left_press(QMouseEvent* event) {
     press_ = event->position().toPoint();

@@ -44,7 +44,7 @@ private:
     Scene& scene_;
     const ViewOptions& options_;
     render::MeshHandle mesh_;
-    render::SphereSetHandle spheres_, selected_;
+    render::SphereSetHandle spheres_;
     uint64_t mesh_rev_ = 0, spheres_rev_ = 0, selected_rev_ = 0;
     bool selecting_ = false;
     SelectionMode mode_ = SelectionMode::Replace;

@@ -11,15 +11,15 @@ float Renderer::Impl::scene_diameter(const Bounds& b) const {
 void Renderer::Impl::draw_collision_spheres(const CollisionOverlay& c) {
     if (c.pairs.empty()) return;
     std::vector<GpuSphere> data;
-    data.reserve(c.pairs.size() * 2);
+    data.reserve(c.pairs.size() * 6);
     for (const SpherePair& p : c.pairs) {
-        data.push_back(to_gpu({p.a, c.color_a}));
-        data.push_back(to_gpu({p.b, c.color_b}));
+        push_impostor(data, to_gpu({p.a, c.color_a}));
+        push_impostor(data, to_gpu({p.b, c.color_b}));
     }
     gl.BindBuffer(GL_ARRAY_BUFFER, scratch_set_vbo);
     gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(GpuSphere)), data.data(), GL_STREAM_DRAW);
     begin_spheres(view);
-    draw_sphere_range(scratch_set_vao, scratch_set_vbo, 0, uint32_t(data.size()));
+    draw_sphere_range(scratch_set_vao, 0, uint32_t(data.size() / 3));
 }
 
 void Renderer::Impl::draw_collision_marks(const CollisionOverlay& c, const Bounds& b) {

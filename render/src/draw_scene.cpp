@@ -93,19 +93,23 @@ void Renderer::Impl::begin_spheres(const Eigen::Matrix4f& model_view) {
     gl.Uniform1i(prog.sphere.ortho, ortho ? 1 : 0);
     gl.Uniform1i(prog.sphere.override_color, 0);
     gl.Uniform1f(prog.sphere.fade, 0.0f);
+    gl.Uniform1i(prog.sphere.use_mark, 0);
 }
 
-// Instanced draw of spheres [first, first + count) of the buffer bound to `vao`.
-void Renderer::Impl::draw_sphere_range(GLuint vao, GLuint vbo, uint32_t first, uint32_t count) {
+// Draws spheres [first, first + count) of the impostor vertices in `vao` (three a sphere); their
+// marks from `mark_vbo` (a byte a vertex) unless it is 0.
+void Renderer::Impl::draw_sphere_range(GLuint vao, uint32_t first, uint32_t count, GLuint mark_vbo) {
     if (count == 0) return;
     gl.BindVertexArray(vao);
-    // Base instance is GL 4.2; point the instance attributes at the range instead.
-    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
-    const size_t offset = size_t(first) * sizeof(GpuSphere);
-    gl.VertexAttribPointer(detail::kSphere, 4, GL_FLOAT, GL_FALSE, sizeof(GpuSphere), reinterpret_cast<void*>(offset));
-    gl.VertexAttribPointer(detail::kColor, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(GpuSphere),
-                           reinterpret_cast<void*>(offset + offsetof(GpuSphere, rgba)));
-    gl.DrawArraysInstanced(GL_TRIANGLES, 0, 3, GLsizei(count));
+    if (mark_vbo) {
+        gl.BindBuffer(GL_ARRAY_BUFFER, mark_vbo);
+        gl.EnableVertexAttribArray(detail::kMark);
+        gl.VertexAttribPointer(detail::kMark, 1, GL_UNSIGNED_BYTE, GL_TRUE, 1, nullptr);
+    } else {
+        gl.DisableVertexAttribArray(detail::kMark);
+        gl.VertexAttrib4f(detail::kMark, 0, 0, 0, 1);
+    }
+    gl.DrawArrays(GL_TRIANGLES, GLint(3 * first), GLsizei(3 * count));
 }
 
 void Renderer::Impl::draw_sphere_items(const Frame& f) {
@@ -121,7 +125,13 @@ void Renderer::Impl::draw_sphere_items(const Frame& f) {
             gl.Uniform4f(prog.sphere.color, item.color->r, item.color->g, item.color->b, item.color->a);
         }
         gl.Uniform1f(prog.sphere.fade, std::clamp(item.fade, 0.0f, 1.0f));
-        draw_sphere_range(s.vao, s.vbo, item.first, count);
+        const bool marks = item.marked_color && s.mark_vbo;
+        if (marks) {
+            gl.Uniform1i(prog.sphere.use_mark, 1);
+            gl.Uniform4f(prog.sphere.mark_color, item.marked_color->r, item.marked_color->g, item.marked_color->b,
+                          item.marked_color->a);
+        }
+        draw_sphere_range(s.vao, item.first, count, marks ? s.mark_vbo : 0);
     }
 }
 

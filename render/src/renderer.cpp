@@ -80,6 +80,19 @@ void Renderer::update_spheres(SphereSetHandle set, const std::vector<SphereInsta
     impl_->upload_spheres(it->second, spheres);
 }
 
+void Renderer::set_sphere_marks(SphereSetHandle set, const std::vector<uint32_t>& marked) {
+    auto it = impl_->sphere_sets.find(set.id);
+    if (it == impl_->sphere_sets.end()) throw std::invalid_argument("Renderer::set_sphere_marks: unknown handle");
+    Impl::GpuSphereSet& s = it->second;
+    std::vector<uint8_t> marks(3 * size_t(s.count), 0);
+    for (uint32_t i : marked)
+        if (i < s.count) marks[3 * size_t(i)] = marks[3 * size_t(i) + 1] = marks[3 * size_t(i) + 2] = 255;
+    if (!s.mark_vbo) impl_->gl.GenBuffers(1, &s.mark_vbo);
+    impl_->gl.BindBuffer(GL_ARRAY_BUFFER, s.mark_vbo);
+    impl_->gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(marks.size()), marks.data(), GL_STATIC_DRAW);
+    check_gl(impl_->gl, "Renderer::set_sphere_marks");
+}
+
 void Renderer::remove_spheres(SphereSetHandle set) {
     auto it = impl_->sphere_sets.find(set.id);
     if (it == impl_->sphere_sets.end()) return;

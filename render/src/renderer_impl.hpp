@@ -35,6 +35,7 @@ struct Renderer::Impl {
     // An uploaded sphere set: GpuSphere instances.
     struct GpuSphereSet {
         GLuint vao = 0, vbo = 0;
+        GLuint mark_vbo = 0; // one byte a vertex, three a sphere (255 marked); 0 until marks are set
         uint32_t count = 0;
         Bounds bounds; // of the spheres, object frame
     };
@@ -44,6 +45,8 @@ struct Renderer::Impl {
 
     // A sphere and its colour as the GPU reads them.
     static GpuSphere to_gpu(const SphereInstance& s);
+    // Appends the three vertices of a sphere's impostor triangle.
+    static void push_impostor(std::vector<GpuSphere>& v, const GpuSphere& s);
     // Appends a line/point vertex at p (frame of the matrix it is drawn with).
     static void push_line_vertex(std::vector<LineVertex>& v, const Eigen::Vector3f& p, const Color& c);
 
@@ -55,7 +58,6 @@ struct Renderer::Impl {
     std::map<uint32_t, GpuSphereSet> sphere_sets;
     uint32_t next_id = 1;
 
-    GLuint impostor_vbo = 0; // impostor corners: one triangle around the unit disc
     GLuint circle_vbo = 0; // 4 circles as GL_LINES
     GLuint line_vao = 0, line_vbo = 0;     // streamed lines and points
     GLuint scratch_set_vao = 0, scratch_set_vbo = 0; // streamed solid spheres (collision pairs)
@@ -69,7 +71,7 @@ struct Renderer::Impl {
     // GPU objects and uploads (renderer_resources.cpp).
     explicit Impl(const ProcLoader& load);
     ~Impl();
-    void set_instance_attributes();
+    void set_sphere_attributes(GLuint divisor);
     void make_instanced_vao(GLuint& vao, GLuint& vbo, GLuint shape_vbo, int components);
     void make_sphere_vao(GLuint& vao, GLuint& vbo);
     void free_mesh(GpuMesh& m);
@@ -84,7 +86,7 @@ struct Renderer::Impl {
     void draw_mesh_faces(const GpuMesh& m, const MeshItem& item);
     void draw_meshes(const Frame& f, bool transparent);
     void begin_spheres(const Eigen::Matrix4f& model_view);
-    void draw_sphere_range(GLuint vao, GLuint vbo, uint32_t first, uint32_t count);
+    void draw_sphere_range(GLuint vao, uint32_t first, uint32_t count, GLuint mark_vbo = 0);
     void draw_sphere_items(const Frame& f);
 
     // Marks over the scene: collision pairs, trails, wire spheres, axis gizmo (draw_overlays.cpp).

@@ -34,11 +34,6 @@ Renderer::Impl::Impl(const ProcLoader& load) {
     renderer_name = name ? reinterpret_cast<const char*>(name) : "unknown";
     prog = detail::build_programs(gl);
 
-    const float corners[6] = {0, 2, -1.7320508f, -1, 1.7320508f, -1};
-    gl.GenBuffers(1, &impostor_vbo);
-    gl.BindBuffer(GL_ARRAY_BUFFER, impostor_vbo);
-    gl.BufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
-
     std::vector<float> circles;
     for (int c = 0; c < 4; ++c)
         for (int i = 0; i < kCircleSegments; ++i)
@@ -70,21 +65,22 @@ Renderer::Impl::~Impl() {
     for (auto& [id, m] : meshes) free_mesh(m);
     for (auto& [id, s] : sphere_sets) free_set(s);
     GLuint vaos[] = {line_vao, scratch_set_vao, wire_vao};
-    GLuint bufs[] = {impostor_vbo, circle_vbo, line_vbo, scratch_set_vbo, wire_vbo};
+    GLuint bufs[] = {circle_vbo, line_vbo, scratch_set_vbo, wire_vbo};
     gl.DeleteVertexArrays(3, vaos);
-    gl.DeleteBuffers(5, bufs);
+    gl.DeleteBuffers(4, bufs);
     detail::delete_programs(gl, prog);
 }
 
-// Per-instance centre/radius and colour from the bound GL_ARRAY_BUFFER of GpuSphere.
-void Renderer::Impl::set_instance_attributes() {
+// Centre/radius and colour from the bound GL_ARRAY_BUFFER of GpuSphere: per instance
+// (divisor 1) or per vertex (divisor 0).
+void Renderer::Impl::set_sphere_attributes(GLuint divisor) {
     gl.EnableVertexAttribArray(detail::kSphere);
     gl.VertexAttribPointer(detail::kSphere, 4, GL_FLOAT, GL_FALSE, sizeof(GpuSphere), nullptr);
-    gl.VertexAttribDivisor(detail::kSphere, 1);
+    gl.VertexAttribDivisor(detail::kSphere, divisor);
     gl.EnableVertexAttribArray(detail::kColor);
     gl.VertexAttribPointer(detail::kColor, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(GpuSphere),
                            reinterpret_cast<void*>(offsetof(GpuSphere, rgba)));
-    gl.VertexAttribDivisor(detail::kColor, 1);
+    gl.VertexAttribDivisor(detail::kColor, divisor);
 }
 
 // A VAO drawing the shape in `shape_vbo` (positions of `components` floats) once per
@@ -98,13 +94,24 @@ void Renderer::Impl::make_instanced_vao(GLuint& vao, GLuint& vbo, GLuint shape_v
     gl.VertexAttribPointer(detail::kPosition, components, GL_FLOAT, GL_FALSE, GLsizei(components * sizeof(float)),
                            nullptr);
     gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
-    set_instance_attributes();
+    set_sphere_attributes(1);
     gl.BindVertexArray(0);
 }
 
-// Sampling spheres: a screen-facing impostor triangle per instance.
+// Sampling spheres: a screen-facing impostor triangle per sphere, its three vertices each a
+// copy of the GpuSphere (the shader takes the corner from gl_VertexID). Not instanced:
+// llvmpipe runs its whole vertex pipeline once per instance, about a microsecond each.
 void Renderer::Impl::make_sphere_vao(GLuint& vao, GLuint& vbo) {
-    make_instanced_vao(vao, vbo, impostor_vbo, 2);
+    gl.GenVertexArrays(1, &vao);
+    gl.GenBuffers(1, &vbo);
+    gl.BindVertexArray(vao);
+    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
+    set_sphere_attributes(0);
+    gl.BindVertexArray(0);
+}
+
+void Renderer::Impl::push_impostor(std::vector<GpuSphere>& v, const GpuSphere& s) {
+    v.insert(v.end(), 3, s);
 }
 
 void Renderer::Impl::free_mesh(GpuMesh& m) {
@@ -116,19 +123,20 @@ void Renderer::Impl::free_mesh(GpuMesh& m) {
 void Renderer::Impl::free_set(GpuSphereSet& s) {
     gl.DeleteVertexArrays(1, &s.vao);
     gl.DeleteBuffers(1, &s.vbo);
+    if (s.mark_vbo) gl.DeleteBuffers(1, &s.mark_vbo);
 }
 
 void Renderer::Impl::upload_spheres(GpuSphereSet& s, const std::vector<SphereInstance>& spheres) {
     std::vector<GpuSphere> data;
-    data.reserve(spheres.size());
+    data.reserve(3 * spheres.size());
     s.bounds = Bounds{};
     for (const auto& x : spheres) {
-        data.push_back(to_gpu(x));
+        push_impostor(data, to_gpu(x));
         s.bounds.add_sphere(x.sphere.center, x.sphere.radius);
     }
     gl.BindBuffer(GL_ARRAY_BUFFER, s.vbo);
     gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(GpuSphere)), data.data(), GL_STATIC_DRAW);
-    s.count = uint32_t(data.size());
+    s.count = uint32_t(spheres.size());
 }
 
 void Renderer::Impl::stream_lines(const std::vector<LineVertex>& v) {

@@ -78,25 +78,30 @@ void main() {
 // Impostor: a triangle that covers the sphere's projection; the fragment shader casts the
 // view ray at the sphere and writes the hit's depth, so spheres intersect exactly.
 const char* kSphereVs = R"(#version 330 core
-layout(location = 0) in vec2 a_corner;
 layout(location = 2) in vec4 a_color;
 layout(location = 3) in vec4 a_sphere;
+layout(location = 4) in float a_mark;
 uniform mat4 u_model_view;
 uniform mat4 u_projection;
 uniform int u_ortho;
 uniform int u_override_color;
 uniform vec4 u_color;
 uniform float u_fade;
+uniform int u_use_mark;
+uniform vec4 u_mark_color;
 out vec3 v_quad;
 flat out vec3 v_center;
 flat out float v_radius;
 flat out vec4 v_color;
+// The impostor triangle around the unit disc; vertex k of a sphere takes corner k.
+const vec2 kCorners[3] = vec2[3](vec2(0.0, 2.0), vec2(-1.7320508, -1.0), vec2(1.7320508, -1.0));
 void main() {
+    vec2 a_corner = kCorners[gl_VertexID % 3];
     vec3 c = (u_model_view * vec4(a_sphere.xyz, 1.0)).xyz;
     float r = a_sphere.w;
     v_center = c;
     v_radius = r;
-    v_color = u_override_color == 1 ? u_color : a_color;
+    v_color = (u_use_mark == 1 && a_mark > 0.5) ? u_mark_color : u_override_color == 1 ? u_color : a_color;
     v_color.rgb = mix(v_color.rgb, vec3(0.84, 0.85, 0.87), u_fade); // dimmed: towards a light grey
     vec3 q;
     if (u_ortho == 1) {
@@ -256,6 +261,8 @@ Programs build_programs(const GlFunctions& gl) {
     p.sphere.override_color = loc(p.sphere.id, "u_override_color");
     p.sphere.fade = loc(p.sphere.id, "u_fade");
     p.sphere.color = loc(p.sphere.id, "u_color");
+    p.sphere.use_mark = loc(p.sphere.id, "u_use_mark");
+    p.sphere.mark_color = loc(p.sphere.id, "u_mark_color");
     p.circle.id = link(gl, kCircleVs, kCircleFs, "circle");
     p.circle.view = loc(p.circle.id, "u_view");
     p.circle.projection = loc(p.circle.id, "u_projection");

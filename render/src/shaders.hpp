@@ -10,6 +10,7 @@ enum Attrib : GLuint {
     kNormal = 1,   // vec3 mesh normal
     kColor = 2,    // vec4 per-vertex or per-instance colour
     kSphere = 3,   // vec4 per-instance centre (xyz) and radius (w)
+    kMark = 4,     // float per-instance mark (1 marked, 0 not; 0 when the array is off)
 };
 
 // Lit triangles.
@@ -28,6 +29,7 @@ struct LineProgram {
 struct SphereProgram {
     GLuint id = 0;
     GLint model_view = -1, projection = -1, ortho = -1, override_color = -1, color = -1, fade = -1;
+    GLint use_mark = -1, mark_color = -1;
 };
 
 // Wire circles of bounding spheres, instanced.

@@ -95,14 +95,20 @@ SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, N
 }
 
 std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all) {
+    // The spheres before and after the node's range, dimmed, then the range highlighted: each
+    // sphere drawn once (llvmpipe's cost is per sphere), the range last as a second item over
+    // all of them would be.
+    const uint32_t first = std::min(node.first, set_size);
+    const uint32_t end = first + std::min(node.count, set_size - first);
     std::vector<SphereItem> items;
-    if (show_all) {
-        SphereItem all;
-        all.spheres = set;
-        if (node.count < set_size) all.fade = kDimmedFade;
-        items.push_back(all);
-    }
-    items.push_back(SphereItem{set, Eigen::Affine3f::Identity(), node.first, node.count, highlight_color()});
+    auto dimmed = [&](uint32_t from, uint32_t to) {
+        SphereItem item{set, Eigen::Affine3f::Identity(), from, to - from, {}};
+        item.fade = kDimmedFade;
+        items.push_back(item);
+    };
+    if (show_all && first > 0) dimmed(0, first);
+    if (show_all && end < set_size) dimmed(end, set_size);
+    if (end > first) items.push_back(SphereItem{set, Eigen::Affine3f::Identity(), first, end - first, highlight_color()});
     return items;
 }
 

@@ -107,6 +107,29 @@ TEST(Selection, VisibleOnlyKeepsTheNearFaceOfABox) {
     EXPECT_EQ(visible_samples_in_rect(s, t, 1, v, inner, depth, 0.01f), front);
 }
 
+TEST(Selection, DepthMapOfAWindowEqualsTheFullMapWhereTheSelectionReadsIt) {
+    const TriangleMesh torus = make_torus(0.6, 0.25, 40, 24);
+    const SampleSet s = test::vertex_samples(torus);
+    SamplingTree t("t", uint32_t(s.size()));
+    const ViewProjection v = front_view();
+    const DepthMap full = render_depth(torus, v);
+    // Reversed and fractional corners, and one rectangle reaching past the view's edges.
+    for (const PixelRect r : {PixelRect{130.6f, 120.2f, 41.3f, 60.9f}, PixelRect{-20, 150.5f, 90.5f, 260}}) {
+        const DepthMap part = render_depth(torus, v, r);
+        const int x0 = int(std::floor(std::min(r.x0, r.x1))) - 1, x1 = int(std::floor(std::max(r.x0, r.x1))) + 1;
+        const int y0 = int(std::floor(std::min(r.y0, r.y1))) - 1, y1 = int(std::floor(std::max(r.y0, r.y1))) + 1;
+        size_t covered = 0;
+        for (int y = 0; y < v.height; ++y)
+            for (int x = 0; x < v.width; ++x) {
+                const bool read = x >= x0 && x <= x1 && y >= y0 && y <= y1;
+                EXPECT_EQ(part.at(x, y), read ? full.at(x, y) : INFINITY) << x << ", " << y;
+                covered += read && std::isfinite(full.at(x, y));
+            }
+        EXPECT_GT(covered, 100u);
+        EXPECT_EQ(visible_samples_in_rect(s, t, 1, v, r, part, 0.01f), visible_samples_in_rect(s, t, 1, v, r, full, 0.01f));
+    }
+}
+
 TEST(Selection, ModesReplaceAddSubtract) {
     const std::vector<uint32_t> cur{1, 3, 5}, hits{3, 4};
     EXPECT_EQ(combine_selection(cur, hits, SelectionMode::Replace), hits);

@@ -41,6 +41,11 @@ struct DepthMap {
 /// hide nothing that could be missed).
 DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view);
 
+/// Like render_depth, but draws only the pixels a rectangle selection reads: those inside
+/// `window` (GL window pixels) and one pixel around it; every other pixel stays +infinity.
+/// visible_samples_in_rect with the same rectangle gives the same result with either map.
+DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view, const PixelRect& window);
+
 /// Like samples_in_rect, but only samples the mesh does not hide: a sample counts as
 /// visible when its eye depth is at most `tolerance` (model units) behind the farthest
 /// surface in the 3x3 pixels around it, so a sample on the surface is never missed

@@ -5,11 +5,15 @@
 
 namespace spt {
 
-DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view) {
+namespace {
+
+// Draws the pixels [px0, px1] x [py0, py1] (inclusive, already inside the map) of the depth map.
+DepthMap draw_depth(const TriangleMesh& mesh, const ViewProjection& view, int px0, int py0, int px1, int py1) {
     DepthMap map;
     map.width = std::max(view.width, 1);
     map.height = std::max(view.height, 1);
     map.depth.assign(size_t(map.width) * size_t(map.height), INFINITY);
+    if (px0 > px1 || py0 > py1) return map;
     std::vector<Eigen::Vector3f> win(mesh.positions.size());
     for (size_t i = 0; i < win.size(); ++i) win[i] = project_to_window(view, mesh.positions[i]);
     // Screen-space interpolation: eye depth is affine in x, y for an orthographic view;
@@ -21,10 +25,11 @@ DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view) {
         if (view.perspective && (a.z() <= 0 || b.z() <= 0 || c.z() <= 0)) continue;
         const float area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
         if (area == 0 || !std::isfinite(area)) continue;
-        const int x0 = std::max(0, int(std::floor(std::min({a.x(), b.x(), c.x()}) - 0.5f)));
-        const int x1 = std::min(map.width - 1, int(std::ceil(std::max({a.x(), b.x(), c.x()}) - 0.5f)));
-        const int y0 = std::max(0, int(std::floor(std::min({a.y(), b.y(), c.y()}) - 0.5f)));
-        const int y1 = std::min(map.height - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}) - 0.5f)));
+        const int x0 = std::max(px0, int(std::floor(std::min({a.x(), b.x(), c.x()}) - 0.5f)));
+        const int x1 = std::min(px1, int(std::ceil(std::max({a.x(), b.x(), c.x()}) - 0.5f)));
+        const int y0 = std::max(py0, int(std::floor(std::min({a.y(), b.y(), c.y()}) - 0.5f)));
+        const int y1 = std::min(py1, int(std::ceil(std::max({a.y(), b.y(), c.y()}) - 0.5f)));
+        if (x0 > x1 || y0 > y1) continue;
         const float va = value(a.z()), vb = value(b.z()), vc = value(c.z());
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
@@ -40,6 +45,25 @@ DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view) {
             }
     }
     return map;
+}
+
+} // namespace
+
+DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view) {
+    return draw_depth(mesh, view, 0, 0, std::max(view.width, 1) - 1, std::max(view.height, 1) - 1);
+}
+
+DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view, const PixelRect& window) {
+    const int w = std::max(view.width, 1), h = std::max(view.height, 1);
+    // The pixels a sample inside the window reads: its own and its neighbours (visible_samples_in_rect).
+    const auto lo = [](float a, float b) { return std::floor(std::min(a, b)) - 1.0f; };
+    const auto hi = [](float a, float b) { return std::floor(std::max(a, b)) + 1.0f; };
+    const float fx0 = lo(window.x0, window.x1), fx1 = hi(window.x0, window.x1);
+    const float fy0 = lo(window.y0, window.y1), fy1 = hi(window.y0, window.y1);
+    if (!(fx0 <= fx1 && fy0 <= fy1)) return draw_depth(mesh, view, 0, 0, -1, -1); // NaN corners: nothing inside
+    const int x0 = int(std::clamp(fx0, 0.0f, float(w))), x1 = int(std::clamp(fx1, -1.0f, float(w - 1)));
+    const int y0 = int(std::clamp(fy0, 0.0f, float(h))), y1 = int(std::clamp(fy1, -1.0f, float(h - 1)));
+    return draw_depth(mesh, view, x0, y0, x1, y1);
 }
 
 } // namespace spt

@@ -23,7 +23,7 @@ std::vector<uint32_t> samples_below(const SamplingTree& tree, NodeId id) {
         while (a > id) a = parent_of(a);
         if (a == id) out.insert(out.end(), n->samples.begin(), n->samples.end());
     }
-    std::sort(out.begin(), out.end());
+    if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
     return out;
 }
 
@@ -81,7 +81,7 @@ std::vector<uint32_t> apply_stroke(const SampleSet& samples, const SamplingTree&
                                    const TriangleMesh* mesh) {
     const std::vector<uint32_t> hits =
         stroke.visible_only && mesh
-            ? visible_samples_in_rect(samples, tree, id, stroke.view, stroke.rect, render_depth(*mesh, stroke.view),
+            ? visible_samples_in_rect(samples, tree, id, stroke.view, stroke.rect, render_depth(*mesh, stroke.view, stroke.rect),
                                       visible_tolerance(*mesh))
             : samples_in_rect(samples, tree, id, stroke.view, stroke.rect);
     return combine_selection(current, hits, stroke.mode);

@@ -77,6 +77,7 @@ struct SphereItem {
     uint32_t count = UINT32_MAX;        ///< number of spheres; clamped to the set
     std::optional<Color> color;         ///< replaces the per-sphere colours when set
     float fade = 0;                     ///< 0: as coloured; up to 1: mixed towards light grey (dimmed)
+    std::optional<Color> marked_color;  ///< colour of the set's marked spheres (Renderer::set_sphere_marks) when set
 };
 
 /// A bounding sphere drawn as wire: its outline always on top, its three

@@ -48,6 +48,10 @@ public:
     /// Replaces the spheres of a set (e.g. new colours after a split); throws
     /// std::invalid_argument for an unknown handle.
     void update_spheres(SphereSetHandle set, const std::vector<SphereInstance>& spheres);
+    /// Marks spheres `marked` (indices into the set, any order; out-of-range ones ignored) and
+    /// unmarks the rest; SphereItem::marked_color draws marked spheres in one colour (e.g. a
+    /// selection) without a second set. Throws std::invalid_argument for an unknown handle.
+    void set_sphere_marks(SphereSetHandle set, const std::vector<uint32_t>& marked);
     /// Frees an uploaded sphere set; an unknown handle is ignored.
     void remove_spheres(SphereSetHandle set);
     /// Number of spheres in a set (0 for an unknown handle).
