@@ -145,9 +145,9 @@ void ViewerWindow::show_state() {
     step_label_->setText(QString("step %1 / %2%3  t = %4 s")
                              .arg(k)
                              .arg(history_->target())
-                             .arg(rec < history_->target() && !history_->finished()
-                                      ? QString(" (recorded %1)").arg(rec)
-                                      : QString())
+                             .arg(rec >= history_->target() ? QString()
+                                  : history_->finished()  ? QString(" (stopped at %1)").arg(rec)
+                                                          : QString(" (recorded %1)").arg(rec))
                              .arg(double(k) * history_->scene().dt, 0, 'f', 3));
     const auto s = history_->state(k);
     if (s) counters_->show_step(s->step ? &*s->step : nullptr, history_->effects(), state_hash(s->poses));
@@ -183,9 +183,10 @@ void ViewerWindow::tick() {
     const int rec = history_->recorded();
     const int want = std::min(view_->step() + advance, history_->target());
     if (want > rec) {
-        // Ahead of the recording: wait for it instead of skipping.
+        // Ahead of the recording: wait for it instead of skipping, or stop where it stopped.
         carry_ = 0;
         if (view_->step() < rec) set_step(rec);
+        else if (history_->finished()) set_playing(false);
         return;
     }
     carry_ -= advance;

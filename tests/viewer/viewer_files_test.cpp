@@ -99,3 +99,21 @@ TEST(ViewerFiles, BadSceneFilesAreRefusedWithTheFileAndTheProblem) {
     EXPECT_TRUE(w->last_error().contains("does_not_exist.json")) << w->last_error().toStdString();
     EXPECT_EQ(w->history(), good);
 }
+
+TEST(ViewerFiles, ASceneThatFailsMidwayKeepsWhatWasRecordedAndPlaybackStopsThere) {
+    TempDir dir("viewer-midway");
+    const std::string scenes = std::string(SPT_SOURCE_DIR) + "/resources/scenes";
+    // 2.5e15 a step: the fifth step would carry the box past 1e16, which is refused.
+    const std::string path = dir.file("runaway.json");
+    std::ofstream(path) << R"({"spt_scene": 1, "dt": 0.01, "steps": 50, "effects": ["motion"], "objects": [
+        {"name": "box", "model": ")" << scenes << R"(/crate.spt", "velocity": [2.5e17, 0, 0]}]})";
+    auto w = open_viewer(QString::fromStdString(path));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return w->history() && w->history()->finished() && !w->busy(); }, 60000));
+    EXPECT_EQ(w->history()->recorded(), 4);
+    EXPECT_TRUE(w->last_error().contains("leaves the representable range")) << w->last_error().toStdString();
+    EXPECT_TRUE(w->last_error().contains("'box'")) << w->last_error().toStdString();
+    w->set_speed(10);
+    w->set_playing(true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !w->playing(); }, 30000)) << "playback never stopped";
+    EXPECT_EQ(w->step(), 4);
+}

@@ -93,7 +93,7 @@ CostPoses cost_poses(const CollisionModel& a, const CollisionModel& b, const Cos
     std::mt19937_64 rng(o.seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-0.01, 0.01);
     // Reach: B's origin farther than this from A's leaves the two models apart.
-    const double reach = a.extent() + b.extent() + std::abs(a.origin().norm()) + std::abs(b.origin().norm());
+    const double reach = a.extent() + b.extent() + a.origin().norm() + b.origin().norm();
     for (int i = 0; i < o.random_poses; ++i) {
         const Eigen::Vector3d t = random_unit(rng) * reach * std::cbrt(unit(rng));
         out.random.push_back(Pose::from(t, random_rotation(rng)));
