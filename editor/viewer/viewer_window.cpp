@@ -4,12 +4,14 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSlider>
 #include <QStatusBar>
 #include <cmath>
+#include <sys/stat.h>
 
 namespace spt::editor {
 
@@ -37,6 +39,13 @@ ViewerWindow::ViewerWindow(const ViewerStart& start, QWidget* parent)
     reload_timer_.setInterval(300);
     connect(&reload_timer_, &QTimer::timeout, this, &ViewerWindow::reload);
     connect(&watcher_, &QFileSystemWatcher::fileChanged, this, [this](const QString&) { reload_timer_.start(); });
+    // The watcher can miss a change (a file replaced by rename at the wrong moment, or no inotify
+    // instance left: Qt then polls by time stamps): a stat of the file every second backs it up.
+    poll_timer_.setInterval(1000);
+    connect(&poll_timer_, &QTimer::timeout, this, [this] {
+        if (history_ && file_stamp(history_->path()) != watched_stamp_ && !reload_timer_.isActive()) reload_timer_.start();
+    });
+    poll_timer_.start();
 
     if (!start.file.isEmpty()) {
         open(start.file);
@@ -214,10 +223,17 @@ void ViewerWindow::set_overlays(const ViewerOverlays& overlays) {
     start_pending(std::make_unique<SceneHistory>(base->shared_scene(), overlays_.scene), kFollowShownStep, false);
 }
 
+std::array<int64_t, 4> ViewerWindow::file_stamp(const QString& path) {
+    struct stat st {};
+    if (::stat(QFile::encodeName(path).constData(), &st) != 0) return {-1, -1, -1, -1};
+    return {int64_t(st.st_ino), int64_t(st.st_size), int64_t(st.st_mtim.tv_sec), int64_t(st.st_mtim.tv_nsec)};
+}
+
 void ViewerWindow::watch(const QString& path) {
     // A file replaced by rename drops out of the watcher: add it again each time.
     if (!watcher_.files().isEmpty()) watcher_.removePaths(watcher_.files());
     if (QFileInfo::exists(path)) watcher_.addPath(path);
+    watched_stamp_ = file_stamp(path);
 }
 
 void ViewerWindow::show_error(const QString& text) {

@@ -9,6 +9,7 @@
 #include <QFileSystemWatcher>
 #include <QMainWindow>
 #include <QTimer>
+#include <array>
 #include <map>
 #include <memory>
 
@@ -92,6 +93,8 @@ private:
     void show_error(const QString& text);
     void show_message(const QString& text);
     void watch(const QString& path);
+    // The file's inode, size and modification time (seconds, nanoseconds); -1s if it is missing.
+    static std::array<int64_t, 4> file_stamp(const QString& path);
 
     SceneView* view_ = nullptr;
     CountersPanel* counters_ = nullptr;
@@ -113,7 +116,8 @@ private:
     QTimer play_timer_;
     QElapsedTimer clock_;
     QFileSystemWatcher watcher_;
-    QTimer reload_timer_;
+    QTimer reload_timer_, poll_timer_;
+    std::array<int64_t, 4> watched_stamp_{};
     QString last_message_, last_error_;
 };
 
