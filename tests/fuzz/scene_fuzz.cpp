@@ -19,19 +19,26 @@ namespace {
 
 using namespace spt;
 
-// A small box as a .spt file, written once; every object's model is replaced by it.
-const std::string& box_model() {
-    static const std::string path = [] {
-        const std::string p =
-            (std::filesystem::temp_directory_path() / ("spt-scene-fuzz-" + std::to_string(::getpid()) + ".spt")).string();
+// A small box as a .spt file, written once and removed at exit; every object's model is
+// replaced by it.
+struct BoxModel {
+    std::string path =
+        (std::filesystem::temp_directory_path() / ("spt-scene-fuzz-" + std::to_string(::getpid()) + ".spt")).string();
+    BoxModel() {
         const TriangleMesh box = make_box(Eigen::Vector3d(0.5, 0.25, 0.5), 1);
         ConvertOptions o;
         o.tolerance = 0.1;
-        save_spt(make_document(box, o), p);
-        std::atexit([] { std::filesystem::remove(box_model()); });
-        return p;
-    }();
-    return path;
+        save_spt(make_document(box, o), path);
+    }
+    ~BoxModel() {
+        std::error_code ignored;
+        std::filesystem::remove(path, ignored);
+    }
+};
+
+const std::string& box_model() {
+    static const BoxModel model;
+    return model.path;
 }
 
 bool finite(const Pose& p) { return p.translation.allFinite() && p.rotation.coeffs().allFinite(); }
