@@ -116,9 +116,8 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
         if (n == "node" || n == "wire" || n == "points")
             throw Error(ErrorKind::Usage, "--overlay " + n + " is for a mesh or .spt INPUT, not a scene");
     SceneOverlays o;
-    o.contacts = names.count("contacts"), o.normals = names.count("normals"), o.pairs = names.count("pairs");
-    o.ghost = names.count("ghost"), o.trails = names.count("trails"), o.spheres = names.count("spheres");
-    o.bounds = names.count("bounds"), o.broad = names.count("broad");
+    for (const std::string& n : names)
+        if (bool* flag = scene_overlay_flag(o, n)) *flag = true;
     const Scene scene = load_scene(a.input);
     Simulation sim(scene, effects_for_overlays(scene.effects, o));
     auto context = make_offscreen_context(a.backend, width, height);

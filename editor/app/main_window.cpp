@@ -32,23 +32,20 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     build_docks();
     build_menus();
 
-    progress_ = new QProgressBar;
-    progress_->setRange(0, 0);
-    progress_->setMaximumWidth(160);
-    progress_->hide();
-    cancel_ = new QPushButton("Cancel");
-    cancel_->hide();
-    statusBar()->addPermanentWidget(progress_);
-    statusBar()->addPermanentWidget(cancel_);
-    build_progress_ = new QProgressBar;
-    build_progress_->setRange(0, 0);
-    build_progress_->setMaximumWidth(160);
-    build_progress_->hide();
-    build_cancel_ = new QPushButton("Cancel build");
+    // A busy bar and its Cancel button in the status bar, hidden until work runs.
+    auto add_busy = [this](QProgressBar*& bar, QPushButton*& cancel, const QString& text) {
+        bar = new QProgressBar;
+        bar->setRange(0, 0);
+        bar->setMaximumWidth(160);
+        bar->hide();
+        cancel = new QPushButton(text);
+        cancel->hide();
+        statusBar()->addPermanentWidget(bar);
+        statusBar()->addPermanentWidget(cancel);
+    };
+    add_busy(progress_, cancel_, "Cancel");
+    add_busy(build_progress_, build_cancel_, "Cancel build");
     build_cancel_->setObjectName("cancel_build");
-    build_cancel_->hide();
-    statusBar()->addPermanentWidget(build_progress_);
-    statusBar()->addPermanentWidget(build_cancel_);
     // Core's builder cannot be interrupted: Cancel drops its result when it arrives.
     connect(build_cancel_, &QPushButton::clicked, this, [this] {
         build_cancelled_ = true;

@@ -124,13 +124,12 @@ bool MainWindow::offer_recovery() {
 }
 
 void MainWindow::add_recent(const QString& path) {
-    QSettings settings;
-    QStringList recent = settings.value("recent").toStringList();
+    QStringList recent = recent_files();
     const QString abs = QFileInfo(path).absoluteFilePath();
     recent.removeAll(abs);
     recent.prepend(abs);
     while (recent.size() > 10) recent.removeLast();
-    settings.setValue("recent", recent);
+    QSettings().setValue("recent", recent);
     refresh_recent();
 }
 
@@ -157,7 +156,7 @@ bool MainWindow::revert() {
 
 void MainWindow::refresh_recent() {
     recent_menu_->clear();
-    for (const QString& p : QSettings().value("recent").toStringList())
+    for (const QString& p : recent_files())
         recent_menu_->addAction(p, this, [this, p] { open_file(p); });
     recent_menu_->setEnabled(!recent_menu_->isEmpty());
 }

@@ -14,6 +14,12 @@ struct ViewerOverlays {
     render::SceneOverlays scene; ///< contacts, normals, pairs, ghost, trails, spheres, bounds, broad
     bool grid = true;            ///< ground grid
     bool axes = true;            ///< axis gizmo
+    /// The flag of overlay `name` as `spt render --overlay` spells it, or nullptr for another name.
+    bool* flag(std::string_view name) {
+        if (name == "grid") return &grid;
+        if (name == "axes") return &axes;
+        return render::scene_overlay_flag(scene, name);
+    }
 };
 
 /// One view of a recorded scene.

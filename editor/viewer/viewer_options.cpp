@@ -1,6 +1,5 @@
 // Parsing spt-viewer's command line.
 #include "viewer_options.hpp"
-#include <set>
 
 namespace spt::editor {
 
@@ -40,16 +39,7 @@ ViewerCommandLine parse_viewer_arguments(const QStringList& args) {
             ViewerOverlays o;
             o.grid = o.axes = false;
             for (const QString& n : v.split(',', Qt::SkipEmptyParts)) {
-                if (n == "contacts") o.scene.contacts = true;
-                else if (n == "normals") o.scene.normals = true;
-                else if (n == "pairs") o.scene.pairs = true;
-                else if (n == "ghost") o.scene.ghost = true;
-                else if (n == "trails") o.scene.trails = true;
-                else if (n == "spheres") o.scene.spheres = true;
-                else if (n == "bounds") o.scene.bounds = true;
-                else if (n == "broad") o.scene.broad = true;
-                else if (n == "grid") o.grid = true;
-                else if (n == "axes") o.axes = true;
+                if (bool* flag = o.flag(n.toStdString())) *flag = true;
                 else if (n != "none") return fail(QString("--overlay %1: unknown overlay '%2'").arg(v, n));
             }
             if (v.isEmpty()) return fail("--overlay: expected a comma-separated list");

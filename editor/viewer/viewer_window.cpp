@@ -208,12 +208,7 @@ void ViewerWindow::set_overlays(const ViewerOverlays& overlays) {
     view_->set_overlays(overlays_);
     for (auto& [name, action] : overlay_actions_) {
         const QSignalBlocker block(action);
-        const render::SceneOverlays& o = overlays_.scene;
-        const std::map<QString, bool> on = {{"contacts", o.contacts}, {"normals", o.normals}, {"pairs", o.pairs},
-                                            {"ghost", o.ghost},       {"trails", o.trails},   {"spheres", o.spheres},
-                                            {"bounds", o.bounds},     {"broad", o.broad},     {"grid", overlays_.grid},
-                                            {"axes", overlays_.axes}};
-        action->setChecked(on.at(name));
+        action->setChecked(*overlays_.flag(name));
     }
     // Only what an overlay needs is simulated: record again when the effects differ.
     const SceneHistory* base = pending_ && pending_->loaded() ? pending_.get() : history_.get();

@@ -103,7 +103,7 @@ private:
     QComboBox* speed_box_ = nullptr;
     QComboBox* view_box_ = nullptr;
     QAction* play_action_ = nullptr;
-    std::map<QString, QAction*> overlay_actions_;
+    std::map<std::string, QAction*> overlay_actions_; // by the name `spt render --overlay` uses
     std::unique_ptr<SceneHistory> history_, pending_;
     // The step a pending history must reach before it replaces the shown one, or
     // kFollowShownStep: the step shown when it gets there (reload, re-recording while playing).

@@ -121,11 +121,7 @@ void ViewerWindow::build_toolbar() {
 
 void ViewerWindow::overlay_toggled() {
     ViewerOverlays o = overlays_;
-    auto on = [this](const char* name) { return overlay_actions_.at(name)->isChecked(); };
-    o.scene.contacts = on("contacts"), o.scene.normals = on("normals"), o.scene.pairs = on("pairs");
-    o.scene.ghost = on("ghost"), o.scene.trails = on("trails"), o.scene.spheres = on("spheres");
-    o.scene.bounds = on("bounds"), o.scene.broad = on("broad");
-    o.grid = on("grid"), o.axes = on("axes");
+    for (const auto& [name, action] : overlay_actions_) *o.flag(name) = action->isChecked();
     set_overlays(o);
 }
 

@@ -42,6 +42,16 @@ constexpr Color kBroadColor{0.95f, 0.55f, 0.05f, 1};
 
 } // namespace
 
+bool* scene_overlay_flag(SceneOverlays& o, std::string_view name) {
+    const std::pair<std::string_view, bool*> flags[] = {{"contacts", &o.contacts}, {"normals", &o.normals},
+                                                        {"pairs", &o.pairs},       {"ghost", &o.ghost},
+                                                        {"trails", &o.trails},     {"spheres", &o.spheres},
+                                                        {"bounds", &o.bounds},     {"broad", &o.broad}};
+    for (const auto& [n, flag] : flags)
+        if (n == name) return flag;
+    return nullptr;
+}
+
 EffectSet effects_for_overlays(EffectSet e, const SceneOverlays& o) {
     if (o.contacts || o.normals) e.add(Effect::Contacts), e.add(Effect::Depth);
     if (o.pairs) e.add(Effect::Contacts), e.add(Effect::Pairs);

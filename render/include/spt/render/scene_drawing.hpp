@@ -5,6 +5,7 @@
 #include "spt/render/frame.hpp"
 #include "spt/render/renderer.hpp"
 #include "spt/simulation.hpp"
+#include <string_view>
 #include <vector>
 
 namespace spt::render {
@@ -20,6 +21,10 @@ struct SceneOverlays {
     bool bounds = false;   ///< each object's bounding sphere (its broad-phase sphere at rest), wire
     bool broad = false;    ///< the broad-phase spheres of the step (swept over it with ccd), wire
 };
+
+/// The flag of scene overlay `name` in `overlays`, spelled as `spt render --overlay` spells it
+/// (contacts, normals, pairs, ghost, trails, spheres, bounds, broad); nullptr for any other name.
+bool* scene_overlay_flag(SceneOverlays& overlays, std::string_view name);
 
 /// The effects a simulation needs so that `overlays` can be drawn: `scene` plus contacts and
 /// depth for contacts and normals, plus contacts and pairs for pairs. Nothing else is added.
