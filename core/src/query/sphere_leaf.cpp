@@ -1,0 +1,131 @@
+// The bottom of the sphere walk: B's leaf spheres moved into A's frame, a leaf pair's
+// sphere tests, and the recording of what collides.
+#include "query/lanes.hpp"
+#include "geometry/sphere_block.hpp"
+#include <cmath>
+#include <cstring>
+
+namespace spt {
+
+using detail::b_to_a;
+using detail::movemask;
+using detail::splat;
+using detail::v4f;
+
+Eigen::Vector3f QueryRun::b_node_centre(uint32_t j) const {
+    const CompactNode& n = B.tree().nodes()[j];
+    return f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t;
+}
+
+void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
+    const CompactNode& n = B.tree().nodes()[j];
+    const float* c = B.tree().centres(n);
+    const float *bx = c, *by = c + n.count, *bz = c + 2 * n.count;
+    // Four spheres at a time; the last group reads past the block into the next one (or
+    // the array's padding) and writes up to 3 floats past count, which callers allow.
+    for (uint32_t k = 0; k < n.count; k += 4) {
+        v4f px, py, pz;
+        std::memcpy(&px, bx + k, sizeof px), std::memcpy(&py, by + k, sizeof py), std::memcpy(&pz, bz + k, sizeof pz);
+        b_to_a(f, px, py, pz);
+        std::memcpy(x + k, &px, sizeof px), std::memcpy(y + k, &py, sizeof py), std::memcpy(z + k, &pz, sizeof pz);
+    }
+}
+
+void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
+                      const Eigen::Vector3f& cb, float reach, float ra, float d2) {
+    const float dist = std::sqrt(d2);
+    const float depth = reach - dist;
+    if (o.mode == QueryMode::All) {
+        s.pairs.push_back({a, b, node_a, node_b, depth, reach});
+        return;
+    }
+    if (have_best && !(depth > res.deepest.depth)) return;
+    have_best = true;
+    Contact& c = res.deepest;
+    c.depth = depth;
+    c.a = a, c.b = b;
+    const Eigen::Vector3d d = (cb - ca).cast<double>();
+    c.normal = dist > 0 ? Eigen::Vector3d(d / d.norm()) : Eigen::Vector3d::UnitX();
+    c.point = A.origin() + ca.cast<double>() + c.normal * (double(ra) - 0.5 * depth);
+}
+
+uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca) {
+    const CompactTree &ta = A.tree(), &tb = B.tree();
+    const CompactNode &na = ta.nodes()[i], &nb = tb.nodes()[j];
+    // Lazy update: B's spheres are moved only here, for the leaf the walk reached,
+    // into a small buffer that stays in L1 (a whole-model copy would not).
+    const size_t lb = s.moved_b.size() / 3;
+    float *bx = s.moved_b.data(), *by = bx + lb, *bz = by + lb;
+    move_leaf(j, bx, by, bz);
+    const float* block_a = ta.centres(na);
+    const float *ax = block_a, *ay = block_a + na.count, *az = block_a + 2 * na.count;
+    uint32_t count_a = na.count, count_b = nb.count;
+    const bool cull = o.normal_culling;
+    if (cull) {
+        // u: from A's node towards B's node. A keeps n.u >= -cos; B, in its own frame, n.(-u) >= -cos.
+        // A two-sided sphere faces both ways: always kept.
+        Eigen::Vector3f u = b_node_centre(j) - ca;
+        const float len = u.norm();
+        const float limit = -o.cull_cos * 127.0f; // normals are snorm8
+        const size_t la = s.ia.size();
+        float *gax = s.ga.data(), *gay = gax + la, *gaz = gay + la;
+        float *gbx = s.gb.data(), *gby = gbx + lb, *gbz = gby + lb;
+        if (len > 0) {
+            u /= len;
+            const Eigen::Vector3f ub = -(f.R.transpose() * u);
+            const uint8_t *two_a = ta.two_sided(), *two_b = tb.two_sided();
+            count_a = 0;
+            for (uint32_t p = 0, k = na.first; p < na.count; ++p, ++k)
+                if ((two_a && two_a[k]) || ta.nx()[k] * u.x() + ta.ny()[k] * u.y() + ta.nz()[k] * u.z() >= limit)
+                    gax[count_a] = ax[p], gay[count_a] = ay[p], gaz[count_a] = az[p], s.ia[count_a++] = k;
+            count_b = 0;
+            for (uint32_t q = 0, k = nb.first; q < nb.count; ++q, ++k)
+                if ((two_b && two_b[k]) || tb.nx()[k] * ub.x() + tb.ny()[k] * ub.y() + tb.nz()[k] * ub.z() >= limit)
+                    gbx[count_b] = bx[q], gby[count_b] = by[q], gbz[count_b] = bz[q], s.ib[count_b++] = k;
+            ax = gax, ay = gay, az = gaz, bx = gbx, by = gby, bz = gbz;
+        } else {
+            for (uint32_t k = 0; k < na.count; ++k) s.ia[k] = na.first + k;
+            for (uint32_t k = 0; k < nb.count; ++k) s.ib[k] = nb.first + k;
+        }
+        if (count_a == 0 || count_b == 0) return 0;
+    }
+    res.counters.sphere_tests += uint64_t(count_a) * count_b;
+    const float reach = na.ss_radius + nb.ss_radius + o.inflate;
+    const float limit2 = reach * reach;
+    float* d2 = s.d2.data();
+    const float best = sphere_block_d2(ax, ay, az, count_a, bx, by, bz, count_b, d2);
+    if (!(best < limit2)) return 0;
+    const uint32_t stride = sphere_block_stride(count_b);
+    auto sphere_a = [&](uint32_t k) { return cull ? s.ia[k] : na.first + k; };
+    auto sphere_b = [&](uint32_t k) { return cull ? s.ib[k] : nb.first + k; };
+    auto centre = [](const float* x, const float* y, const float* z, uint32_t k) { return Eigen::Vector3f(x[k], y[k], z[k]); };
+    if (o.mode != QueryMode::All) { // any and deepest want only the closest pair (the first, on ties)
+        for (uint32_t p = 0; p < count_a; ++p)
+            for (uint32_t q = 0; q < count_b; ++q)
+                if (d2[size_t(p) * stride + q] == best) {
+                    record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach,
+                           na.ss_radius, best);
+                    return 1;
+                }
+    }
+    // Four distances a compare and the hits walked as mask bits: a branch per distance
+    // mispredicts on every boundary of the overlap. Lanes past count_b hold +inf.
+    uint32_t hits = 0;
+    const v4f lim = splat(limit2);
+    for (uint32_t p = 0; p < count_a; ++p) {
+        const float* row = d2 + size_t(p) * stride;
+        for (uint32_t q0 = 0; q0 < stride; q0 += 4) {
+            v4f v;
+            std::memcpy(&v, row + q0, sizeof v);
+            for (unsigned bits = unsigned(movemask(v < lim)); bits; bits &= bits - 1) {
+                const uint32_t q = q0 + uint32_t(__builtin_ctz(bits));
+                ++hits;
+                record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach,
+                       na.ss_radius, row[q]);
+            }
+        }
+    }
+    return hits;
+}
+
+} // namespace spt
