@@ -119,7 +119,7 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
     for (const std::string& n : names)
         if (bool* flag = scene_overlay_flag(o, n)) *flag = true;
     const Scene scene = load_scene(a.input);
-    Simulation sim(scene, effects_for_overlays(scene.effects, o));
+    Simulation sim(scene, effects_for_overlays(scene.effects, o), hardware_threads());
     auto context = make_offscreen_context(a.backend, width, height);
     auto renderer = std::make_unique<Renderer>(context->loader());
     const SceneDrawing drawing(*renderer, sim.scene());

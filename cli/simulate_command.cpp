@@ -13,7 +13,7 @@ namespace {
 struct SimulateArgs {
     std::string scene, effects, output, contacts;
     int64_t steps = -1;
-    int threads = 1;
+    int threads = hardware_threads();
     bool effects_given = false;
 };
 
@@ -117,7 +117,7 @@ Action add_simulate_command(CLI::App& app) {
         ->each([a](const std::string&) { a->effects_given = true; });
     c->add_option("-o,--output", a->output, "Per-step CSV (default: stdout)");
     c->add_option("--contacts", a->contacts, "CSV of every colliding object pair of every step");
-    c->add_option("--threads", a->threads, "Threads for the pair queries (the results do not depend on it)")
+    c->add_option("--threads", a->threads, "Threads for the pair queries and the response (default: the machine's; the results do not depend on it)")
         ->check(CLI::Range(1, 256));
     return [a] { return run_simulate(*a); };
 }

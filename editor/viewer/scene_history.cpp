@@ -73,7 +73,7 @@ void SceneHistory::run(render::SceneOverlays overlays, bool load) {
         if (load) scene_ = std::make_shared<const Scene>(load_scene(path_.toStdString()));
         effects_ = render::effects_for_overlays(scene_->effects, overlays);
         target_ = scene_->steps;
-        Simulation sim(*scene_, effects_);
+        Simulation sim(*scene_, effects_, hardware_threads());
         record(sim, nullptr);
         loaded_ = true;
         QMetaObject::invokeMethod(this, [this] { emit sceneLoaded(), emit progressed(0); }, Qt::QueuedConnection);

@@ -198,6 +198,57 @@ TEST(Simulation, BacktrackResponseLeavesNoPairDeeperThanItsTolerance) {
     EXPECT_GT(responses, 0u);
 }
 
+// The response runs pairs sharing no dynamic object in parallel and reuses depth's sphere pairs;
+// the outcome must be that of the documented rule: pairs one after the other in (a, b) order,
+// each seeing the moves of those before it, each backtracked by core `backtrack` from scratch.
+TEST(Simulation, ResponseEqualsPairsOneAfterTheOtherInPairOrderOnEveryThreadCount) {
+    const spt::test::SceneDir dir;
+    const Scene s = scene(dir, ball_cloud(27, 7));
+    for (int threads : {1, 2, 4}) {
+        Simulation sim(s, parse_effect_list("motion,gravity,contacts,depth,response", "test"), threads);
+        QueryScratch scratch;
+        size_t shared = 0; // contacts whose dynamic object an earlier contact of the step also has
+        for (int step = 0; step < 60; ++step) {
+            const std::vector<Pose> before = sim.poses();
+            std::vector<Eigen::Vector3d> v = sim.velocities();
+            const StepResult& r = sim.step();
+            std::vector<Pose> p = sim.ghost_poses();
+            std::vector<int> seen(p.size(), 0);
+            for (size_t i = 0; i < v.size(); ++i)
+                if (s.objects[i].motion == MotionKind::Velocity) v[i] += s.gravity * s.dt;
+            for (const PairContact& c : r.contacts) {
+                const bool da = s.objects[c.a].motion == MotionKind::Velocity;
+                const bool db = s.objects[c.b].motion == MotionKind::Velocity;
+                if (!da && !db) continue;
+                shared += (da && seen[c.a]++) || (db && seen[c.b]++);
+                const double wa = da ? (db ? 0.5 : 1.0) : 0.0, wb = db ? (da ? 0.5 : 1.0) : 0.0;
+                Eigen::Vector3d motion = (p[c.b].translation - before[c.b].translation) -
+                                         (p[c.a].translation - before[c.a].translation);
+                const CollisionModel &ma = *s.objects[c.a].model, &mb = *s.objects[c.b].model;
+                if (!(motion.norm() > 1e-12 * (ma.extent() + mb.extent()))) motion = -c.normal;
+                const double d = backtrack(ma, p[c.a], mb, p[c.b], motion, {}, BacktrackRule::Exact, scratch).distance;
+                if (d > 0) {
+                    const Eigen::Vector3d away = motion.normalized() * d;
+                    p[c.b].translation -= wb * away;
+                    p[c.a].translation += wa * away;
+                }
+                const Eigen::Vector3d va = da ? v[c.a] : Eigen::Vector3d::Zero(), vb = db ? v[c.b] : Eigen::Vector3d::Zero();
+                const double vn = (vb - va).dot(c.normal);
+                if (vn < 0) {
+                    const Eigen::Vector3d impulse = -(1 + s.response.restitution) * vn * c.normal;
+                    if (db) v[c.b] += wb * impulse;
+                    if (da) v[c.a] -= wa * impulse;
+                }
+            }
+            for (size_t i = 0; i < p.size(); ++i) {
+                ASSERT_EQ(sim.poses()[i].translation, p[i].translation) << "threads " << threads << " step " << step << " object " << i;
+                ASSERT_EQ(sim.velocities()[i], v[i]) << "threads " << threads << " step " << step << " object " << i;
+            }
+        }
+        EXPECT_GT(shared, 10u) << "the cloud should give pairs that wait for earlier ones";
+    }
+}
+
 // A small fast ball falls onto a thin plate; between two steps it moves 1 unit, 50 plate thicknesses.
 const char* kThinWall = R"({"spt_scene": 1, "dt": 0.01, "objects": [
     {"name": "wall", "model": "plate.obj", "static": true},

@@ -53,6 +53,9 @@ struct StepResult {
 /// 64-bit FNV-1a over every pose's translation x, y, z and rotation w, x, y, z as double bits, in order.
 uint64_t state_hash(const std::vector<Pose>& poses);
 
+/// Threads worth giving a simulation on this machine: its hardware threads, at least 1.
+int hardware_threads();
+
 /// The scene in motion.
 class Simulation {
 public:
@@ -86,6 +89,7 @@ private:
     void move();
     void run_contacts(StepCounters& c);
     void respond(StepCounters& c);
+    bool respond_pair(const PairContact& pc, const std::vector<SpherePair>& start_pairs, QueryScratch& scratch);
     Scene scene_;
     EffectSet effects_;
     int threads_;
@@ -95,6 +99,9 @@ private:
     std::vector<BroadSphere> spheres_;
     BroadPhase broad_;
     std::vector<QueryScratch> scratch_; // one per thread
+    // Per contact of the step: the sphere pairs depth's `all` query found, which are the
+    // response's first backtrack query when the pair's poses have not changed since.
+    std::vector<std::vector<SpherePair>> start_pairs_;
     StepResult result_;
 };
 

@@ -1,5 +1,6 @@
 // Backtrack along the motion (paper §3-4-3, made exact for the sphere model).
 #include "spt/response.hpp"
+#include "query/backtrack_from.hpp"
 #include "query/query_run.hpp"
 #include <algorithm>
 #include <cmath>
@@ -56,50 +57,46 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
     return r;
 }
 
-} // namespace
-
-BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
-                                   const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
-                                   BacktrackRule rule, QueryScratch& scratch) {
+// Rule Exact at levels bounds and spheres. Every pair overlapping at s keeps overlapping until
+// its own exit root, so the model collides on [s, largest root): jump there and look again.
+// `start_pairs`: the pairs at s = 0 when the caller has them (then that query is not run).
+BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                              const Eigen::Vector3d& back, const QueryOptions& options,
+                              const std::vector<SpherePair>* start_pairs, QueryScratch& scratch) {
     BacktrackResult r;
-    // Any finite non-zero motion gives a direction: scaled by its largest component before
-    // normalising, so 1e-300 and 1e300 are directions like 1.
-    const double big = motion_in_a.cwiseAbs().maxCoeff();
-    if (!(big > 0) || !std::isfinite(big)) return r; // no motion: no direction to move back along
-    const Eigen::Vector3d back = -(motion_in_a / big).normalized();
     QueryOptions q = options;
-    if (rule == BacktrackRule::Paper) {
-        q.mode = QueryMode::Deepest;
-        const QueryResult res = collide_relative(a, b, b_in_a, q, scratch);
-        r.queries = 1;
-        r.distance = res.collide ? std::max(0.0, res.deepest.depth) : 0;
-        return r;
-    }
-    if (options.level == QueryLevel::Exact) return by_bisection(a, b, b_in_a, back, options, scratch);
     q.mode = QueryMode::All;
     const bool bounds = options.level == QueryLevel::Bounds;
     double s = 0;
-    // Every pair overlapping at s keeps overlapping until its own exit root, so the
-    // model collides on [s, largest root): jump there and look again.
     for (int it = 0; it < 100000; ++it) {
         Pose p = b_in_a;
         p.translation += s * back;
-        ++r.queries;
-        if (!collide_relative(a, b, p, q, scratch).collide) {
-            r.distance = s;
-            return r;
+        const std::vector<SpherePair>* pairs = it == 0 ? start_pairs : nullptr;
+        if (!pairs) {
+            ++r.queries;
+            if (!collide_relative(a, b, p, q, scratch).collide) {
+                r.distance = s;
+                return r;
+            }
+            // Held by containment alone (no sphere pairs to solve): step out instead.
+            if (scratch.pairs().empty()) return by_bisection(a, b, b_in_a, back, q, scratch, s, r.queries);
+            pairs = &scratch.pairs();
         }
-        // Held by containment alone (no sphere pairs to solve): step out instead.
-        if (scratch.pairs().empty()) return by_bisection(a, b, b_in_a, back, q, scratch, s, r.queries);
         const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
         const Eigen::Vector3d t = local_translation(a, b, rot, p.translation); // the centres are local
+        // B's centres moved once each, not once a pair (a sphere is in many pairs).
+        detail::SphereMemo<Eigen::Vector3d>& moved = scratch.buffers().memo_b;
+        moved.start(std::max(b.tree().nodes().size(), b.tree().sphere_count()));
         double step = 0, reach_max = 0;
-        for (const SpherePair& pair : scratch.pairs()) {
+        for (const SpherePair& pair : *pairs) {
             const Eigen::Vector3d ca =
                 bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
-            const Eigen::Vector3d cb0 =
-                bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
-            const Eigen::Vector3d w = rot * cb0 + t - ca;
+            const Eigen::Vector3d& cb = moved.get(pair.b, [&] {
+                const Eigen::Vector3d cb0 =
+                    bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
+                return Eigen::Vector3d(rot * cb0 + t);
+            });
+            const Eigen::Vector3d w = cb - ca;
             const double reach = pair.reach, half_b = w.dot(back), c = w.squaredNorm() - reach * reach;
             step = std::max(step, -half_b + std::sqrt(std::max(0.0, half_b * half_b - c)));
             reach_max = std::max(reach_max, reach);
@@ -113,6 +110,34 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
     return r;
 }
 
+// Any finite non-zero motion gives a direction: scaled by its largest component before
+// normalising, so 1e-300 and 1e300 are directions like 1. Zero without one.
+Eigen::Vector3d back_direction(const Eigen::Vector3d& motion) {
+    const double big = motion.cwiseAbs().maxCoeff();
+    if (!(big > 0) || !std::isfinite(big)) return Eigen::Vector3d::Zero();
+    return -(motion / big).normalized();
+}
+
+} // namespace
+
+BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                                   const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
+                                   BacktrackRule rule, QueryScratch& scratch) {
+    BacktrackResult r;
+    const Eigen::Vector3d back = back_direction(motion_in_a);
+    if (back.isZero()) return r; // no motion: no direction to move back along
+    QueryOptions q = options;
+    if (rule == BacktrackRule::Paper) {
+        q.mode = QueryMode::Deepest;
+        const QueryResult res = collide_relative(a, b, b_in_a, q, scratch);
+        r.queries = 1;
+        r.distance = res.collide ? std::max(0.0, res.deepest.depth) : 0;
+        return r;
+    }
+    if (options.level == QueryLevel::Exact) return by_bisection(a, b, b_in_a, back, options, scratch);
+    return by_exit_roots(a, b, b_in_a, back, options, nullptr, scratch);
+}
+
 BacktrackResult backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                           const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
                           QueryScratch& scratch) {
@@ -124,3 +149,17 @@ BacktrackResult backtrack(const CollisionModel& a, const Pose& pose_a, const Col
 }
 
 } // namespace spt
+
+namespace spt::detail {
+
+BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,
+                                     const Pose& pose_b, const Eigen::Vector3d& motion, const QueryOptions& options,
+                                     const std::vector<SpherePair>& start_pairs, QueryScratch& scratch) {
+    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
+    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
+    const Eigen::Vector3d back = back_direction(ua.rotation.conjugate() * motion);
+    if (back.isZero()) return {};
+    return by_exit_roots(a, b, relative_pose(ua, ub), back, options, &start_pairs, scratch);
+}
+
+} // namespace spt::detail

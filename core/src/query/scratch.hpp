@@ -3,6 +3,7 @@
 #include "spt/query_scratch.hpp"
 #include "geometry/obb.hpp"
 #include <Eigen/Core>
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,26 @@ struct NodePairVisit {
     float ca[3], cb[3];
     float ra, rb; // radii the pair was tested with
     float d2;     // squared centre distance
+};
+
+// A value per sphere (or node), computed at most once between two start() calls: a list of
+// sphere pairs names each sphere many times.
+template <class T>
+struct SphereMemo {
+    std::vector<T> value;
+    std::vector<uint32_t> stamp;
+    uint32_t epoch = 0;
+    // Forgets every value; room for indices below n.
+    void start(size_t n) {
+        if (value.size() < n) value.resize(n), stamp.resize(n, 0);
+        if (++epoch == 0) std::fill(stamp.begin(), stamp.end(), 0), epoch = 1;
+    }
+    // The value of index k, made by f() the first time it is asked for.
+    template <class F>
+    const T& get(uint32_t k, F&& f) {
+        if (stamp[k] != epoch) stamp[k] = epoch, value[k] = f();
+        return value[k];
+    }
 };
 
 struct ScratchBuffers {
@@ -33,6 +54,8 @@ struct ScratchBuffers {
     std::vector<SpherePair> pairs;
     std::vector<TrianglePair> tri_pairs;
     uint32_t epoch = 0;
+    SphereMemo<Eigen::Vector3d> memo_a, memo_b;   // per-pair-list values of A's and B's spheres
+    SphereMemo<Eigen::Vector3d> memo_na, memo_nb; // a second value of each (a normal)
 };
 
 } // namespace spt::detail

@@ -1,5 +1,6 @@
 // Depth, contact point and contact normal of a colliding pair, from one `all` query.
 #include "scene/pair_work.hpp"
+#include "query/scratch.hpp"
 #include <algorithm>
 
 namespace spt::detail {
@@ -18,13 +19,18 @@ Eigen::Vector3d centre(const CollisionModel& m, const Pose& p, uint32_t node, ui
 
 Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
                                const std::vector<SpherePair>& pairs, const Eigen::Vector3d& fallback, bool a_moves,
-                               bool b_moves) {
+                               bool b_moves, QueryScratch& scratch) {
     const bool use_a = !a_moves || b_moves, use_b = !b_moves || a_moves; // what is struck gives the normal
+    // World centres and normals made once a sphere, not once a pair (a sphere is in many pairs).
+    detail::ScratchBuffers& m = scratch.buffers();
+    m.memo_a.start(a.tree().sphere_count()), m.memo_na.start(a.tree().sphere_count());
+    m.memo_b.start(b.tree().sphere_count()), m.memo_nb.start(b.tree().sphere_count());
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     for (const SpherePair& p : pairs) {
-        const Eigen::Vector3d ab = centre(b, pb, p.node_b, p.b) - centre(a, pa, p.node_a, p.a);
-        const Eigen::Vector3d na = pa.rotate(surface_normal(a.tree(), p.a));
-        const Eigen::Vector3d nb = pb.rotate(surface_normal(b.tree(), p.b));
+        const Eigen::Vector3d ab = m.memo_b.get(p.b, [&] { return centre(b, pb, p.node_b, p.b); }) -
+                                   m.memo_a.get(p.a, [&] { return centre(a, pa, p.node_a, p.a); });
+        const Eigen::Vector3d& na = m.memo_na.get(p.a, [&] { return pa.rotate(surface_normal(a.tree(), p.a)); });
+        const Eigen::Vector3d& nb = m.memo_nb.get(p.b, [&] { return pb.rotate(surface_normal(b.tree(), p.b)); });
         // A normal gives the axis; its side is the one facing the other sphere: in a thin part the
         // spheres of the far face poke through the near one and stand for it.
         if (use_a) n += double(p.depth) * (na.dot(ab) >= 0 ? na : Eigen::Vector3d(-na));
@@ -72,7 +78,7 @@ void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionMod
     const Eigen::Vector3d line = (cb - ca).norm() > 0 ? Eigen::Vector3d((cb - ca).normalized()) : Eigen::Vector3d::UnitX();
     const double ra = a.tree().nodes()[best->node_a].ss_radius;
     w.point = ca + line * (ra - 0.5 * double(best->depth)); // middle of the overlap
-    w.normal = contact_normal(a, pa, b, pb, pairs, line, a_dynamic, b_dynamic);
+    w.normal = contact_normal(a, pa, b, pb, pairs, line, a_dynamic, b_dynamic, scratch);
 }
 
 } // namespace spt::detail

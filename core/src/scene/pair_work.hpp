@@ -27,9 +27,10 @@ void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionMod
 /// Contact normal (world, unit, from A towards B): the depth-weighted sum of the surface normals
 /// of the overlapping sphere pairs `pairs`, n_a - n_b, each turned to face the other sphere; so a
 /// flat face gives its exact face normal. `a_moves` / `b_moves` false: that object's surface
-/// alone gives it (what is struck is fixed). `fallback` when the sum vanishes.
+/// alone gives it (what is struck is fixed). `fallback` when the sum vanishes. `scratch`: working
+/// memory only (its pair list is not read, so `pairs` may be it).
 Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
                                const std::vector<SpherePair>& pairs, const Eigen::Vector3d& fallback, bool a_moves,
-                               bool b_moves);
+                               bool b_moves, QueryScratch& scratch);
 
 } // namespace spt::detail

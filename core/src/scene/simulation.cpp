@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <thread>
 
 namespace spt {
 namespace {
@@ -28,6 +29,8 @@ void add(QueryCounters& to, const QueryCounters& c) {
 }
 
 } // namespace
+
+int hardware_threads() { return int(std::max(1u, std::thread::hardware_concurrency())); }
 
 uint64_t state_hash(const std::vector<Pose>& poses) {
     uint64_t h = 0xcbf29ce484222325ull;
@@ -196,13 +199,21 @@ void Simulation::run_contacts(StepCounters& c) {
         if (work[k].collide || work[k].ccd_hit) colliding.push_back(k);
     c.colliding_pairs = colliding.size();
 
+    // The response's backtrack starts with the `all` query depth runs (rule exact, level bounds
+    // or spheres, spheres not grown): depth keeps its pairs for it.
+    const bool keep_pairs = effects_.has(Effect::Response) && scene_.response.rule == BacktrackRule::Exact &&
+                            level != QueryLevel::Exact;
+    for (std::vector<SpherePair>& p : start_pairs_) p.clear();
+    if (start_pairs_.size() < colliding.size()) start_pairs_.resize(colliding.size());
     if (effects_.has(Effect::Depth)) {
         t0 = Clock::now();
         detail::parallel_for(colliding.size(), threads_, [&](size_t j, int w) {
             const size_t k = colliding[j];
+            QueryScratch& s = scratch_[size_t(w)];
+            const double band = work[k].collide ? 0.0 : work[k].ccd_band;
             detail::deepest_contact(model(cand[k].a), poses_[cand[k].a], model(cand[k].b), poses_[cand[k].b],
-                                    sphere_level, work[k].collide ? 0.0 : work[k].ccd_band, dynamic(cand[k].a),
-                                    dynamic(cand[k].b), work[k], scratch_[size_t(w)]);
+                                    sphere_level, band, dynamic(cand[k].a), dynamic(cand[k].b), work[k], s);
+            if (keep_pairs && band == 0) start_pairs_[j].assign(s.pairs().begin(), s.pairs().end());
         });
         c.depth_queries = colliding.size();
         c.ns_depth = ns_since(t0);

@@ -1,55 +1,92 @@
 // The kinematic response (paper §3-4-3): colliding pairs moved back along their relative
 // motion by the scene's rule, velocities reflected about the contact normal. Not a solver.
+#include "query/backtrack_from.hpp"
+#include "scene/parallel.hpp"
 #include "spt/error.hpp"
 #include "spt/simulation.hpp"
+#include <algorithm>
 #include <chrono>
 
 namespace spt {
 
 void Simulation::respond(StepCounters& c) {
     const auto t0 = std::chrono::steady_clock::now();
-    QueryScratch& scratch = scratch_[0];
+    const std::vector<PairContact>& contacts = result_.contacts;
+    auto dynamic = [&](uint32_t i) { return scene_.objects[i].motion == MotionKind::Velocity; };
+    // Pairs act in (a, b) order, each seeing the moves of those before it. A pair reads and
+    // writes only its dynamic objects (static and path objects are never moved by a response),
+    // so it depends only on the earlier pairs sharing one: batch = one after the latest of
+    // theirs. The pairs of a batch share no dynamic object and run in parallel with exactly
+    // the outcome of the one-after-the-other order, whatever the thread count.
+    std::vector<int> last(poses_.size(), -1);
+    std::vector<std::vector<uint32_t>> batches;
+    for (uint32_t k = 0; k < contacts.size(); ++k) {
+        const uint32_t a = contacts[k].a, b = contacts[k].b;
+        const bool da = dynamic(a), db = dynamic(b);
+        if (!da && !db) continue;
+        const int batch = 1 + std::max(da ? last[a] : -1, db ? last[b] : -1);
+        if (da) last[a] = batch;
+        if (db) last[b] = batch;
+        if (size_t(batch) == batches.size()) batches.emplace_back();
+        batches[size_t(batch)].push_back(k);
+    }
+    std::vector<uint8_t> acted(contacts.size(), 0);
+    static const std::vector<SpherePair> none;
+    for (const std::vector<uint32_t>& batch : batches)
+        detail::parallel_for(batch.size(), threads_, [&](size_t i, int w) {
+            const uint32_t k = batch[i];
+            acted[k] = respond_pair(contacts[k], k < start_pairs_.size() ? start_pairs_[k] : none, scratch_[size_t(w)]);
+        });
+    for (uint8_t x : acted) c.responses += x;
+    c.ns_response = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePair>& start_pairs,
+                              QueryScratch& scratch) {
     QueryOptions q;
     q.level = scene_.level;
     const double e = scene_.response.restitution, dt = scene_.dt;
-    // Pairs in (a, b) order, one after the other: a pair sees the moves of the pairs before it.
-    for (const PairContact& pc : result_.contacts) {
-        const uint32_t a = pc.a, b = pc.b;
-        const bool da = scene_.objects[a].motion == MotionKind::Velocity;
-        const bool db = scene_.objects[b].motion == MotionKind::Velocity;
-        if (!da && !db) continue; // static and path objects are never moved by a response
-        // Equal shares between two dynamic objects; all of it to the only dynamic one.
-        const double wa = da ? (db ? 0.5 : 1.0) : 0.0, wb = db ? (da ? 0.5 : 1.0) : 0.0;
-        const CollisionModel& ma = *scene_.objects[a].model;
-        const CollisionModel& mb = *scene_.objects[b].model;
-        // B's motion relative to A over the step; without one, B leaves along the contact normal.
-        Eigen::Vector3d motion = (poses_[b].translation - previous_[b].translation) -
-                                 (poses_[a].translation - previous_[a].translation);
-        const double scale = 1e-12 * (ma.extent() + mb.extent());
-        if (!(motion.norm() > scale)) motion = -pc.normal;
-        const BacktrackResult back = backtrack(ma, poses_[a], mb, poses_[b], motion, q, scene_.response.rule, scratch);
-        bool acted = false;
-        if (back.distance > 0) {
-            const Eigen::Vector3d away = motion.normalized() * back.distance; // B moves by -away relative to A
-            poses_[b].translation -= wb * away;
-            poses_[a].translation += wa * away;
-            acted = true;
-        }
-        // Velocities: kinematic objects move with their paths, static ones not at all.
-        auto velocity = [&](uint32_t i, bool dyn) -> Eigen::Vector3d {
-            if (dyn) return velocity_[i];
-            return (ghost_[i].translation - previous_[i].translation) / dt;
-        };
-        const double vn = (velocity(b, db) - velocity(a, da)).dot(pc.normal);
-        if (vn < 0) { // approaching along the normal: reflect with restitution
-            const Eigen::Vector3d impulse = -(1 + e) * vn * pc.normal;
-            if (db) velocity_[b] += wb * impulse;
-            if (da) velocity_[a] -= wa * impulse;
-            acted = true;
-        }
-        c.responses += acted;
+    const uint32_t a = pc.a, b = pc.b;
+    const bool da = scene_.objects[a].motion == MotionKind::Velocity;
+    const bool db = scene_.objects[b].motion == MotionKind::Velocity;
+    // Equal shares between two dynamic objects; all of it to the only dynamic one.
+    const double wa = da ? (db ? 0.5 : 1.0) : 0.0, wb = db ? (da ? 0.5 : 1.0) : 0.0;
+    const CollisionModel& ma = *scene_.objects[a].model;
+    const CollisionModel& mb = *scene_.objects[b].model;
+    // B's motion relative to A over the step; without one, B leaves along the contact normal.
+    Eigen::Vector3d motion = (poses_[b].translation - previous_[b].translation) -
+                             (poses_[a].translation - previous_[a].translation);
+    const double scale = 1e-12 * (ma.extent() + mb.extent());
+    if (!(motion.norm() > scale)) motion = -pc.normal;
+    // Depth's pairs stand for the first backtrack query while no earlier pair has moved these two.
+    auto same = [](const Pose& p, const Pose& g) {
+        return p.translation == g.translation && p.rotation.coeffs() == g.rotation.coeffs();
+    };
+    const bool reuse = !start_pairs.empty() && scene_.response.rule == BacktrackRule::Exact &&
+                       same(poses_[a], ghost_[a]) && same(poses_[b], ghost_[b]);
+    const BacktrackResult back =
+        reuse ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], motion, q, start_pairs, scratch)
+              : backtrack(ma, poses_[a], mb, poses_[b], motion, q, scene_.response.rule, scratch);
+    bool acted = false;
+    if (back.distance > 0) {
+        const Eigen::Vector3d away = motion.normalized() * back.distance; // B moves by -away relative to A
+        poses_[b].translation -= wb * away;
+        poses_[a].translation += wa * away;
+        acted = true;
     }
-    c.ns_response = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+    // Velocities: kinematic objects move with their paths, static ones not at all.
+    auto velocity = [&](uint32_t i, bool dyn) -> Eigen::Vector3d {
+        if (dyn) return velocity_[i];
+        return (ghost_[i].translation - previous_[i].translation) / dt;
+    };
+    const double vn = (velocity(b, db) - velocity(a, da)).dot(pc.normal);
+    if (vn < 0) { // approaching along the normal: reflect with restitution
+        const Eigen::Vector3d impulse = -(1 + e) * vn * pc.normal;
+        if (db) velocity_[b] += wb * impulse;
+        if (da) velocity_[a] -= wa * impulse;
+        acted = true;
+    }
+    return acted;
 }
 
 } // namespace spt
