@@ -195,15 +195,21 @@ MeshResult run_mesh(const std::string& name, const TriangleMesh& raw, int orient
                 keep.push_back(std::move(b));
             }
     // Brute force over all sphere pairs of the default model, on a spread subset of poses
-    // (not with --quick: quadratic in the samples, hours on a million).
+    // (not with --quick: quadratic in the samples, hours on a million; the subset shrinks
+    // with the model, see below).
     if (!quick) {
         const CollisionModel& m = default_model->model;
         QueryOptions o;
         bench::PoseSets sub;
-        const size_t stride_r = std::max<size_t>(1, sets.random.size() / 48);
+        // At most 48 random and 60 near poses, fewer for a model whose n^2 sphere tests a pose
+        // would take the run past about 2e10 tests (a two-sided model doubles n): 4 + 4 at least.
+        const double n = double(m.tree().sphere_count());
+        const double share = std::clamp(2e10 / (n * n) / 108.0, 4.0 / 48.0, 1.0);
+        const size_t want_r = size_t(48 * share), want_n = size_t(std::max(4.0, 60 * share));
+        const size_t stride_r = std::max<size_t>(1, sets.random.size() / std::max<size_t>(1, want_r));
         for (size_t i = 0; i < sets.random.size(); i += stride_r)
             sub.random.push_back(sets.random[i]), sub.random_truth.push_back(sets.random_truth[i]);
-        const size_t stride_n = std::max<size_t>(1, sets.near.size() / 60);
+        const size_t stride_n = std::max<size_t>(1, sets.near.size() / want_n);
         for (size_t i = 0; i < sets.near.size(); i += stride_n) sub.near.push_back(sets.near[i]);
         Row bf{"brute force, all sphere pairs (default model)", PointKind::BruteForce};
         measure(bf, sub, [&](const Pose& p) { return collide_brute_force(m, m, p, o, scratch).collide; });

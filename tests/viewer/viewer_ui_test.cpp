@@ -77,7 +77,7 @@ TEST(ViewerUi, SpacePlaysAndPausesArrowsStepBackAndForth) {
     w->set_speed(4);
     QTest::keyClick(w->view(), Qt::Key_Space);
     EXPECT_TRUE(w->playing());
-    QTest::qWaitFor([&] { return w->step() >= 12; }, 60000);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return w->step() >= 12; }, 60000));
     QTest::keyClick(w->view(), Qt::Key_Space);
     EXPECT_FALSE(w->playing());
     const int paused = w->step();
