@@ -15,14 +15,18 @@ bool is_spt_file(const QString& path) {
     return f.read(6) == QByteArray("SPTREE");
 }
 
-LoadResult load_document(const QString& path, const QString& mesh_path) {
+LoadResult load_document(const QString& path, const QString& mesh_path, const std::atomic<bool>* cancel,
+                         const std::function<void(const std::string&)>& on_stage) {
     LoadResult r;
     r.path = path;
     try {
         if (!QFileInfo(path).isFile()) throw_bad_input(path.toStdString(), "no such file");
         if (!is_spt_file(path)) {
             TriangleMesh mesh = import_mesh(path.toStdString()).mesh;
-            r.doc = make_document(mesh);
+            ConvertOptions options;
+            options.cancel = cancel;
+            options.on_stage = on_stage;
+            r.doc = make_document(mesh, options);
             // Authoring starts where the paper's tool does: the root holds every sample (B builds
             // the automatic tree under any node).
             const std::string name = r.doc->trees.front().name();
@@ -53,6 +57,10 @@ LoadResult load_document(const QString& path, const QString& mesh_path) {
         } catch (const std::exception& e) {
             r.warning = QString("%1; showing the sampling spheres only").arg(QString::fromStdString(e.what()));
         }
+    } catch (const Cancelled&) {
+        r.doc.reset();
+        r.cancelled = true;
+        r.error = QString("%1: opening cancelled").arg(path);
     } catch (const Error& e) {
         r.doc.reset();
         r.error = QString::fromStdString(e.what());

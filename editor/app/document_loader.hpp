@@ -4,7 +4,10 @@
 // whose one tree is the unsplit root, where manual authoring starts.
 #include "spt/spt_file.hpp"
 #include <QString>
+#include <atomic>
+#include <functional>
 #include <optional>
+#include <string>
 
 namespace spt::editor {
 
@@ -15,6 +18,7 @@ struct LoadResult {
     std::optional<TriangleMesh> mesh;   ///< the document's mesh, when found and matching
     QString mesh_path;                  ///< where the mesh was read from (empty if not used)
     bool converted = false;             ///< the file was a mesh, converted to a new document
+    bool cancelled = false;             ///< the conversion was stopped by the cancel flag
     QString error;                      ///< why the file could not be opened (names the file)
     QString warning;                    ///< a problem that still leaves a document (mesh missing or mismatched)
 };
@@ -23,7 +27,10 @@ struct LoadResult {
 bool is_spt_file(const QString& path);
 
 /// Opens `path`; `mesh_path` (may be empty) overrides where a .spt file's mesh is looked for.
-/// Never throws: problems come back in `error` and `warning`.
-LoadResult load_document(const QString& path, const QString& mesh_path);
+/// A mesh's conversion stops when `cancel` (may be null) is set (`cancelled`, and `error`
+/// says so) and names its stages to `on_stage` (may be empty). Never throws: problems come
+/// back in `error` and `warning`.
+LoadResult load_document(const QString& path, const QString& mesh_path, const std::atomic<bool>* cancel = nullptr,
+                         const std::function<void(const std::string&)>& on_stage = {});
 
 } // namespace spt::editor

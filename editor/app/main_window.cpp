@@ -44,6 +44,7 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
         statusBar()->addPermanentWidget(cancel);
     };
     add_busy(progress_, cancel_, "Cancel");
+    cancel_->setObjectName("cancel_open");
     add_busy(build_progress_, build_cancel_, "Cancel build");
     build_cancel_->setObjectName("cancel_build");
     // Core's builder cannot be interrupted: Cancel drops its result when it arrives.
@@ -54,7 +55,8 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     });
     connect(&build_watcher_, &QFutureWatcher<BuildJob>::finished, this, &MainWindow::build_finished);
     connect(cancel_, &QPushButton::clicked, this, [this] {
-        // Conversion cannot be interrupted inside core; its result is dropped when it arrives.
+        // Core stops the conversion at its next check; a result that still arrives is dropped.
+        if (open_cancel_) *open_cancel_ = true;
         cancelled_ = true;
         progress_->hide();
         cancel_->hide();
@@ -64,7 +66,9 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, [this] {
         progress_->hide();
         cancel_->hide();
-        if (!cancelled_) loaded(watcher_.result());
+        const LoadResult& r = watcher_.result();
+        if (!cancelled_) loaded(r);
+        else if (r.cancelled) show_message(QString("%1: opening cancelled, the conversion stopped").arg(r.path));
         opening_ = false;
         update_title();
     });

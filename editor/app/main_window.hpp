@@ -13,6 +13,8 @@
 #include <QMainWindow>
 #include <QTimer>
 #include <QUndoStack>
+#include <atomic>
+#include <memory>
 #include <optional>
 
 class QLabel;
@@ -157,6 +159,8 @@ private:
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     bool cancelled_ = false;
+    // The opening's cancel flag, shared with the worker (which may outlive a cancelled opening).
+    std::shared_ptr<std::atomic<bool>> open_cancel_;
     QString last_error_, last_message_;
     class QMenu* recent_menu_ = nullptr;
     Preferences preferences_;

@@ -23,7 +23,17 @@ void MainWindow::open_file(const QString& path, const QString& mesh_path) {
     progress_->show();
     cancel_->show();
     show_message(QString("opening %1...").arg(path));
-    watcher_.setFuture(QtConcurrent::run([path, mesh_path] { return load_document(path, mesh_path); }));
+    open_cancel_ = std::make_shared<std::atomic<bool>>(false);
+    // Stage names come from the worker thread; the message is shown on the UI thread while
+    // this opening is still the one running.
+    auto stage = [this, path, flag = open_cancel_](const std::string& name) {
+        QMetaObject::invokeMethod(this, [this, path, flag, name] {
+            if (flag == open_cancel_ && !*flag) show_message(QString("opening %1: %2...").arg(path, QString::fromStdString(name)));
+        }, Qt::QueuedConnection);
+    };
+    watcher_.setFuture(QtConcurrent::run([path, mesh_path, flag = open_cancel_, stage] {
+        return load_document(path, mesh_path, flag.get(), stage);
+    }));
     update_title();
 }
 

@@ -1,7 +1,9 @@
 // Opening and saving: byte-identical saves, Ctrl+S to -o, converted meshes, bad files and
 // mismatched meshes reported with the document kept, the modified mark.
 #include "editor_support.hpp"
+#include "meshgen.hpp"
 #include "spt/recipe.hpp"
+#include <QPushButton>
 #include <QFile>
 #include <QTest>
 #include <filesystem>
@@ -100,6 +102,42 @@ TEST(EditorFiles, ABadFileIsReportedByNameAndTheDocumentIsKept) {
         EXPECT_EQ(w.undo_stack().count(), 1);
     }
     EXPECT_NE(w.last_error().indexOf("no such file"), -1) << w.last_error().toStdString();
+}
+
+TEST(EditorFiles, CancelStopsAConversionInsideCoreAndKeepsTheDocument) {
+    TempDir dir("editor-cancel");
+    const EditorFiles files = write_editor_files(dir);
+    std::string error;
+    const auto window = open_editor(dir, files.spt, &error);
+    ASSERT_TRUE(window) << error;
+    editor::MainWindow& w = *window;
+    const std::vector<uint8_t> before = w.document().encode();
+    // About a second of conversion: the click lands while it runs (before it, at worst).
+    const std::string big = dir.file("big.ply");
+    meshgen::write_ply(meshgen::torus(1, 0.4, 400, 200), big);
+    w.open_file(QString::fromStdString(big));
+    auto* cancel = w.findChild<QPushButton*>("cancel_open");
+    ASSERT_NE(cancel, nullptr);
+    ASSERT_TRUE(cancel->isVisible());
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    ASSERT_TRUE(wait_opened(w));
+    EXPECT_NE(w.last_message().indexOf("the conversion stopped"), -1) << w.last_message().toStdString();
+    EXPECT_EQ(w.document().encode(), before);
+    EXPECT_FALSE(w.modified());
+    // The stopped worker leaves nothing behind: the next opening works.
+    w.open_file(files.mesh);
+    ASSERT_TRUE(wait_opened(w));
+    EXPECT_EQ(w.document().tree().node_count(), 1u);
+}
+
+TEST(EditorFiles, LoadDocumentReportsACancelledConversionByName) {
+    TempDir dir("editor-cancel-load");
+    const EditorFiles files = write_editor_files(dir);
+    std::atomic<bool> cancel{true};
+    const editor::LoadResult r = editor::load_document(files.mesh, {}, &cancel);
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_FALSE(r.doc);
+    EXPECT_NE(r.error.indexOf(files.mesh), -1) << r.error.toStdString();
 }
 
 TEST(EditorFiles, AMissingOrMismatchedMeshIsReportedNotUsed) {

@@ -3,7 +3,10 @@
 /// accept a mesh in place of a .spt file do.
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"
+#include <atomic>
+#include <functional>
 #include <optional>
+#include <string>
 
 namespace spt {
 
@@ -22,6 +25,13 @@ struct ConvertOptions {
     /// than kAutoTolerance x the diagonal, or leave a face of an open part partly outside every
     /// sphere, sample the faces to that tolerance (open parts: until their spheres hold them).
     bool auto_tolerance = true;
+    /// Another thread sets it to stop the conversion: make_document looks at it as each stage
+    /// starts and every 4,096 faces while sampling faces, and throws Cancelled. Null: never stops.
+    const std::atomic<bool>* cancel = nullptr;
+    /// Called (on the converting thread) as each stage starts, with its name: "sampling
+    /// vertices", "sampling faces", "building the tree"; stages come again when the automatic
+    /// tolerance samples the faces after a first tree.
+    std::function<void(const std::string& stage)> on_stage;
 };
 
 /// Default protrusion allowance as a fraction of the mesh diagonal: two objects together

@@ -21,6 +21,14 @@ private:
     ErrorKind kind_;
 };
 
+/// Thrown when long work (a conversion) was stopped by its caller's cancel flag: nothing was
+/// made and nothing the caller owns was changed.
+class Cancelled : public std::runtime_error {
+public:
+    /// Makes the exception; `what` says which work stopped.
+    explicit Cancelled(const std::string& what) : std::runtime_error(what) {}
+};
+
 /// Throws Error(BadInput) with "path: message".
 [[noreturn]] inline void throw_bad_input(const std::string& path, const std::string& message) {
     throw Error(ErrorKind::BadInput, path.empty() ? message : path + ": " + message);

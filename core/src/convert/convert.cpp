@@ -55,6 +55,13 @@ VertexOnlyGaps vertex_only_gaps(const RadiusLimiter& limiter, const SampleSet& s
     return g;
 }
 
+// Names the stage starting and stops here if the caller asked to.
+void stage(const ConvertOptions& o, const TriangleMesh& mesh, const char* name) {
+    if (o.cancel && o.cancel->load(std::memory_order_relaxed))
+        throw Cancelled("converting " + mesh.name + ": cancelled");
+    if (name && o.on_stage) o.on_stage(name);
+}
+
 } // namespace
 
 SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats) {
@@ -77,6 +84,7 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
     if (mesh.positions.size() > kMaxSourceIndex || mesh.triangles.size() > kMaxSourceIndex)
         throw_bad_input(mesh.name, "more than " + std::to_string(kMaxSourceIndex) + " vertices or triangles");
 
+    stage(options, mesh, "sampling vertices");
     auto t0 = Clock::now();
     const RadiusLimiter limiter(mesh, protrusion, two_sided_radius);
     const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius);
@@ -89,6 +97,7 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
     if (!options.tolerance) {
         doc.samples = vertex_samples;
         st.sample_seconds = seconds_since(t0);
+        stage(options, mesh, "building the tree");
         t0 = Clock::now();
         doc.trees.push_back(build_tree(options.tree_name, doc.samples, options.build));
         st.build_seconds = seconds_since(t0);
@@ -114,9 +123,13 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
     // 1/kRadiusClassRatio of each member's own radius: faces are sampled for that radius.
     const double eps = *options.tolerance / 2;
     SampleSet s = vertex_samples;
-    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+    stage(options, mesh, "sampling faces");
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+        if ((f & 4095u) == 4095u) stage(options, mesh, nullptr);
         add_face_samples(s, limiter, f, eps, rule, 1.0f / kRadiusClassRatio);
+    }
     st.sample_seconds = seconds_since(t0);
+    stage(options, mesh, "building the tree");
     t0 = Clock::now();
     BuildOptions coherent = options.build;
     coherent.radius_coherent = true;

@@ -1,0 +1,59 @@
+// Stopping a conversion from outside: the cancel flag and the stage names.
+#include "meshgen.hpp"
+#include "spt/convert.hpp"
+#include "spt/error.hpp"
+#include "test_support.hpp"
+#include <gtest/gtest.h>
+
+using namespace spt;
+
+namespace {
+
+TEST(ConvertCancel, FlagSetBeforeTheCallStopsItBeforeAnyWork) {
+    const ImportedMesh m = meshgen::prepare(meshgen::torus(1, 0.4, 40, 20), "torus");
+    std::atomic<bool> cancel{true};
+    ConvertOptions o;
+    o.cancel = &cancel;
+    int stages = 0;
+    o.on_stage = [&](const std::string&) { ++stages; };
+    EXPECT_THROW(make_document(m.mesh, o), Cancelled);
+    EXPECT_EQ(stages, 0);
+}
+
+TEST(ConvertCancel, FlagSetWhileSamplingFacesStopsItThere) {
+    // A CAD part whose large faces make the automatic tolerance sample them.
+    const TriangleMesh mesh = import_mesh(test::project_meshes() + "/cad_part.stl").mesh;
+    std::atomic<bool> cancel{false};
+    ConvertOptions o;
+    o.cancel = &cancel;
+    std::vector<std::string> seen;
+    o.on_stage = [&](const std::string& s) {
+        seen.push_back(s);
+        if (s == "sampling faces") cancel = true;
+    };
+    try {
+        make_document(mesh, o);
+        FAIL() << "the conversion ran to its end";
+    } catch (const Cancelled& e) {
+        EXPECT_NE(std::string(e.what()).find("cancelled"), std::string::npos) << e.what();
+    }
+    ASSERT_FALSE(seen.empty());
+    EXPECT_EQ(seen.back(), "sampling faces") << "no stage may start after the flag is set";
+}
+
+TEST(ConvertCancel, StagesOfAnUncancelledConversionAreNamedInOrder) {
+    const TriangleMesh mesh = import_mesh(test::project_meshes() + "/cad_part.stl").mesh;
+    ConvertOptions o;
+    std::vector<std::string> seen;
+    o.on_stage = [&](const std::string& s) { seen.push_back(s); };
+    ConvertStats st;
+    const SptDocument with = make_document(mesh, o, &st);
+    ASSERT_GT(st.automatic_tolerance, 0) << "the part should need face samples";
+    const std::vector<std::string> expected = {"sampling vertices", "building the tree", "sampling vertices",
+                                               "sampling faces", "building the tree"};
+    EXPECT_EQ(seen, expected);
+    // Watching changes nothing.
+    EXPECT_EQ(encode_spt(with), encode_spt(make_document(mesh)));
+}
+
+} // namespace
