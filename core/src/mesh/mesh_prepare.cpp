@@ -4,6 +4,7 @@
 #include "mesh/weld.hpp"
 #include "geometry/ray_parity.hpp"
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -19,18 +20,32 @@ struct HalfEdge {
     bool forward;  // face walks min -> max
 };
 
-std::vector<HalfEdge> collect_edges(const std::vector<Triangle>& tris) {
-    std::vector<HalfEdge> edges;
-    edges.reserve(tris.size() * 3);
+// Offsets of a counting sort by `bucket` (values below `buckets`): out[b] is where bucket b
+// starts, out[buckets] the total.
+template <class Bucket> std::vector<uint32_t> bucket_starts(size_t count, size_t buckets, Bucket bucket) {
+    std::vector<uint32_t> start(buckets + 1, 0);
+    for (size_t i = 0; i < count; ++i) ++start[bucket(i) + 1];
+    for (size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+    return start;
+}
+
+// Half-edges in (key, face) order: a counting sort by the smaller vertex, then a small sort
+// within each vertex's run (a few edges), instead of one sort of them all.
+std::vector<HalfEdge> collect_edges(const std::vector<Triangle>& tris, size_t vertex_count) {
+    const size_t n = tris.size() * 3;
+    auto lo_of = [&](size_t i) { return std::min(tris[i / 3][i % 3], tris[i / 3][(i % 3 + 1) % 3]); };
+    std::vector<uint32_t> start = bucket_starts(n, vertex_count, lo_of);
+    std::vector<HalfEdge> edges(n);
     for (uint32_t f = 0; f < tris.size(); ++f)
         for (int k = 0; k < 3; ++k) {
             const uint32_t a = tris[f][k], b = tris[f][(k + 1) % 3];
             const uint64_t lo = std::min(a, b), hi = std::max(a, b);
-            edges.push_back({(lo << 32) | hi, f, a < b});
+            edges[start[lo]++] = {(lo << 32) | hi, f, a < b};
         }
-    std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return x.key != y.key ? x.key < y.key : x.face < y.face;
-    });
+    auto before = [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; };
+    // start[v] is now where vertex v's run ends.
+    for (size_t v = 0, b = 0; v < vertex_count; b = start[v++])
+        if (start[v] - b > 1) std::sort(edges.begin() + long(b), edges.begin() + long(start[v]), before);
     return edges;
 }
 
@@ -165,12 +180,23 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     r.faces = m.triangles.size();
     std::vector<uint8_t> duplicate(m.triangles.size(), 0);
     {
+        // Faces by their sorted vertices, then by index: a counting sort by the smallest
+        // vertex, then a small sort within each vertex's run. All but the first of equal faces
+        // are copies.
+        auto sorted_face = [&](size_t f) {
+            Triangle t = m.triangles[f];
+            std::sort(t.begin(), t.end());
+            return t;
+        };
+        std::vector<uint32_t> start =
+            bucket_starts(m.triangles.size(), m.positions.size(), [&](size_t f) { return sorted_face(f)[0]; });
         std::vector<std::pair<Triangle, uint32_t>> sorted(m.triangles.size());
         for (uint32_t f = 0; f < m.triangles.size(); ++f) {
-            sorted[f] = {m.triangles[f], f};
-            std::sort(sorted[f].first.begin(), sorted[f].first.end());
+            const Triangle t = sorted_face(f);
+            sorted[start[t[0]]++] = {t, f};
         }
-        std::sort(sorted.begin(), sorted.end());
+        for (size_t v = 0, b = 0; v < m.positions.size(); b = start[v++])
+            if (start[v] - b > 1) std::sort(sorted.begin() + long(b), sorted.begin() + long(start[v]));
         for (size_t i = 1; i < sorted.size(); ++i)
             if (sorted[i].first == sorted[i - 1].first) duplicate[sorted[i].second] = 1, ++r.duplicate_faces;
         std::vector<uint8_t> used(m.positions.size(), 0);
@@ -180,8 +206,16 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
 
     // Topology from sorted half-edges.
-    const auto edges = collect_edges(m.triangles);
-    std::vector<std::vector<std::pair<uint32_t, bool>>> manifold_nbrs(m.triangles.size()); // (face, same_direction)
+    const auto edges = collect_edges(m.triangles, m.positions.size());
+    // Per face, its neighbours across manifold edges (face, same_direction): at most one an edge.
+    struct Neighbours {
+        std::array<std::pair<uint32_t, bool>, 3> face;
+        uint8_t count = 0;
+        void push_back(std::pair<uint32_t, bool> g) { face[count++] = g; }
+        const std::pair<uint32_t, bool>* begin() const { return face.data(); }
+        const std::pair<uint32_t, bool>* end() const { return face.data() + count; }
+    };
+    std::vector<Neighbours> manifold_nbrs(m.triangles.size());
     std::vector<uint32_t> comp_parent(m.triangles.size());
     std::iota(comp_parent.begin(), comp_parent.end(), 0);
     auto find = [&](uint32_t x) {

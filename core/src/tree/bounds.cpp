@@ -7,20 +7,28 @@
 namespace spt::detail {
 namespace {
 
-// Largest |centre - c_i| + r_i: the radius a ball around `centre` needs. With equal radii
-// (every leaf, most inner nodes) one square root per run is enough.
-double enclosing_radius(const Eigen::Vector3d& centre, const Eigen::Vector3f* c, const float* r, size_t n,
-                        bool equal_radii) {
+// Largest |centre_k - c_i| + r_i for each of `m` candidate centres: the radius a ball around
+// each needs, in one pass over the spheres. With equal radii (every leaf, most inner nodes)
+// one square root per candidate is enough.
+void enclosing_radii(const Eigen::Vector3d* centre, size_t m, const Eigen::Vector3f* c, const float* r, size_t n,
+                     bool equal_radii, double* out) {
     if (equal_radii) {
         // Differences in double: in float they err by the coordinates' magnitude, which can
         // far exceed a small node's radius.
-        double d2 = 0;
-        for (size_t i = 0; i < n; ++i) d2 = std::max(d2, (c[i].cast<double>() - centre).squaredNorm());
-        return std::sqrt(d2) + r[0];
+        double d2[3] = {0, 0, 0};
+        for (size_t i = 0; i < n; ++i) {
+            const Eigen::Vector3d ci = c[i].cast<double>();
+            for (size_t k = 0; k < m; ++k) d2[k] = std::max(d2[k], (ci - centre[k]).squaredNorm());
+        }
+        for (size_t k = 0; k < m; ++k) out[k] = std::sqrt(d2[k]) + r[0];
+        return;
     }
-    double best = 0;
-    for (size_t i = 0; i < n; ++i) best = std::max(best, (c[i].cast<double>() - centre).norm() + r[i]);
-    return best;
+    double best[3] = {0, 0, 0};
+    for (size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d ci = c[i].cast<double>();
+        for (size_t k = 0; k < m; ++k) best[k] = std::max(best[k], (ci - centre[k]).norm() + r[i]);
+    }
+    for (size_t k = 0; k < m; ++k) out[k] = best[k];
 }
 
 } // namespace
@@ -41,8 +49,9 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
     }
     // Tight: try a few centres, each with the exact radius that encloses every sphere.
     // Centres are rounded to float first, so the radius measured is the stored centre's.
-    std::vector<Eigen::Vector3d> candidates;
-    auto add = [&](const Eigen::Vector3d& x) { candidates.push_back(float_rounded(x)); };
+    Eigen::Vector3d candidates[3];
+    size_t m = 0;
+    auto add = [&](const Eigen::Vector3d& x) { candidates[m++] = float_rounded(x); };
     Eigen::AlignedBox3f box;
     if (centre_box) box = *centre_box;
     else for (size_t i = 0; i < n; ++i) box.extend(c[i]);
@@ -55,11 +64,14 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
         for (size_t i = 0; i < n; ++i) pts[i] = c[i].cast<double>();
         add(smallest_ball(std::move(pts)).center);
     }
+    double radii[3];
+    enclosing_radii(candidates, m, c, r, n, equal_radii, radii);
     double rad = INFINITY;
-    for (const auto& cand : candidates) {
-        const double cr = enclosing_radius(cand, c, r, n, equal_radii);
+    for (size_t k = 0; k < m; ++k) {
+        const Eigen::Vector3d& cand = candidates[k];
         // Candidates hold float values, so the radius measured is the stored centre's.
-        if (cr < rad) rad = cr, node.center = Eigen::Vector3f(float(cand.x()), float(cand.y()), float(cand.z()));
+        if (radii[k] < rad)
+            rad = radii[k], node.center = Eigen::Vector3f(float(cand.x()), float(cand.y()), float(cand.z()));
     }
     node.bv_radius = round_up(rad);
 }

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 namespace spt {
 namespace {
@@ -12,13 +15,25 @@ namespace {
 // The builder partitions these records in place, so every pass reads memory in order.
 struct Item {
     float p[3];
-    uint32_t sample;
+    uint32_t sample; // read as a fourth float by Bounds3::extend4, which ignores it
     int radius_class; // of the sample's own radius under the build's rule
 };
 
+// Four lanes, the fourth ignored: one vector min and max per point (the binned sweep extends
+// a box per point and axis). Min and max are exact, so the lanes agree with scalar code.
 struct Bounds3 {
-    float lo[3] = {INFINITY, INFINITY, INFINITY};
-    float hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    alignas(16) float lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY};
+    alignas(16) float hi[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    // p: three coordinates and one more readable float (an Item's p and the word after it).
+    void extend4(const float* p) {
+#if defined(__SSE2__)
+        const __m128 v = _mm_loadu_ps(p);
+        _mm_store_ps(lo, _mm_min_ps(_mm_load_ps(lo), v));
+        _mm_store_ps(hi, _mm_max_ps(_mm_load_ps(hi), v));
+#else
+        extend(p);
+#endif
+    }
     void extend(const float* p) {
         for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
     }
@@ -42,7 +57,7 @@ struct Builder {
 
     Bounds3 box_of(size_t b, size_t e) const {
         Bounds3 box;
-        for (size_t i = b; i < e; ++i) box.extend(items[i].p);
+        for (size_t i = b; i < e; ++i) box.extend4(items[i].p);
         return box;
     }
 
@@ -73,13 +88,27 @@ struct Builder {
         };
         // Large nodes choose their plane from an even subsample: the cost estimate barely
         // changes, and the top levels stop dominating the build time. The partition is exact.
+        // Neighbouring items mostly fall in the same bin: alternate items go to two sets of
+        // bins, merged below, so consecutive updates do not wait on each other.
         const size_t stride = std::max<size_t>(1, (e - b) / 1024);
-        for (size_t i = b; i < e; i += stride)
+        std::array<std::array<Bounds3, kBins>, 3> odd_bins;
+        std::array<std::array<uint32_t, kBins>, 3> odd_counts{};
+        auto add = [&](const Item& it, std::array<std::array<Bounds3, kBins>, 3>& to,
+                       std::array<std::array<uint32_t, kBins>, 3>& n) {
             for (int a = 0; a < 3; ++a) {
-                const int k = bin_of(items[i], a);
-                bins[a][k].extend(items[i].p);
-                ++counts[a][k];
+                const int k = bin_of(it, a);
+                to[a][k].extend4(it.p);
+                ++n[a][k];
             }
+        };
+        size_t i = b;
+        for (; i + stride < e; i += 2 * stride) {
+            add(items[i], bins, counts);
+            add(items[i + stride], odd_bins, odd_counts);
+        }
+        if (i < e) add(items[i], bins, counts);
+        for (int a = 0; a < 3; ++a)
+            for (int k = 0; k < kBins; ++k) bins[a][k].extend(odd_bins[a][k]), counts[a][k] += odd_counts[a][k];
         // A plane costs the children's bounding-sphere volumes (r^3), each weighted by its
         // sample count: the expected sphere tests if a query lands in a child in proportion
         // to its volume. Unweighted volumes peel off slivers and deepen the tree.
