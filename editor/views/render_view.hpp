@@ -37,6 +37,8 @@ public:
     bool has_drawn() const { return drawn_; }
     /// Draw time of the last frame, milliseconds (benchmarks).
     double last_draw_ms() const { return last_draw_ms_; }
+    /// How the renderer made the last frame: drawn, recoloured or composited from its cache.
+    render::DrawKind last_draw_kind() const { return last_draw_kind_; }
 
 signals:
     /// A one-line message for the status bar.
@@ -75,6 +77,7 @@ private:
     std::unique_ptr<render::Renderer> renderer_;
     bool fit_pending_ = true, drawn_ = false;
     double last_draw_ms_ = 0;
+    render::DrawKind last_draw_kind_ = render::DrawKind::Full;
     Drag drag_ = Drag::None;
     QPoint last_;
 };
