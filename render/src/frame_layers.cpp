@@ -55,8 +55,8 @@ void Renderer::Impl::resize_layers(int width, int height) {
     l.marked = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
     l.ids = make_texture(gl, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, width, height);
     l.depth = make_texture(gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width, height);
-    l.cover = make_texture(gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
-    l.transmittance = make_texture(gl, GL_R32F, GL_RED, GL_FLOAT, width, height);
+    l.cover = make_texture(gl, GL_RGBA16F, GL_RGBA, GL_FLOAT, width, height);
+    l.transmittance = make_texture(gl, GL_R16F, GL_RED, GL_FLOAT, width, height);
     gl.GenFramebuffers(1, &l.base_fbo);
     gl.BindFramebuffer(GL_FRAMEBUFFER, l.base_fbo);
     attach(gl, GL_COLOR_ATTACHMENT0, l.base);

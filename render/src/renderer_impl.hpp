@@ -41,6 +41,7 @@ struct Renderer::Impl {
         Bounds bounds; // of the spheres, object frame
         uint64_t revision = 0;      // changes when the spheres change
         uint64_t mark_revision = 0; // changes when the marks change
+        std::vector<uint8_t> marks; // what mark_vbo holds
     };
 
     // The last frame drawn, kept as layers in textures of its viewport's size: the base (the
@@ -80,6 +81,7 @@ struct Renderer::Impl {
     std::map<uint32_t, GpuSphereSet> sphere_sets;
     uint32_t next_id = 1;
     uint64_t next_revision = 1;
+    std::vector<uint8_t> scratch_marks; // set_marks' buffer, kept to spare an allocation a call
     FrameLayers layers;
     DrawKind last_kind = DrawKind::Full;
 

@@ -13,7 +13,7 @@ void main() {
 )";
 
 // out = cover + transmittance * base: the see-through passes "over" the base, as blending them one
-// by one onto it would (in float, rounded once). A base pixel of a sphere drawn with marks takes
+// by one onto it would (in half floats, rounded to the target once). A base pixel of a sphere drawn with marks takes
 // the colour the sphere pass stored for its current mark, so a change of marks needs no drawing.
 const char* kCompositeFs = R"(#version 330 core
 uniform sampler2D u_base;
