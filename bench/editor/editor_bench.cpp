@@ -251,9 +251,10 @@ int main(int argc, char** argv) {
         const auto w = open_window(start, big);
         if (!w) return 1;
         selection_parts(*w, big, 5);
+        const double drawn = selection_drawn_ms(*w, 11);
         std::printf("| part: all four views drawn after a selection change (no core) | %.1f ms | half the samples, then none; "
                     "views drew: %s |\n",
-                    selection_drawn_ms(*w, 11), draw_kinds(*w).c_str());
+                    drawn, draw_kinds(*w).c_str());
         std::printf("| part: a flush of the window with no view changed (status bar) | %.1f ms | Qt's composition |\n",
                     flush_ms(*w, 11));
         size_t through = 0, visible = 0;
