@@ -66,11 +66,11 @@ public:
 
     /// World-frame box around everything `frame` shows (the grid excepted), model units.
     Bounds bounds(const Frame& frame) const;
-    /// Clears `viewport` of `framebuffer` (a GL framebuffer object name, such as
-    /// OffscreenContext::framebuffer() or QOpenGLWidget::defaultFramebufferObject()) and
-    /// draws `frame` through `camera` into it. Throws std::invalid_argument for an unknown
-    /// mesh or sphere-set handle in the frame. The frame is drawn into layers kept until the next
-    /// draw and composited into the viewport; a draw of the same frame, camera and viewport
+    /// Writes every colour pixel of `viewport` of `framebuffer` (a GL framebuffer object name, such
+    /// as OffscreenContext::framebuffer() or QOpenGLWidget::defaultFramebufferObject(); its depth
+    /// buffer is left alone) with `frame` drawn through `camera`. Throws std::invalid_argument for
+    /// an unknown mesh or sphere-set handle in the frame. The frame is drawn into layers (about 30
+    /// bytes a pixel) kept until the next draw and composited into the viewport; a draw of the same frame, camera and viewport
     /// size (its uploads unchanged) only composites them again, also when its only change is
     /// set_sphere_marks (the layers keep both colours of each marked sphere's pixels): the same
     /// pixels as a full draw, at a cost that depends on the viewport's size alone.
