@@ -2,7 +2,6 @@
 #include "mesh/shapes.hpp"
 #include "spt/selection.hpp"
 #include "test_support.hpp"
-#include <algorithm>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -129,39 +128,6 @@ TEST(Selection, DepthMapOfAWindowEqualsTheFullMapWhereTheSelectionReadsIt) {
         EXPECT_GT(covered, 100u);
         EXPECT_EQ(visible_samples_in_rect(s, t, 1, v, r, part, 0.01f), visible_samples_in_rect(s, t, 1, v, r, full, 0.01f));
     }
-}
-
-// Past 65536 items the passes run on several threads (parts of the samples, bands of rows).
-TEST(Selection, ManySamplesAndVerticesGiveWhatFewGive) {
-    const TriangleMesh torus = make_torus(0.6, 0.25, 40, 24);
-    // The same triangles with 70,000 unused vertices after the torus's: the depth map is drawn
-    // by several threads, which must find what one thread finds.
-    TriangleMesh padded = torus;
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (int i = 0; i < 70000; ++i) padded.positions.push_back({u(rng), u(rng), u(rng)});
-    const ViewProjection v = front_view();
-    const DepthMap one = render_depth(torus, v), many = render_depth(padded, v);
-    EXPECT_EQ(many.depth, one.depth);
-    const PixelRect r{17.5f, 181.25f, 160.5f, 30.75f};
-    EXPECT_EQ(render_depth(padded, v, r).depth, render_depth(torus, v, r).depth);
-
-    // 90,000 samples: the through and visible tests against a plain loop over them.
-    const SampleSet s = grid_samples(300);
-    SamplingTree t("t", uint32_t(s.size()));
-    std::vector<uint32_t> inside;
-    for (uint32_t i = 0; i < s.size(); ++i) {
-        const Eigen::Vector3f w = project_to_window(v, s.position(i));
-        if (w.x() < 17.5f || w.x() > 160.5f || w.y() < 30.75f || w.y() > 181.25f) continue;
-        inside.push_back(i);
-    }
-    ASSERT_GT(inside.size(), 20000u);
-    EXPECT_EQ(samples_in_rect(s, t, 1, v, r), inside);
-    // The grid lies in z = 0, behind the torus's front: some samples are hidden, some not.
-    const std::vector<uint32_t> seen = visible_samples_in_rect(s, t, 1, v, r, one, 0.01f);
-    EXPECT_LT(seen.size(), inside.size());
-    EXPECT_GT(seen.size(), 0u);
-    EXPECT_TRUE(std::includes(inside.begin(), inside.end(), seen.begin(), seen.end()));
 }
 
 TEST(Selection, ModesReplaceAddSubtract) {

@@ -1,7 +1,5 @@
 // A software depth buffer of a mesh in one view, for visible-only selection.
 #include "spt/selection.hpp"
-#include "scene/parallel.hpp"
-#include "selection/selection_threads.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -17,47 +15,35 @@ DepthMap draw_depth(const TriangleMesh& mesh, const ViewProjection& view, int px
     map.depth.assign(size_t(map.width) * size_t(map.height), INFINITY);
     if (px0 > px1 || py0 > py1) return map;
     std::vector<Eigen::Vector3f> win(mesh.positions.size());
-    const int threads = detail::selection_threads(win.size());
-    detail::parallel_for(size_t(threads), threads, [&](size_t part, int) {
-        const detail::Span span = detail::part_of(win.size(), part, size_t(threads));
-        for (size_t i = span.first; i < span.end; ++i) win[i] = project_to_window(view, mesh.positions[i]);
-    });
+    for (size_t i = 0; i < win.size(); ++i) win[i] = project_to_window(view, mesh.positions[i]);
     // Screen-space interpolation: eye depth is affine in x, y for an orthographic view;
     // for a perspective one its reciprocal is.
     auto value = [&](float z) { return view.perspective ? 1.0f / z : z; };
     auto depth = [&](float v) { return view.perspective ? 1.0f / v : v; };
-    // Each thread draws every triangle into its own band of rows: a pixel's depth is the least
-    // of the triangles covering it whichever thread finds them, so the map does not depend on
-    // the thread count.
-    detail::parallel_for(size_t(threads), threads, [&](size_t part, int) {
-        const detail::Span rows = detail::part_of(size_t(py1 - py0 + 1), part, size_t(threads));
-        const int band0 = py0 + int(rows.first), band1 = py0 + int(rows.end) - 1;
-        for (const Triangle& t : mesh.triangles) {
-            const Eigen::Vector3f &a = win[t[0]], &b = win[t[1]], &c = win[t[2]];
-            const int y0 = std::max(band0, int(std::floor(std::min({a.y(), b.y(), c.y()}) - 0.5f)));
-            const int y1 = std::min(band1, int(std::ceil(std::max({a.y(), b.y(), c.y()}) - 0.5f)));
-            if (y0 > y1) continue;
-            if (view.perspective && (a.z() <= 0 || b.z() <= 0 || c.z() <= 0)) continue;
-            const float area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
-            if (area == 0 || !std::isfinite(area)) continue;
-            const int x0 = std::max(px0, int(std::floor(std::min({a.x(), b.x(), c.x()}) - 0.5f)));
-            const int x1 = std::min(px1, int(std::ceil(std::max({a.x(), b.x(), c.x()}) - 0.5f)));
-            if (x0 > x1) continue;
-            const float va = value(a.z()), vb = value(b.z()), vc = value(c.z());
-            for (int y = y0; y <= y1; ++y)
-                for (int x = x0; x <= x1; ++x) {
-                    const float px = float(x) + 0.5f, py = float(y) + 0.5f;
-                    // Barycentric weights; either winding is drawn (no culling: back faces hide too).
-                    const float wa = ((b.x() - px) * (c.y() - py) - (c.x() - px) * (b.y() - py)) / area;
-                    const float wb = ((c.x() - px) * (a.y() - py) - (a.x() - px) * (c.y() - py)) / area;
-                    const float wc = 1.0f - wa - wb;
-                    if (wa < 0 || wb < 0 || wc < 0) continue;
-                    const float d = depth(wa * va + wb * vb + wc * vc);
-                    float& slot = map.depth[size_t(y) * size_t(map.width) + size_t(x)];
-                    slot = std::min(slot, d);
-                }
-        }
-    });
+    for (const Triangle& t : mesh.triangles) {
+        const Eigen::Vector3f &a = win[t[0]], &b = win[t[1]], &c = win[t[2]];
+        if (view.perspective && (a.z() <= 0 || b.z() <= 0 || c.z() <= 0)) continue;
+        const float area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
+        if (area == 0 || !std::isfinite(area)) continue;
+        const int x0 = std::max(px0, int(std::floor(std::min({a.x(), b.x(), c.x()}) - 0.5f)));
+        const int x1 = std::min(px1, int(std::ceil(std::max({a.x(), b.x(), c.x()}) - 0.5f)));
+        const int y0 = std::max(py0, int(std::floor(std::min({a.y(), b.y(), c.y()}) - 0.5f)));
+        const int y1 = std::min(py1, int(std::ceil(std::max({a.y(), b.y(), c.y()}) - 0.5f)));
+        if (x0 > x1 || y0 > y1) continue;
+        const float va = value(a.z()), vb = value(b.z()), vc = value(c.z());
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const float px = float(x) + 0.5f, py = float(y) + 0.5f;
+                // Barycentric weights; either winding is drawn (no culling: back faces hide too).
+                const float wa = ((b.x() - px) * (c.y() - py) - (c.x() - px) * (b.y() - py)) / area;
+                const float wb = ((c.x() - px) * (a.y() - py) - (a.x() - px) * (c.y() - py)) / area;
+                const float wc = 1.0f - wa - wb;
+                if (wa < 0 || wb < 0 || wc < 0) continue;
+                const float d = depth(wa * va + wb * vb + wc * vc);
+                float& slot = map.depth[size_t(y) * size_t(map.width) + size_t(x)];
+                slot = std::min(slot, d);
+            }
+    }
     return map;
 }
 

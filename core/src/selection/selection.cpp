@@ -1,7 +1,5 @@
 // Rectangle selection of a node's samples: projection, the through test, combining with a selection.
 #include "spt/selection.hpp"
-#include "scene/parallel.hpp"
-#include "selection/selection_threads.hpp"
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -41,32 +39,17 @@ struct Box {
 // A point behind the eye projects through it mirrored: it is never inside the rectangle.
 bool selectable(const ViewProjection& view, const Eigen::Vector3f& w) { return !view.perspective || w.z() > 0; }
 
-// The samples s of `candidates` (in order) for which keep(s, window position of s) holds, tested
-// in contiguous parts on the selection threads and joined in order.
-template <class Keep>
-std::vector<uint32_t> kept_samples(const SampleSet& samples, const std::vector<uint32_t>& candidates,
-                                   const ViewProjection& view, Keep&& keep) {
-    const int threads = detail::selection_threads(candidates.size());
-    std::vector<std::vector<uint32_t>> parts(static_cast<size_t>(threads));
-    detail::parallel_for(size_t(threads), threads, [&](size_t part, int) {
-        const detail::Span span = detail::part_of(candidates.size(), part, size_t(threads));
-        for (size_t k = span.first; k < span.end; ++k) {
-            const uint32_t s = candidates[k];
-            if (keep(project_to_window(view, samples.position(s)))) parts[part].push_back(s);
-        }
-    });
-    std::vector<uint32_t> out = std::move(parts.front());
-    for (size_t p = 1; p < parts.size(); ++p) out.insert(out.end(), parts[p].begin(), parts[p].end());
-    return out;
-}
-
 } // namespace
 
 std::vector<uint32_t> samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
                                       const ViewProjection& view, const PixelRect& rect) {
     const Box box(rect);
-    return kept_samples(samples, samples_below(tree, id), view,
-                        [&](const Eigen::Vector3f& w) { return selectable(view, w) && box.contains(w); });
+    std::vector<uint32_t> out;
+    for (uint32_t s : samples_below(tree, id)) {
+        const Eigen::Vector3f w = project_to_window(view, samples.position(s));
+        if (selectable(view, w) && box.contains(w)) out.push_back(s);
+    }
+    return out;
 }
 
 float DepthMap::at(int x, int y) const {
@@ -78,14 +61,17 @@ std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const Sa
                                               const ViewProjection& view, const PixelRect& rect,
                                               const DepthMap& depth, float tolerance) {
     const Box box(rect);
-    return kept_samples(samples, samples_below(tree, id), view, [&](const Eigen::Vector3f& w) {
-        if (!selectable(view, w) || !box.contains(w)) return false;
+    std::vector<uint32_t> out;
+    for (uint32_t s : samples_below(tree, id)) {
+        const Eigen::Vector3f w = project_to_window(view, samples.position(s));
+        if (!selectable(view, w) || !box.contains(w)) continue;
         const int px = int(std::floor(w.x())), py = int(std::floor(w.y()));
         float farthest = -INFINITY;
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) farthest = std::max(farthest, depth.at(px + dx, py + dy));
-        return w.z() <= farthest + tolerance;
-    });
+        if (w.z() <= farthest + tolerance) out.push_back(s);
+    }
+    return out;
 }
 
 float visible_tolerance(const TriangleMesh& mesh) { return float(0.005 * mesh.diagonal()); }
