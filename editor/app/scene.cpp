@@ -78,12 +78,12 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         f.meshes.push_back(item);
     }
     if (!data_.spheres.empty() && spheres.id) {
-        // The selection: its samples' own spheres marked in the selection colour.
-        const std::optional<render::Color> marked =
-            data_.selected.empty() ? std::nullopt : std::optional<render::Color>(selection_color());
+        // The selection: its samples' own spheres marked in the selection colour. Set even when
+        // nothing is selected, so that a selection change leaves the frame as it was and the
+        // renderer recolours its cached frame instead of drawing it again.
         for (render::SphereItem item :
              render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true)) {
-            item.marked_color = marked;
+            item.marked_color = selection_color();
             f.spheres.push_back(item);
         }
     }

@@ -78,6 +78,8 @@ void RenderView::paintGL() {
     const QSize fb = framebuffer_size();
     renderer_->draw(f, camera_, render::Viewport{0, 0, fb.width(), fb.height()}, defaultFramebufferObject());
     drawn_ = true;
+    last_draw_kind_ = renderer_->last_draw_kind();
+    ++frames_painted_;
     last_draw_ms_ = double(timer.nsecsElapsed()) * 1e-6;
 }
 

@@ -37,6 +37,10 @@ public:
     bool has_drawn() const { return drawn_; }
     /// Draw time of the last frame, milliseconds (benchmarks).
     double last_draw_ms() const { return last_draw_ms_; }
+    /// Number of frames painted so far (benchmarks check that a repaint painted).
+    uint64_t frames_painted() const { return frames_painted_; }
+    /// How the renderer made the last frame: drawn, recoloured or composited from its cache.
+    render::DrawKind last_draw_kind() const { return last_draw_kind_; }
 
 signals:
     /// A one-line message for the status bar.
@@ -75,6 +79,8 @@ private:
     std::unique_ptr<render::Renderer> renderer_;
     bool fit_pending_ = true, drawn_ = false;
     double last_draw_ms_ = 0;
+    render::DrawKind last_draw_kind_ = render::DrawKind::Full;
+    uint64_t frames_painted_ = 0;
     Drag drag_ = Drag::None;
     QPoint last_;
 };

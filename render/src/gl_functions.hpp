@@ -76,7 +76,19 @@ namespace spt::render::detail {
     X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)            \
     X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)      \
     X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)            \
-    X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)
+    X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)     \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)   \
+    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                      \
+    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                  \
+    X(PFNGLCLEARBUFFERUIVPROC, ClearBufferuiv)                \
+    X(PFNGLGENTEXTURESPROC, GenTextures)                      \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                      \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                  \
+    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                        \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                  \
+    X(PFNGLTEXBUFFERPROC, TexBuffer)                          \
+    X(PFNGLUNIFORM2IPROC, Uniform2i)
 
 // The GL functions spt uses, as pointers into the current context's implementation.
 struct GlFunctions {

@@ -17,6 +17,8 @@ Renderer::~Renderer() = default;
 
 const std::string& Renderer::gl_renderer() const { return impl_->renderer_name; }
 
+DrawKind Renderer::last_draw_kind() const { return impl_->last_kind; }
+
 MeshHandle Renderer::add_mesh(const TriangleMesh& mesh) {
     auto& gl = impl_->gl;
     Impl::GpuMesh m;
@@ -83,13 +85,7 @@ void Renderer::update_spheres(SphereSetHandle set, const std::vector<SphereInsta
 void Renderer::set_sphere_marks(SphereSetHandle set, const std::vector<uint32_t>& marked) {
     auto it = impl_->sphere_sets.find(set.id);
     if (it == impl_->sphere_sets.end()) throw std::invalid_argument("Renderer::set_sphere_marks: unknown handle");
-    Impl::GpuSphereSet& s = it->second;
-    std::vector<uint8_t> marks(3 * size_t(s.count), 0);
-    for (uint32_t i : marked)
-        if (i < s.count) marks[3 * size_t(i)] = marks[3 * size_t(i) + 1] = marks[3 * size_t(i) + 2] = 255;
-    if (!s.mark_vbo) impl_->gl.GenBuffers(1, &s.mark_vbo);
-    impl_->gl.BindBuffer(GL_ARRAY_BUFFER, s.mark_vbo);
-    impl_->gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(marks.size()), marks.data(), GL_STATIC_DRAW);
+    impl_->set_marks(it->second, marked);
     check_gl(impl_->gl, "Renderer::set_sphere_marks");
 }
 

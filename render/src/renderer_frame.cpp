@@ -1,4 +1,4 @@
-// One view of a frame: the pinned GL state, the order of the draw passes, the bounds they share.
+// One view of a frame: the pinned GL state, the order of the draw passes into the layers, the bounds they share.
 #include "renderer_impl.hpp"
 
 namespace spt::render {
@@ -31,20 +31,31 @@ Bounds Renderer::Impl::solid_bounds(const Frame& f) const {
     return b;
 }
 
-void Renderer::Impl::draw(const Frame& f, const Camera& cam, const Viewport& vp, GLuint fbo, const Bounds& b) {
-    if (vp.width <= 0 || vp.height <= 0) return;
-    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-    gl.Viewport(vp.x, vp.y, vp.width, vp.height);
-    gl.Enable(GL_SCISSOR_TEST);
-    gl.Scissor(vp.x, vp.y, vp.width, vp.height);
-    // Pinned for byte-identical output. Multisampling is left to the target: the
-    // off-screen framebuffers are single-sample, a window may want it.
+// The passes of one view into the cached layers (width x height pixels): the opaque ones into the
+// base, the see-through ones and the marks on top into the overlay.
+void Renderer::Impl::draw_layers(const Frame& f, const Camera& cam, int width, int height, const Bounds& b) {
+    resize_layers(width, height);
+    const FrameLayers& l = layers;
+    const GLenum base_only[4] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE, GL_NONE};
+    const GLenum base_all[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+    const GLenum overlay[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    const Viewport vp{0, 0, width, height};
+    gl.BindFramebuffer(GL_FRAMEBUFFER, l.base_fbo);
+    gl.Viewport(0, 0, width, height);
+    gl.Disable(GL_SCISSOR_TEST);
+    // Pinned for byte-identical output; the layers are single-sample.
     gl.Disable(GL_DITHER);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.DepthMask(GL_TRUE);
-    gl.ClearColor(f.background.r, f.background.g, f.background.b, f.background.a);
-    gl.ClearDepth(1.0);
-    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl.DrawBuffers(4, base_all);
+    const float background[4] = {f.background.r, f.background.g, f.background.b, f.background.a};
+    const float zero[4] = {0, 0, 0, 0}, one[4] = {1, 1, 1, 1};
+    const GLuint no_id[4] = {0, 0, 0, 0};
+    gl.ClearBufferfv(GL_COLOR, 0, background);
+    gl.ClearBufferfv(GL_COLOR, 1, zero);
+    gl.ClearBufferfv(GL_COLOR, 2, zero);
+    gl.ClearBufferuiv(GL_COLOR, 3, no_id);
+    gl.ClearBufferfv(GL_DEPTH, 0, one);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LEQUAL);
     gl.Disable(GL_CULL_FACE);
@@ -53,18 +64,27 @@ void Renderer::Impl::draw(const Frame& f, const Camera& cam, const Viewport& vp,
     gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
 
     view = cam.view_matrix();
-    proj = cam.projection_matrix(float(vp.width) / float(vp.height));
+    proj = cam.projection_matrix(float(width) / float(height));
     ortho = !cam.perspective();
 
+    gl.DrawBuffers(4, base_only);
     if (f.grid) {
         const Bounds solid = solid_bounds(f);
         draw_grid(b, solid.empty() ? b.min.y() : solid.min.y());
     }
     draw_meshes(f, false);
+    // Spheres write their ids and both mark colours; the collision pairs' spheres write id 0.
+    gl.DrawBuffers(4, base_all);
     draw_sphere_items(f);
     draw_collision_spheres(f.collision);
+    gl.DrawBuffers(4, base_only);
     draw_trails(f);
 
+    // The overlay: cover "over" nothing (premultiplied) and transmittance, blended pass by pass.
+    gl.BindFramebuffer(GL_FRAMEBUFFER, l.overlay_fbo);
+    gl.DrawBuffers(2, overlay);
+    gl.ClearBufferfv(GL_COLOR, 0, zero);
+    gl.ClearBufferfv(GL_COLOR, 1, one);
     gl.Enable(GL_BLEND);
     draw_wire_spheres(f, false);
     gl.DepthMask(GL_FALSE);
@@ -82,9 +102,26 @@ void Renderer::Impl::draw(const Frame& f, const Camera& cam, const Viewport& vp,
 
     gl.DepthMask(GL_TRUE);
     gl.Disable(GL_BLEND);
-    gl.Disable(GL_SCISSOR_TEST);
     gl.BindVertexArray(0);
     gl.UseProgram(0);
+}
+
+void Renderer::Impl::draw(const Frame& f, const Camera& cam, const Viewport& vp, GLuint fbo, const Bounds& b) {
+    if (vp.width <= 0 || vp.height <= 0) return;
+    switch (reuse(f, cam, vp.width, vp.height)) {
+    case Reuse::None:
+        layers.valid = false;
+        draw_layers(f, cam, vp.width, vp.height, b);
+        remember(f, cam);
+        last_kind = DrawKind::Full;
+        break;
+    case Reuse::Recolour:
+        marks_seen();
+        last_kind = DrawKind::Recoloured;
+        break;
+    case Reuse::Composite: last_kind = DrawKind::Composited; break;
+    }
+    composite(vp, fbo);
     check_gl(gl, "Renderer::draw");
 }
 

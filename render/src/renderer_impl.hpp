@@ -1,5 +1,6 @@
 #pragma once
 // Renderer::Impl, shared by the renderer's files: its GL objects, per-draw state and draw passes.
+#include "frame_equal.hpp"
 #include "gl_functions.hpp"
 #include "shaders.hpp"
 #include "spt/render/renderer.hpp"
@@ -35,10 +36,32 @@ struct Renderer::Impl {
     // An uploaded sphere set: GpuSphere instances.
     struct GpuSphereSet {
         GLuint vao = 0, vbo = 0;
-        GLuint mark_vbo = 0; // one byte a vertex, three a sphere (255 marked); 0 until marks are set
+        GLuint mark_vbo = 0; // one byte a vertex, three a sphere (255 marked), made with the set
         uint32_t count = 0;
         Bounds bounds; // of the spheres, object frame
+        uint64_t revision = 0;      // changes when the spheres change
+        uint64_t mark_revision = 0; // changes when the marks change
+        std::vector<uint8_t> marks; // what mark_vbo holds
     };
+
+    // The last frame drawn, kept as layers in textures of its viewport's size: the base (the
+    // opaque passes: colour, depth, and for each pixel of a sphere drawn with marks its index + 1
+    // and the colour it has marked and not) and the overlay of the see-through passes (colour
+    // "over" nothing, and transmittance). A frame drawn again with the same camera and size is
+    // only composited, with the marked spheres' pixels in the colour of their current mark.
+    struct FrameLayers {
+        int width = 0, height = 0;
+        GLuint base_fbo = 0, overlay_fbo = 0, empty_vao = 0, marks_texture = 0;
+        GLuint base = 0, plain = 0, marked = 0, ids = 0, depth = 0, cover = 0, transmittance = 0;
+        bool valid = false;
+        Frame frame;
+        Camera camera;
+        std::vector<std::pair<uint32_t, uint64_t>> revisions;      // (set id, revision) of the frame's sets
+        std::vector<std::pair<uint32_t, uint64_t>> mark_revisions; // (set id, mark revision)
+        uint32_t mark_set = 0; // the one set whose marks the ids index; 0 if none or several
+    };
+    // What of the cached layers a draw can keep.
+    enum class Reuse { None, Composite, Recolour };
 
     // Segments of each wire circle (a full turn).
     static constexpr int kCircleSegments = 64;
@@ -57,6 +80,10 @@ struct Renderer::Impl {
     std::map<uint32_t, GpuMesh> meshes;
     std::map<uint32_t, GpuSphereSet> sphere_sets;
     uint32_t next_id = 1;
+    uint64_t next_revision = 1;
+    std::vector<uint8_t> scratch_marks; // set_marks' buffer, kept to spare an allocation a call
+    FrameLayers layers;
+    DrawKind last_kind = DrawKind::Full;
 
     GLuint circle_vbo = 0; // 4 circles as GL_LINES
     GLuint line_vao = 0, line_vbo = 0;     // streamed lines and points
@@ -77,6 +104,7 @@ struct Renderer::Impl {
     void free_mesh(GpuMesh& m);
     void free_set(GpuSphereSet& s);
     void upload_spheres(GpuSphereSet& s, const std::vector<SphereInstance>& spheres);
+    void set_marks(GpuSphereSet& s, const std::vector<uint32_t>& marked);
     void stream_lines(const std::vector<LineVertex>& v);
     void use_line_program(const Eigen::Matrix4f& mvp, float point_size = 1, bool round = false);
     void draw_lines(const std::vector<LineVertex>& v, GLenum mode, float point_size = 1, bool round = false);
@@ -99,7 +127,16 @@ struct Renderer::Impl {
 
     // One view of a frame: GL state and the order of the passes (renderer_frame.cpp).
     Bounds solid_bounds(const Frame& f) const;
+    void draw_layers(const Frame& f, const Camera& cam, int width, int height, const Bounds& b);
     void draw(const Frame& f, const Camera& cam, const Viewport& vp, GLuint fbo, const Bounds& b);
+
+    // The cached layers (frame_layers.cpp).
+    void resize_layers(int width, int height);
+    void free_layers();
+    Reuse reuse(const Frame& f, const Camera& cam, int width, int height) const;
+    void remember(const Frame& f, const Camera& cam);
+    void marks_seen();
+    void composite(const Viewport& vp, GLuint fbo);
 };
 
 } // namespace spt::render

@@ -62,6 +62,9 @@ Renderer::Impl::Impl(const ProcLoader& load) {
 }
 
 Renderer::Impl::~Impl() {
+    free_layers();
+    gl.DeleteVertexArrays(1, &layers.empty_vao);
+    gl.DeleteTextures(1, &layers.marks_texture);
     for (auto& [id, m] : meshes) free_mesh(m);
     for (auto& [id, s] : sphere_sets) free_set(s);
     GLuint vaos[] = {line_vao, scratch_set_vao, wire_vao};
@@ -137,6 +140,30 @@ void Renderer::Impl::upload_spheres(GpuSphereSet& s, const std::vector<SphereIns
     gl.BindBuffer(GL_ARRAY_BUFFER, s.vbo);
     gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(GpuSphere)), data.data(), GL_STATIC_DRAW);
     s.count = uint32_t(spheres.size());
+    s.revision = next_revision++;
+    set_marks(s, {});
+}
+
+// Only the span of marks that changed is uploaded: a selection change rewrites a 3-byte-a-sphere
+// buffer in each view's context, and most of it often stays as it was.
+void Renderer::Impl::set_marks(GpuSphereSet& s, const std::vector<uint32_t>& marked) {
+    std::vector<uint8_t>& marks = scratch_marks;
+    marks.assign(std::max<size_t>(3 * size_t(s.count), 3), 0);
+    for (uint32_t i : marked)
+        if (i < s.count) marks[3 * size_t(i)] = marks[3 * size_t(i) + 1] = marks[3 * size_t(i) + 2] = 255;
+    if (!s.mark_vbo) gl.GenBuffers(1, &s.mark_vbo);
+    gl.BindBuffer(GL_ARRAY_BUFFER, s.mark_vbo);
+    if (s.marks.size() != marks.size()) {
+        gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(marks.size()), marks.data(), GL_STATIC_DRAW);
+    } else {
+        const auto first = std::mismatch(marks.begin(), marks.end(), s.marks.begin()).first;
+        if (first != marks.end()) {
+            const auto last = std::mismatch(marks.rbegin(), marks.rend(), s.marks.rbegin()).first.base();
+            gl.BufferSubData(GL_ARRAY_BUFFER, GLintptr(first - marks.begin()), GLsizeiptr(last - first), &*first);
+        }
+    }
+    s.marks.swap(marks);
+    s.mark_revision = next_revision++;
 }
 
 void Renderer::Impl::stream_lines(const std::vector<LineVertex>& v) {

@@ -37,7 +37,8 @@ in vec3 v_position;
 in vec3 v_normal;
 uniform vec4 u_color;
 uniform int u_smooth;
-out vec4 frag_color;
+layout(location = 0) out vec4 frag_color;
+layout(location = 1) out vec4 frag_cover; // see-through layer: alpha drives the transmittance
 void main() {
     vec3 n;
     // Vertices without a normal carry zero; their faces fall back to the face normal.
@@ -46,6 +47,7 @@ void main() {
     else
         n = normalize(cross(dFdx(v_position), dFdy(v_position)));
     frag_color = vec4(shade(u_color.rgb, n), u_color.a);
+    frag_cover = vec4(0.0, 0.0, 0.0, u_color.a);
 }
 )";
 
@@ -65,13 +67,15 @@ void main() {
 const char* kLineFs = R"(#version 330 core
 in vec4 v_color;
 uniform int u_round_points;
-out vec4 frag_color;
+layout(location = 0) out vec4 frag_color;
+layout(location = 1) out vec4 frag_cover;
 void main() {
     if (u_round_points == 1) {
         vec2 d = gl_PointCoord * 2.0 - 1.0;
         if (dot(d, d) > 1.0) discard;
     }
     frag_color = v_color;
+    frag_cover = vec4(0.0, 0.0, 0.0, v_color.a);
 }
 )";
 
@@ -92,7 +96,10 @@ uniform vec4 u_mark_color;
 out vec3 v_quad;
 flat out vec3 v_center;
 flat out float v_radius;
-flat out vec4 v_color;
+flat out vec4 v_plain;   // colour when not marked
+flat out vec4 v_marked;  // colour when marked
+flat out uint v_marked_now; // 1: draw v_marked
+flat out uint v_id;      // sphere index in its set + 1 when marks are used, else 0
 // The impostor triangle around the unit disc; vertex k of a sphere takes corner k.
 const vec2 kCorners[3] = vec2[3](vec2(0.0, 2.0), vec2(-1.7320508, -1.0), vec2(1.7320508, -1.0));
 void main() {
@@ -101,8 +108,13 @@ void main() {
     float r = a_sphere.w;
     v_center = c;
     v_radius = r;
-    v_color = (u_use_mark == 1 && a_mark > 0.5) ? u_mark_color : u_override_color == 1 ? u_color : a_color;
-    v_color.rgb = mix(v_color.rgb, vec3(0.84, 0.85, 0.87), u_fade); // dimmed: towards a light grey
+    // Both colours a mark can give, so that a cached frame can be recoloured without drawing again.
+    v_plain = u_override_color == 1 ? u_color : a_color;
+    v_plain.rgb = mix(v_plain.rgb, vec3(0.84, 0.85, 0.87), u_fade); // dimmed: towards a light grey
+    v_marked = u_use_mark == 1 ? u_mark_color : v_plain;
+    v_marked.rgb = u_use_mark == 1 ? mix(v_marked.rgb, vec3(0.84, 0.85, 0.87), u_fade) : v_plain.rgb;
+    v_marked_now = (u_use_mark == 1 && a_mark > 0.5) ? 1u : 0u;
+    v_id = u_use_mark == 1 ? uint(gl_VertexID / 3 + 1) : 0u;
     vec3 q;
     if (u_ortho == 1) {
         q = c + vec3(a_corner * r, 0.0);
@@ -130,10 +142,16 @@ const char* kSphereFs = "#version 330 core\n" SPT_GLSL_SHADE R"(
 in vec3 v_quad;
 flat in vec3 v_center;
 flat in float v_radius;
-flat in vec4 v_color;
+flat in vec4 v_plain;
+flat in vec4 v_marked;
+flat in uint v_marked_now;
+flat in uint v_id;
 uniform mat4 u_projection;
 uniform int u_ortho;
-out vec4 frag_color;
+layout(location = 0) out vec4 frag_color;
+layout(location = 1) out vec4 frag_plain;  // the pixel if the sphere were not marked
+layout(location = 2) out vec4 frag_marked; // the pixel if it were marked
+layout(location = 3) out uint frag_id;     // v_id
 void main() {
     vec3 o = u_ortho == 1 ? v_quad : vec3(0.0);
     vec3 dir = u_ortho == 1 ? vec3(0.0, 0.0, -1.0) : normalize(v_quad);
@@ -150,8 +168,11 @@ void main() {
     gl_FragDepth = depth;
     // Darker rim separates touching spheres of the same colour.
     float facing = clamp(dot(n, -dir), 0.0, 1.0);
-    vec3 c = shade(v_color.rgb, n) * mix(0.55, 1.0, smoothstep(0.0, 0.45, facing));
-    frag_color = vec4(c, v_color.a);
+    float rim_shade = mix(0.55, 1.0, smoothstep(0.0, 0.45, facing));
+    frag_plain = vec4(shade(v_plain.rgb, n) * rim_shade, v_plain.a);
+    frag_marked = vec4(shade(v_marked.rgb, n) * rim_shade, v_marked.a);
+    frag_color = v_marked_now == 1u ? frag_marked : frag_plain;
+    frag_id = v_id;
 }
 )";
 
@@ -200,8 +221,12 @@ void main() {
 
 const char* kCircleFs = R"(#version 330 core
 in vec4 v_color;
-out vec4 frag_color;
-void main() { frag_color = v_color; }
+layout(location = 0) out vec4 frag_color;
+layout(location = 1) out vec4 frag_cover;
+void main() {
+    frag_color = v_color;
+    frag_cover = vec4(0.0, 0.0, 0.0, v_color.a);
+}
 )";
 
 GLuint compile(const GlFunctions& gl, GLenum type, const char* source, const char* name) {
@@ -219,7 +244,9 @@ GLuint compile(const GlFunctions& gl, GLenum type, const char* source, const cha
     return s;
 }
 
-GLuint link(const GlFunctions& gl, const char* vs, const char* fs, const char* name) {
+} // namespace
+
+GLuint link_program(const GlFunctions& gl, const char* vs, const char* fs, const char* name) {
     const GLuint v = compile(gl, GL_VERTEX_SHADER, vs, name);
     const GLuint f = compile(gl, GL_FRAGMENT_SHADER, fs, name);
     const GLuint p = gl.CreateProgram();
@@ -239,22 +266,20 @@ GLuint link(const GlFunctions& gl, const char* vs, const char* fs, const char* n
     return p;
 }
 
-} // namespace
-
 Programs build_programs(const GlFunctions& gl) {
     Programs p;
     auto loc = [&](GLuint prog, const char* n) { return gl.GetUniformLocation(prog, n); };
-    p.mesh.id = link(gl, kMeshVs, kMeshFs, "mesh");
+    p.mesh.id = link_program(gl, kMeshVs, kMeshFs, "mesh");
     p.mesh.model_view = loc(p.mesh.id, "u_model_view");
     p.mesh.projection = loc(p.mesh.id, "u_projection");
     p.mesh.normal_matrix = loc(p.mesh.id, "u_normal_matrix");
     p.mesh.color = loc(p.mesh.id, "u_color");
     p.mesh.smooth = loc(p.mesh.id, "u_smooth");
-    p.line.id = link(gl, kLineVs, kLineFs, "line");
+    p.line.id = link_program(gl, kLineVs, kLineFs, "line");
     p.line.mvp = loc(p.line.id, "u_mvp");
     p.line.point_size = loc(p.line.id, "u_point_size");
     p.line.round_points = loc(p.line.id, "u_round_points");
-    p.sphere.id = link(gl, kSphereVs, kSphereFs, "sphere");
+    p.sphere.id = link_program(gl, kSphereVs, kSphereFs, "sphere");
     p.sphere.model_view = loc(p.sphere.id, "u_model_view");
     p.sphere.projection = loc(p.sphere.id, "u_projection");
     p.sphere.ortho = loc(p.sphere.id, "u_ortho");
@@ -263,16 +288,17 @@ Programs build_programs(const GlFunctions& gl) {
     p.sphere.color = loc(p.sphere.id, "u_color");
     p.sphere.use_mark = loc(p.sphere.id, "u_use_mark");
     p.sphere.mark_color = loc(p.sphere.id, "u_mark_color");
-    p.circle.id = link(gl, kCircleVs, kCircleFs, "circle");
+    p.circle.id = link_program(gl, kCircleVs, kCircleFs, "circle");
     p.circle.view = loc(p.circle.id, "u_view");
     p.circle.projection = loc(p.circle.id, "u_projection");
     p.circle.ortho = loc(p.circle.id, "u_ortho");
     p.circle.alpha = loc(p.circle.id, "u_alpha");
+    build_layer_programs(gl, p);
     return p;
 }
 
 void delete_programs(const GlFunctions& gl, Programs& p) {
-    for (GLuint* id : {&p.mesh.id, &p.line.id, &p.sphere.id, &p.circle.id})
+    for (GLuint* id : {&p.mesh.id, &p.line.id, &p.sphere.id, &p.circle.id, &p.composite.id})
         if (*id) gl.DeleteProgram(*id), *id = 0;
 }
 

@@ -38,12 +38,26 @@ struct CircleProgram {
     GLint view = -1, projection = -1, ortho = -1, alpha = -1;
 };
 
+// A view's layers put together: the overlay layer over the base layer, marked spheres in their
+// current colour (shaders_layers.cpp).
+struct CompositeProgram {
+    GLuint id = 0;
+    GLint base = -1, cover = -1, transmittance = -1, ids = -1, plain = -1, marked = -1, marks = -1;
+    GLint use_marks = -1, origin = -1;
+};
+
 struct Programs {
     MeshProgram mesh;
     LineProgram line;
     SphereProgram sphere;
     CircleProgram circle;
+    CompositeProgram composite;
 };
+
+// Compiles and links a program from GLSL sources; throws std::runtime_error naming it with the log.
+GLuint link_program(const GlFunctions& gl, const char* vs, const char* fs, const char* name);
+// Links the composite program into `p` (shaders_layers.cpp).
+void build_layer_programs(const GlFunctions& gl, Programs& p);
 
 // Compiles and links every program; throws std::runtime_error with the compiler log.
 Programs build_programs(const GlFunctions& gl);

@@ -121,3 +121,33 @@ TEST(SelectionUi, EscapeCancelsADrag) {
     QTest::mouseRelease(v, Qt::LeftButton, Qt::NoModifier, QPoint(v->width() - 1, v->height() - 1));
     EXPECT_EQ(w.document().selection().size(), w.document().samples().size()) << w.last_message().toStdString();
 }
+
+TEST(SelectionUi, SelectionChangeShowsInEveryViewAsAFullRedrawWould) {
+    TempDir dir("editor-select-redraw");
+    std::string error;
+    const auto window = open_editor(dir, write_editor_files(dir).spt, &error);
+    ASSERT_TRUE(window) << error;
+    editor::MainWindow& w = *window;
+    editor::ViewWidget* front = w.grid().view(1);
+    QTest::mousePress(front, Qt::LeftButton, Qt::NoModifier, QPoint(1, 1));
+    QTest::mouseRelease(front, Qt::LeftButton, Qt::NoModifier, QPoint(front->width() / 2, front->height() / 2));
+    ASSERT_FALSE(w.document().selection().empty());
+    std::vector<QImage> recoloured;
+    for (int i = 0; i < 4; ++i) {
+        recoloured.push_back(w.grid().view(i)->grabFramebuffer());
+        EXPECT_EQ(w.grid().view(i)->last_draw_kind(), render::DrawKind::Recoloured) << "view " << i;
+    }
+    // Another size and back: every view draws everything again, through the same camera.
+    const QSize size = w.size();
+    w.resize(size + QSize(40, 30));
+    QTest::qWait(50);
+    for (int i = 0; i < 4; ++i) w.grid().view(i)->grabFramebuffer();
+    w.resize(size);
+    QTest::qWait(50);
+    for (int i = 0; i < 4; ++i) {
+        // The paint after the resize drew everything; the grab composites those layers again.
+        EXPECT_EQ(w.grid().view(i)->last_draw_kind(), render::DrawKind::Full) << "view " << i;
+        const QImage full = w.grid().view(i)->grabFramebuffer();
+        EXPECT_TRUE(full == recoloured[size_t(i)]) << "view " << i << " differs from its full redraw";
+    }
+}

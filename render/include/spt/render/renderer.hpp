@@ -26,6 +26,13 @@ struct Viewport {
 /// left), camera (lower right), with a one-pixel separator between them.
 std::array<Viewport, 4> quad_viewports(int width, int height);
 
+/// How Renderer::draw made its last picture.
+enum class DrawKind {
+    Full,        ///< every pass drawn into the layers, then composited
+    Recoloured,  ///< the cached layers composited with the marked spheres' pixels in their new colour
+    Composited,  ///< the cached layers composited again
+};
+
 /// Draws frames into the current context's framebuffers.
 class Renderer {
 public:
@@ -45,7 +52,7 @@ public:
     void remove_mesh(MeshHandle mesh);
     /// Uploads solid spheres (object frame, model units) for instanced drawing and returns the set's handle.
     SphereSetHandle add_spheres(const std::vector<SphereInstance>& spheres);
-    /// Replaces the spheres of a set (e.g. new colours after a split); throws
+    /// Replaces the spheres of a set (e.g. new colours after a split) and unmarks them all; throws
     /// std::invalid_argument for an unknown handle.
     void update_spheres(SphereSetHandle set, const std::vector<SphereInstance>& spheres);
     /// Marks spheres `marked` (indices into the set, any order; out-of-range ones ignored) and
@@ -59,15 +66,22 @@ public:
 
     /// World-frame box around everything `frame` shows (the grid excepted), model units.
     Bounds bounds(const Frame& frame) const;
-    /// Clears `viewport` of `framebuffer` (a GL framebuffer object name, such as
-    /// OffscreenContext::framebuffer() or QOpenGLWidget::defaultFramebufferObject()) and
-    /// draws `frame` through `camera` into it. Throws std::invalid_argument for an unknown
-    /// mesh or sphere-set handle in the frame.
+    /// Writes every colour pixel of `viewport` of `framebuffer` (a GL framebuffer object name, such
+    /// as OffscreenContext::framebuffer() or QOpenGLWidget::defaultFramebufferObject(); its depth
+    /// buffer is left alone) with `frame` drawn through `camera`. Throws std::invalid_argument for
+    /// an unknown mesh or sphere-set handle in the frame. The frame is drawn into layers (about 30
+    /// bytes a pixel) kept until the next draw and composited into the viewport; a draw of the same frame, camera and viewport
+    /// size (its uploads unchanged) only composites them again, also when its only change is
+    /// set_sphere_marks (the layers keep both colours of each marked sphere's pixels): the same
+    /// pixels as a full draw, at a cost that depends on the viewport's size alone.
     void draw(const Frame& frame, const Camera& camera, const Viewport& viewport, uint32_t framebuffer);
     /// Draws the 2x2 layout (cameras in fit_quad_cameras order) over a width x height target
     /// (pixels); the one-pixel separators are the frame's background darkened.
     void draw_quad(const Frame& frame, const std::array<Camera, 4>& cameras, int width, int height,
                    uint32_t framebuffer);
+
+    /// How the last draw() (or the last view of draw_quad()) was made.
+    DrawKind last_draw_kind() const;
 
     /// GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     const std::string& gl_renderer() const;

@@ -1,0 +1,156 @@
+// The renderer's frame cache: the layer textures of the last frame, when a frame may reuse them,
+// and compositing the layers (with the spheres' current marks) into the target.
+#include "renderer_impl.hpp"
+#include <algorithm>
+#include <stdexcept>
+
+namespace spt::render {
+namespace {
+
+// A 2D texture of `width` x `height` read with texelFetch.
+GLuint make_texture(const detail::GlFunctions& gl, GLint internal, GLenum format, GLenum type, int width, int height) {
+    GLuint t = 0;
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_2D, t);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, internal, width, height, 0, format, type, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+void attach(const detail::GlFunctions& gl, GLenum attachment, GLuint texture) {
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
+}
+
+void bind_unit(const detail::GlFunctions& gl, int unit, GLenum target, GLuint texture, GLint sampler) {
+    gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    gl.BindTexture(target, texture);
+    gl.Uniform1i(sampler, unit);
+}
+
+} // namespace
+
+void Renderer::Impl::free_layers() {
+    FrameLayers& l = layers;
+    GLuint fbos[] = {l.base_fbo, l.overlay_fbo};
+    GLuint textures[] = {l.base, l.plain, l.marked, l.ids, l.depth, l.cover, l.transmittance};
+    if (l.base_fbo) {
+        gl.DeleteFramebuffers(2, fbos);
+        gl.DeleteTextures(7, textures);
+    }
+    const GLuint empty_vao = l.empty_vao, marks_texture = l.marks_texture;
+    l = FrameLayers{};
+    l.empty_vao = empty_vao, l.marks_texture = marks_texture;
+}
+
+void Renderer::Impl::resize_layers(int width, int height) {
+    FrameLayers& l = layers;
+    if (!l.empty_vao) gl.GenVertexArrays(1, &l.empty_vao);
+    if (!l.marks_texture) gl.GenTextures(1, &l.marks_texture);
+    if (l.base_fbo && l.width == width && l.height == height) return;
+    free_layers();
+    l.width = width, l.height = height;
+    l.base = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    l.plain = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    l.marked = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    l.ids = make_texture(gl, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, width, height);
+    l.depth = make_texture(gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width, height);
+    l.cover = make_texture(gl, GL_RGBA16F, GL_RGBA, GL_FLOAT, width, height);
+    l.transmittance = make_texture(gl, GL_R16F, GL_RED, GL_FLOAT, width, height);
+    gl.GenFramebuffers(1, &l.base_fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, l.base_fbo);
+    attach(gl, GL_COLOR_ATTACHMENT0, l.base);
+    attach(gl, GL_COLOR_ATTACHMENT1, l.plain);
+    attach(gl, GL_COLOR_ATTACHMENT2, l.marked);
+    attach(gl, GL_COLOR_ATTACHMENT3, l.ids);
+    attach(gl, GL_DEPTH_ATTACHMENT, l.depth);
+    const bool base_ok = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    gl.GenFramebuffers(1, &l.overlay_fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, l.overlay_fbo);
+    attach(gl, GL_COLOR_ATTACHMENT0, l.cover);
+    attach(gl, GL_COLOR_ATTACHMENT1, l.transmittance);
+    attach(gl, GL_DEPTH_ATTACHMENT, l.depth);
+    const bool overlay_ok = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    check_gl(gl, "Renderer: frame layers");
+    if (!base_ok || !overlay_ok) throw std::runtime_error("Renderer: frame layers are incomplete");
+}
+
+Renderer::Impl::Reuse Renderer::Impl::reuse(const Frame& f, const Camera& cam, int width, int height) const {
+    const FrameLayers& l = layers;
+    if (!l.valid || l.width != width || l.height != height || !detail::same_camera(cam, l.camera) ||
+        !detail::same_frame(f, l.frame))
+        return Reuse::None;
+    bool marks_changed = false;
+    for (const auto& [id, revision] : l.revisions) {
+        auto it = sphere_sets.find(id);
+        if (it == sphere_sets.end() || it->second.revision != revision) return Reuse::None;
+    }
+    for (const auto& [id, revision] : l.mark_revisions) {
+        if (sphere_sets.at(id).mark_revision == revision) continue;
+        if (id != l.mark_set) return Reuse::None;
+        marks_changed = true;
+    }
+    return marks_changed ? Reuse::Recolour : Reuse::Composite;
+}
+
+void Renderer::Impl::remember(const Frame& f, const Camera& cam) {
+    FrameLayers& l = layers;
+    l.frame = f;
+    l.camera = cam;
+    l.revisions.clear();
+    l.mark_revisions.clear();
+    l.mark_set = 0;
+    bool several = false;
+    for (const SphereItem& item : f.spheres) {
+        const GpuSphereSet& s = sphere_sets.at(item.spheres.id);
+        const auto listed = [&](const std::vector<std::pair<uint32_t, uint64_t>>& v) {
+            return std::any_of(v.begin(), v.end(), [&](auto& r) { return r.first == item.spheres.id; });
+        };
+        if (!listed(l.revisions)) l.revisions.push_back({item.spheres.id, s.revision});
+        // Marks show only through items with a marked colour.
+        if (item.marked_color && !listed(l.mark_revisions)) l.mark_revisions.push_back({item.spheres.id, s.mark_revision});
+        if (item.marked_color) {
+            several = several || (l.mark_set && l.mark_set != item.spheres.id);
+            l.mark_set = item.spheres.id;
+        }
+    }
+    // The ids index one set's marks; trails are drawn over the spheres without clearing the ids.
+    if (several || !f.trails.empty()) l.mark_set = 0;
+    l.valid = true;
+}
+
+void Renderer::Impl::marks_seen() {
+    for (auto& [id, revision] : layers.mark_revisions) revision = sphere_sets.at(id).mark_revision;
+}
+
+void Renderer::Impl::composite(const Viewport& vp, GLuint fbo) {
+    FrameLayers& l = layers;
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.Viewport(vp.x, vp.y, vp.width, vp.height);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(vp.x, vp.y, vp.width, vp.height);
+    gl.Disable(GL_DITHER);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_BLEND);
+    const detail::CompositeProgram& c = prog.composite;
+    gl.UseProgram(c.id);
+    bind_unit(gl, 0, GL_TEXTURE_2D, l.base, c.base);
+    bind_unit(gl, 1, GL_TEXTURE_2D, l.cover, c.cover);
+    bind_unit(gl, 2, GL_TEXTURE_2D, l.transmittance, c.transmittance);
+    bind_unit(gl, 3, GL_TEXTURE_2D, l.ids, c.ids);
+    bind_unit(gl, 4, GL_TEXTURE_2D, l.plain, c.plain);
+    bind_unit(gl, 5, GL_TEXTURE_2D, l.marked, c.marked);
+    bind_unit(gl, 6, GL_TEXTURE_BUFFER, l.marks_texture, c.marks);
+    if (l.mark_set) gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sphere_sets.at(l.mark_set).mark_vbo);
+    gl.Uniform1i(c.use_marks, l.mark_set ? 1 : 0);
+    gl.Uniform2i(c.origin, vp.x, vp.y);
+    gl.BindVertexArray(l.empty_vao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.BindVertexArray(0);
+    gl.UseProgram(0);
+}
+
+} // namespace spt::render

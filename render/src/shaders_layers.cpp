@@ -1,0 +1,60 @@
+// GLSL 3.30 source of the full-view pass that puts a view's cached layers together.
+#include "shaders.hpp"
+
+namespace spt::render::detail {
+namespace {
+
+// One triangle over the whole viewport; no vertex arrays read.
+const char* kFullViewVs = R"(#version 330 core
+void main() {
+    vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
+    gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+
+// out = cover + transmittance * base: the see-through passes "over" the base, as blending them one
+// by one onto it would (in half floats, rounded to the target once). A base pixel of a sphere drawn with marks takes
+// the colour the sphere pass stored for its current mark, so a change of marks needs no drawing.
+const char* kCompositeFs = R"(#version 330 core
+uniform sampler2D u_base;
+uniform sampler2D u_cover;
+uniform sampler2D u_transmittance;
+uniform usampler2D u_ids;
+uniform sampler2D u_plain;
+uniform sampler2D u_marked;
+uniform usamplerBuffer u_marks;
+uniform int u_use_marks;
+uniform ivec2 u_origin;
+out vec4 frag_color;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy) - u_origin;
+    uint id = u_use_marks == 1 ? texelFetch(u_ids, p, 0).r : 0u;
+    vec4 base;
+    if (id == 0u)
+        base = texelFetch(u_base, p, 0);
+    else if (texelFetch(u_marks, int(3u * (id - 1u))).r != 0u)
+        base = texelFetch(u_marked, p, 0);
+    else
+        base = texelFetch(u_plain, p, 0);
+    frag_color = texelFetch(u_cover, p, 0) + texelFetch(u_transmittance, p, 0).r * base;
+}
+)";
+
+} // namespace
+
+void build_layer_programs(const GlFunctions& gl, Programs& p) {
+    auto loc = [&](GLuint prog, const char* n) { return gl.GetUniformLocation(prog, n); };
+    CompositeProgram& c = p.composite;
+    c.id = link_program(gl, kFullViewVs, kCompositeFs, "composite");
+    c.base = loc(c.id, "u_base");
+    c.cover = loc(c.id, "u_cover");
+    c.transmittance = loc(c.id, "u_transmittance");
+    c.ids = loc(c.id, "u_ids");
+    c.plain = loc(c.id, "u_plain");
+    c.marked = loc(c.id, "u_marked");
+    c.marks = loc(c.id, "u_marks");
+    c.use_marks = loc(c.id, "u_use_marks");
+    c.origin = loc(c.id, "u_origin");
+}
+
+} // namespace spt::render::detail
