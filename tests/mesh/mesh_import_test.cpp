@@ -201,3 +201,31 @@ TEST(MeshImport, OpenPartsAreMarkedPerTriangleAndClosedPartsAreNot) {
         EXPECT_EQ(m.mesh.on_open_part[f], sheet ? 1 : 0) << "face " << f;
     }
 }
+
+TEST(MeshImport, ClosedBodyTouchedByAFlapAlongANonManifoldEdgeStaysClosed) {
+    // A cube with a flap glued on along one of its edges (three faces on that edge): the cube
+    // is still a solid, the flap alone is open (the Wuson's body and flaps).
+    auto cube = meshgen::box(1, 1, 1, 1);
+    std::vector<Eigen::Vector3d> p = cube.positions;
+    std::vector<Triangle> t = cube.triangles;
+    const Triangle first = t[0];
+    const Eigen::Vector3d out = 0.5 * (p[first[0]] + p[first[1]]) + 2.0 * p[first[0]].normalized();
+    p.push_back(out);
+    t.push_back({first[0], first[1], uint32_t(p.size() - 1)});
+    const ImportedMesh m = prepare_mesh("cube with flap", std::move(p), std::move(t));
+    EXPECT_EQ(m.report.nonmanifold_edges, 1u);
+    ASSERT_EQ(m.mesh.on_open_part.size(), m.mesh.triangles.size());
+    for (size_t f = 0; f < m.mesh.triangles.size(); ++f) {
+        const bool flap = f + 1 == m.mesh.triangles.size();
+        EXPECT_EQ(m.mesh.on_open_part[f], flap ? 1 : 0) << "face " << f;
+    }
+}
+
+TEST(MeshImport, TwoClosedBodiesSharingAnEdgeAreBothClosed) {
+    meshgen::RawMesh two = meshgen::box(1, 1, 1, 1);
+    two.append(meshgen::box(1, 1, 1, 1), Eigen::Vector3d(1, 1, 0)); // the edge x = y = 0.5 is shared
+    const ImportedMesh m = meshgen::prepare(two, "two cubes");
+    EXPECT_EQ(m.report.nonmanifold_edges, 1u);
+    for (size_t f = 0; f < m.mesh.triangles.size(); ++f) EXPECT_EQ(m.mesh.on_open_part[f], 0) << "face " << f;
+    EXPECT_EQ(m.report.inverted_components, 0u);
+}

@@ -18,7 +18,7 @@ struct ConvertOptions {
     std::optional<double> tolerance;
     /// How far a sampling sphere may poke out of the mesh, model units. Default: an eighth
     /// of the tolerance if set, else kDefaultProtrusion x the mesh diagonal. Two-sided spheres (open
-    /// parts) take up to this, or without it half the tolerance (docs/sampling.md).
+    /// parts) take up to this, or without it a quarter of the tolerance (docs/sampling.md).
     std::optional<double> protrusion;
     std::string tree_name = "default"; ///< name of the tree in the document
     /// Without a tolerance: if vertex samples alone would leave the surface uncovered deeper

@@ -62,9 +62,9 @@ void stage(const ConvertOptions& o, const TriangleMesh& mesh, const char* name) 
     if (name && o.on_stage) o.on_stage(name);
 }
 
-} // namespace
-
-SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats) {
+// make_document; `two_sided_share` of a tolerance is the two-sided radius (see below).
+SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats,
+                    double two_sided_share) {
     ConvertStats local;
     ConvertStats& st = stats ? *stats : local;
     if (options.tolerance && (!(*options.tolerance > 0) || !std::isfinite(*options.tolerance)))
@@ -76,10 +76,12 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
                            : (options.tolerance ? *options.tolerance / 8 : kDefaultProtrusion * mesh.diagonal());
     if (!(protrusion > 0) || !std::isfinite(protrusion)) throw Error(ErrorKind::Usage, "protrusion must be positive");
     // A two-sided sphere (open part) pokes out of either side of the surface by exactly its
-    // radius, with no edge or thin wall to pass: it may take the object's whole share of a
-    // tolerance, half of it (the default allowance without one: the automatic tolerance's half).
+    // radius, with no edge or thin wall to pass: a quarter of a tolerance the caller gives, so
+    // that two shells together take half of it and surfaces a tolerance apart are not reported
+    // as touching; without one, the default allowance (the automatic tolerance's half).
     const double two_sided_radius =
-        options.protrusion ? *options.protrusion : (options.tolerance ? *options.tolerance / 2 : protrusion);
+        options.protrusion ? *options.protrusion
+                           : (options.tolerance ? *options.tolerance * two_sided_share : protrusion);
 
     if (mesh.positions.size() > kMaxSourceIndex || mesh.triangles.size() > kMaxSourceIndex)
         throw_bad_input(mesh.name, "more than " + std::to_string(kMaxSourceIndex) + " vertices or triangles");
@@ -111,7 +113,7 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
         ConvertOptions with_faces = options;
         with_faces.tolerance = automatic;
         ConvertStats again;
-        SptDocument sampled = make_document(mesh, with_faces, &again);
+        SptDocument sampled = convert(mesh, with_faces, &again, 0.5); // two-sided radius: the allowance
         again.automatic_tolerance = automatic;
         again.uncovered_open_faces = gaps.uncovered_open;
         again.sample_seconds += st.sample_seconds, again.build_seconds += st.build_seconds;
@@ -148,6 +150,12 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
     st.face_samples = doc.samples.size() - vertex_samples.size();
     doc.trees.push_back(std::move(tree));
     return doc;
+}
+
+} // namespace
+
+SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats) {
+    return convert(mesh, options, stats, 0.25);
 }
 
 SptDocument load_or_convert(const std::string& path, const ConvertOptions& options) {

@@ -60,8 +60,8 @@ double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) 
     return v / 6.0;
 }
 
-// For each closed component: how many other closed components hold it (ray parity from one
-// of its vertices, exact). Components hold each other only where bounding boxes nest.
+// For each closed part: how many other closed parts hold it (ray parity from one of its
+// vertices, exact). Parts hold each other only where bounding boxes nest.
 std::vector<int> nesting_depths(const TriangleMesh& m, const std::vector<std::vector<uint32_t>>& components) {
     std::vector<int> depth(components.size(), 0);
     std::vector<Eigen::AlignedBox3d> box(components.size());
@@ -222,15 +222,22 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         while (comp_parent[x] != x) x = comp_parent[x] = comp_parent[comp_parent[x]];
         return x;
     };
-    std::vector<uint8_t> face_on_open_edge(m.triangles.size(), 0);
+    // Parts: faces connected across manifold edges only. A part is closed when each edge of its
+    // faces is used by exactly two of them: a closed body that a flap or fin touches along a
+    // non-manifold edge stays a solid, and only the flap is open.
+    std::vector<uint32_t> part_parent(m.triangles.size());
+    std::iota(part_parent.begin(), part_parent.end(), 0);
+    auto find_part = [&](uint32_t x) {
+        while (part_parent[x] != x) x = part_parent[x] = part_parent[part_parent[x]];
+        return x;
+    };
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
         while (j < edges.size() && edges[j].key == edges[i].key) ++j;
         const size_t uses = j - i;
         if (uses == 1) ++r.boundary_edges;
         if (uses >= 3) ++r.nonmanifold_edges;
-        if (uses != 2)
-            for (size_t k = i; k < j; ++k) face_on_open_edge[edges[k].face] = 1;
+        if (uses == 2) part_parent[find_part(edges[i].face)] = find_part(edges[i + 1].face);
         for (size_t k = i + 1; k < j; ++k) comp_parent[find(edges[k].face)] = find(edges[i].face);
         if (uses == 2) {
             const bool same = edges[i].forward == edges[i + 1].forward; // same direction: inconsistent
@@ -253,10 +260,29 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
     r.components = components.size();
     r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
+    std::vector<uint8_t> part_open(m.triangles.size(), 0); // by part root
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        for (size_t k = i; k < j; ++k) { // a part using this edge other than twice is open
+            const uint32_t part = find_part(edges[k].face);
+            size_t own = 0;
+            for (size_t l = i; l < j; ++l) own += find_part(edges[l].face) == part;
+            if (own != 2) part_open[part] = 1;
+        }
+        i = j;
+    }
+    std::vector<std::vector<uint32_t>> parts;
+    {
+        std::vector<int64_t> index_of_root(m.triangles.size(), -1);
+        for (uint32_t f = 0; f < m.triangles.size(); ++f) {
+            const uint32_t root = find_part(f);
+            if (index_of_root[root] < 0) index_of_root[root] = int64_t(parts.size()), parts.emplace_back();
+            parts[size_t(index_of_root[root])].push_back(f);
+        }
+    }
     m.on_open_part.assign(m.triangles.size(), 0);
-    for (const auto& comp : components)
-        if (std::any_of(comp.begin(), comp.end(), [&](uint32_t f) { return face_on_open_edge[f] != 0; }))
-            for (uint32_t f : comp) m.on_open_part[f] = 1;
+    for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[find_part(f)];
 
     if (options.fix_orientation) {
         // Breadth-first over manifold edges: a neighbour walking the shared edge the same
@@ -298,9 +324,9 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
                                  " edges disagree after re-winding)");
         // A closed part faces out of the solid: positive volume, unless it is the inner wall
         // of a hollow (inside an odd number of other closed parts), which faces the cavity.
-        const std::vector<int> nesting = nesting_depths(m, components);
-        for (size_t c = 0; c < components.size(); ++c) {
-            const auto& comp = components[c];
+        const std::vector<int> nesting = nesting_depths(m, parts);
+        for (size_t c = 0; c < parts.size(); ++c) {
+            const auto& comp = parts[c];
             if (!m.on_open_part[comp[0]] && (signed_volume(m, comp) < 0) != (nesting[c] % 2 == 1)) {
                 for (uint32_t f : comp) std::swap(m.triangles[f][1], m.triangles[f][2]);
                 ++r.inverted_components;
