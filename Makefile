@@ -39,7 +39,7 @@ fuzz: deps
 SANITIZE_BUILD ?= build-sanitize
 SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 SANITIZE_TARGETS := spt mesh_tests sampling_tests tree_tests geometry_tests query_tests query_alloc_tests io_tests \
-  convert_tests hard_tests hard_extreme_tests cli_tests fuzzers spt-make-resources
+  convert_tests hard_tests hard_extreme_tests cli_tests scene_tests selection_tests fuzzers spt-make-resources spt-make-scenes
 SANITIZE_SKIP := _NOT_BUILT|^Install\.|^editor\.|^render\.
 SANITIZE_ONLY := .
 sanitize: deps
