@@ -90,6 +90,7 @@ private:
     void run_contacts(StepCounters& c);
     void respond(StepCounters& c);
     bool respond_pair(const PairContact& pc, const std::vector<SpherePair>& start_pairs, QueryScratch& scratch);
+    bool dynamic(uint32_t i) const { return scene_.objects[i].motion == MotionKind::Velocity; }
     Scene scene_;
     EffectSet effects_;
     int threads_;

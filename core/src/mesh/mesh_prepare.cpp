@@ -20,6 +20,37 @@ struct HalfEdge {
     bool forward;  // face walks min -> max
 };
 
+// Faces in disjoint sets (union-find with path halving).
+class DisjointFaces {
+public:
+    explicit DisjointFaces(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+    uint32_t find(uint32_t x) {
+        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+        return x;
+    }
+    void join(uint32_t a, uint32_t b) { parent_[find(a)] = find(b); }
+    // Number of sets.
+    size_t count() {
+        size_t n = 0;
+        for (uint32_t f = 0; f < parent_.size(); ++f) n += find(f) == f;
+        return n;
+    }
+    // The faces of each set, sets in the order of their first face, faces ascending.
+    std::vector<std::vector<uint32_t>> groups() {
+        std::vector<std::vector<uint32_t>> out;
+        std::vector<int64_t> index_of_root(parent_.size(), -1);
+        for (uint32_t f = 0; f < parent_.size(); ++f) {
+            const uint32_t root = find(f);
+            if (index_of_root[root] < 0) index_of_root[root] = int64_t(out.size()), out.emplace_back();
+            out[size_t(index_of_root[root])].push_back(f);
+        }
+        return out;
+    }
+
+private:
+    std::vector<uint32_t> parent_;
+};
+
 // Offsets of a counting sort by `bucket` (values below `buckets`): out[b] is where bucket b
 // starts, out[buckets] the total.
 template <class Bucket> std::vector<uint32_t> bucket_starts(size_t count, size_t buckets, Bucket bucket) {
@@ -216,73 +247,42 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         const std::pair<uint32_t, bool>* end() const { return face.data() + count; }
     };
     std::vector<Neighbours> manifold_nbrs(m.triangles.size());
-    std::vector<uint32_t> comp_parent(m.triangles.size());
-    std::iota(comp_parent.begin(), comp_parent.end(), 0);
-    auto find = [&](uint32_t x) {
-        while (comp_parent[x] != x) x = comp_parent[x] = comp_parent[comp_parent[x]];
-        return x;
-    };
+    DisjointFaces components(m.triangles.size()); // joined across every shared edge
     // Parts: faces connected across manifold edges only. A part is closed when each edge of its
     // faces is used by exactly two of them: a closed body that a flap or fin touches along a
     // non-manifold edge stays a solid, and only the flap is open.
-    std::vector<uint32_t> part_parent(m.triangles.size());
-    std::iota(part_parent.begin(), part_parent.end(), 0);
-    auto find_part = [&](uint32_t x) {
-        while (part_parent[x] != x) x = part_parent[x] = part_parent[part_parent[x]];
-        return x;
-    };
+    DisjointFaces parts(m.triangles.size());
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
         while (j < edges.size() && edges[j].key == edges[i].key) ++j;
         const size_t uses = j - i;
         if (uses == 1) ++r.boundary_edges;
         if (uses >= 3) ++r.nonmanifold_edges;
-        if (uses == 2) part_parent[find_part(edges[i].face)] = find_part(edges[i + 1].face);
-        for (size_t k = i + 1; k < j; ++k) comp_parent[find(edges[k].face)] = find(edges[i].face);
+        for (size_t k = i + 1; k < j; ++k) components.join(edges[k].face, edges[i].face);
         if (uses == 2) {
+            parts.join(edges[i].face, edges[i + 1].face);
             const bool same = edges[i].forward == edges[i + 1].forward; // same direction: inconsistent
             manifold_nbrs[edges[i].face].push_back({edges[i + 1].face, same});
             manifold_nbrs[edges[i + 1].face].push_back({edges[i].face, same});
         }
         i = j;
     }
-    std::vector<std::vector<uint32_t>> components;
-    {
-        std::vector<int64_t> comp_of_root(m.triangles.size(), -1);
-        for (uint32_t f = 0; f < m.triangles.size(); ++f) {
-            const uint32_t root = find(f);
-            if (comp_of_root[root] < 0) {
-                comp_of_root[root] = int64_t(components.size());
-                components.emplace_back();
-            }
-            components[size_t(comp_of_root[root])].push_back(f);
-        }
-    }
-    r.components = components.size();
+    r.components = components.count();
     r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
     std::vector<uint8_t> part_open(m.triangles.size(), 0); // by part root
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
         while (j < edges.size() && edges[j].key == edges[i].key) ++j;
         for (size_t k = i; k < j; ++k) { // a part using this edge other than twice is open
-            const uint32_t part = find_part(edges[k].face);
+            const uint32_t part = parts.find(edges[k].face);
             size_t own = 0;
-            for (size_t l = i; l < j; ++l) own += find_part(edges[l].face) == part;
+            for (size_t l = i; l < j; ++l) own += parts.find(edges[l].face) == part;
             if (own != 2) part_open[part] = 1;
         }
         i = j;
     }
-    std::vector<std::vector<uint32_t>> parts;
-    {
-        std::vector<int64_t> index_of_root(m.triangles.size(), -1);
-        for (uint32_t f = 0; f < m.triangles.size(); ++f) {
-            const uint32_t root = find_part(f);
-            if (index_of_root[root] < 0) index_of_root[root] = int64_t(parts.size()), parts.emplace_back();
-            parts[size_t(index_of_root[root])].push_back(f);
-        }
-    }
     m.on_open_part.assign(m.triangles.size(), 0);
-    for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[find_part(f)];
+    for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[parts.find(f)];
 
     if (options.fix_orientation) {
         // Breadth-first over manifold edges: a neighbour walking the shared edge the same
@@ -324,9 +324,10 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
                                  " edges disagree after re-winding)");
         // A closed part faces out of the solid: positive volume, unless it is the inner wall
         // of a hollow (inside an odd number of other closed parts), which faces the cavity.
-        const std::vector<int> nesting = nesting_depths(m, parts);
-        for (size_t c = 0; c < parts.size(); ++c) {
-            const auto& comp = parts[c];
+        const std::vector<std::vector<uint32_t>> part_faces = parts.groups();
+        const std::vector<int> nesting = nesting_depths(m, part_faces);
+        for (size_t c = 0; c < part_faces.size(); ++c) {
+            const auto& comp = part_faces[c];
             if (!m.on_open_part[comp[0]] && (signed_volume(m, comp) < 0) != (nesting[c] % 2 == 1)) {
                 for (uint32_t f : comp) std::swap(m.triangles[f][1], m.triangles[f][2]);
                 ++r.inverted_components;

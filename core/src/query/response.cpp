@@ -118,11 +118,10 @@ Eigen::Vector3d back_direction(const Eigen::Vector3d& motion) {
     return -(motion / big).normalized();
 }
 
-} // namespace
-
-BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
-                                   const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
-                                   BacktrackRule rule, QueryScratch& scratch) {
+// backtrack_relative; `start_pairs` (may be null) as for backtrack_from_pairs.
+BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                         const Eigen::Vector3d& motion_in_a, const QueryOptions& options, BacktrackRule rule,
+                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch) {
     BacktrackResult r;
     const Eigen::Vector3d back = back_direction(motion_in_a);
     if (back.isZero()) return r; // no motion: no direction to move back along
@@ -135,17 +134,32 @@ BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel
         return r;
     }
     if (options.level == QueryLevel::Exact) return by_bisection(a, b, b_in_a, back, options, scratch);
-    return by_exit_roots(a, b, b_in_a, back, options, nullptr, scratch);
+    return by_exit_roots(a, b, b_in_a, back, options, start_pairs, scratch);
+}
+
+// backtrack; `start_pairs` (may be null) as for backtrack_from_pairs.
+BacktrackResult in_world(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
+                         const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
+                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch) {
+    check_pose(pose_a, "pose of A");
+    check_pose(pose_b, "pose of B");
+    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
+    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
+    return relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, start_pairs, scratch);
+}
+
+} // namespace
+
+BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                                   const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
+                                   BacktrackRule rule, QueryScratch& scratch) {
+    return relative(a, b, b_in_a, motion_in_a, options, rule, nullptr, scratch);
 }
 
 BacktrackResult backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                           const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
                           QueryScratch& scratch) {
-    check_pose(pose_a, "pose of A");
-    check_pose(pose_b, "pose of B");
-    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
-    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
-    return backtrack_relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, scratch);
+    return in_world(a, pose_a, b, pose_b, motion, options, rule, nullptr, scratch);
 }
 
 } // namespace spt
@@ -155,11 +169,7 @@ namespace spt::detail {
 BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,
                                      const Pose& pose_b, const Eigen::Vector3d& motion, const QueryOptions& options,
                                      const std::vector<SpherePair>& start_pairs, QueryScratch& scratch) {
-    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
-    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
-    const Eigen::Vector3d back = back_direction(ua.rotation.conjugate() * motion);
-    if (back.isZero()) return {};
-    return by_exit_roots(a, b, relative_pose(ua, ub), back, options, &start_pairs, scratch);
+    return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, &start_pairs, scratch);
 }
 
 } // namespace spt::detail

@@ -4,6 +4,7 @@
 #include "base/hash.hpp"
 #include "scene/parallel.hpp"
 #include "scene/pair_work.hpp"
+#include "scene/same_pose.hpp"
 #include "spt/ccd.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
@@ -17,10 +18,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 int64_t ns_since(Clock::time_point t0) {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
-}
-
-bool same_pose(const Pose& p, const Pose& q) {
-    return p.translation == q.translation && p.rotation.coeffs() == q.rotation.coeffs();
 }
 
 void add(QueryCounters& to, const QueryCounters& c) {
@@ -120,7 +117,7 @@ void Simulation::run_contacts(StepCounters& c) {
     spheres_.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const SceneObject& o = scene_.objects[i];
-        moved[i] = !same_pose(poses_[i], previous_[i]);
+        moved[i] = !detail::same_pose(poses_[i], previous_[i]);
         BroadSphere& s = spheres_[i];
         s.is_static = o.motion == MotionKind::Static;
         s.center = poses_[i].apply(o.bound_center);
@@ -139,7 +136,6 @@ void Simulation::run_contacts(StepCounters& c) {
     const QueryLevel level = scene_.level;
     const QueryLevel sphere_level = level == QueryLevel::Bounds ? QueryLevel::Bounds : QueryLevel::Spheres;
     auto model = [&](uint32_t i) -> const CollisionModel& { return *scene_.objects[i].model; };
-    auto dynamic = [&](uint32_t i) { return scene_.objects[i].motion == MotionKind::Velocity; };
 
     if (ccd) {
         t0 = Clock::now();

@@ -2,6 +2,7 @@
 // motion by the scene's rule, velocities reflected about the contact normal. Not a solver.
 #include "query/backtrack_from.hpp"
 #include "scene/parallel.hpp"
+#include "scene/same_pose.hpp"
 #include "spt/error.hpp"
 #include "spt/simulation.hpp"
 #include <algorithm>
@@ -12,7 +13,6 @@ namespace spt {
 void Simulation::respond(StepCounters& c) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<PairContact>& contacts = result_.contacts;
-    auto dynamic = [&](uint32_t i) { return scene_.objects[i].motion == MotionKind::Velocity; };
     // Pairs act in (a, b) order, each seeing the moves of those before it. A pair reads and
     // writes only its dynamic objects (static and path objects are never moved by a response),
     // so it depends only on the earlier pairs sharing one: batch = one after the latest of
@@ -31,11 +31,10 @@ void Simulation::respond(StepCounters& c) {
         batches[size_t(batch)].push_back(k);
     }
     std::vector<uint8_t> acted(contacts.size(), 0);
-    static const std::vector<SpherePair> none;
     for (const std::vector<uint32_t>& batch : batches)
         detail::parallel_for(batch.size(), threads_, [&](size_t i, int w) {
             const uint32_t k = batch[i];
-            acted[k] = respond_pair(contacts[k], k < start_pairs_.size() ? start_pairs_[k] : none, scratch_[size_t(w)]);
+            acted[k] = respond_pair(contacts[k], start_pairs_[k], scratch_[size_t(w)]); // one per contact
         });
     for (uint8_t x : acted) c.responses += x;
     c.ns_response = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
@@ -47,8 +46,7 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     q.level = scene_.level;
     const double e = scene_.response.restitution, dt = scene_.dt;
     const uint32_t a = pc.a, b = pc.b;
-    const bool da = scene_.objects[a].motion == MotionKind::Velocity;
-    const bool db = scene_.objects[b].motion == MotionKind::Velocity;
+    const bool da = dynamic(a), db = dynamic(b);
     // Equal shares between two dynamic objects; all of it to the only dynamic one.
     const double wa = da ? (db ? 0.5 : 1.0) : 0.0, wb = db ? (da ? 0.5 : 1.0) : 0.0;
     const CollisionModel& ma = *scene_.objects[a].model;
@@ -59,11 +57,8 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     const double scale = 1e-12 * (ma.extent() + mb.extent());
     if (!(motion.norm() > scale)) motion = -pc.normal;
     // Depth's pairs stand for the first backtrack query while no earlier pair has moved these two.
-    auto same = [](const Pose& p, const Pose& g) {
-        return p.translation == g.translation && p.rotation.coeffs() == g.rotation.coeffs();
-    };
     const bool reuse = !start_pairs.empty() && scene_.response.rule == BacktrackRule::Exact &&
-                       same(poses_[a], ghost_[a]) && same(poses_[b], ghost_[b]);
+                       detail::same_pose(poses_[a], ghost_[a]) && detail::same_pose(poses_[b], ghost_[b]);
     const BacktrackResult back =
         reuse ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], motion, q, start_pairs, scratch)
               : backtrack(ma, poses_[a], mb, poses_[b], motion, q, scene_.response.rule, scratch);
