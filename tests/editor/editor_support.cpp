@@ -17,6 +17,9 @@ public:
         // Settings and data go to the build tree, never the user's (set before any QSettings).
         const std::string home = std::string(SPT_BINARY_DIR) + "/test-tmp/editor-home-" + std::to_string(::getpid());
         std::filesystem::create_directories(home);
+        // Test mode keeps settings in $HOME/.qttest whatever XDG_CONFIG_HOME says, so without a
+        // home of its own each editor ctest running at once rewrote the others' recent files.
+        ::setenv("HOME", home.c_str(), 1);
         ::setenv("XDG_CONFIG_HOME", (home + "/config").c_str(), 1);
         ::setenv("XDG_DATA_HOME", (home + "/data").c_str(), 1);
         ::setenv("QT_QPA_PLATFORM", "xcb", 1);

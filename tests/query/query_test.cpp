@@ -188,9 +188,46 @@ TEST(Query, ExactOnParallelPlatesAtHairlineGapsMatchesBruteForce) {
     EXPECT_LT(collide, cases);
 }
 
+// Two-sided spheres are tested as discs, then as the faces they lie on, once their balls
+// overlap: the walk and the brute-force reference keep the same pairs in every mode, on open
+// meshes against themselves and against a closed body, with the mesh and from the .spt alone.
+TEST(Query, OpenMeshesAtTheSphereLevelMatchBruteForce) {
+    std::mt19937 rng(17);
+    QueryScratch s1, s2;
+    // Faces sampled (a tolerance, as every default conversion has), coarse enough for brute force.
+    ConvertOptions sampled;
+    sampled.tolerance = 0.2;
+    const auto fan = make_object(make_fan(5), sampled);
+    const auto soup = make_object(make_triangle_soup(40, 0.3, 5), sampled);
+    const CollisionModel fan_spt(fan->doc), soup_spt(soup->doc);
+    struct Pair {
+        const CollisionModel *a, *b;
+    };
+    const Pair pairs[] = {{&fan->model, &fan->model}, {&soup->model, &soup->model}, {&soup->model, &box().model},
+                          {&box().model, &fan->model}, {&fan_spt, &fan_spt}, {&soup_spt, &box().model}};
+    int collisions = 0, poses = 0;
+    for (const Pair& pr : pairs)
+        for (int it = 0; it < 30; ++it, ++poses) {
+            const Pose p = random_pose(rng, 0.02 * it);
+            const QueryResult any = collide_relative(*pr.a, *pr.b, p, opts(QueryLevel::Spheres, QueryMode::Any), s1);
+            const QueryResult ref = collide_brute_force(*pr.a, *pr.b, p, opts(QueryLevel::Spheres, QueryMode::All), s2);
+            ASSERT_EQ(any.collide, ref.collide) << "pair " << (&pr - pairs) << " pose " << it;
+            collide_relative(*pr.a, *pr.b, p, opts(QueryLevel::Spheres, QueryMode::All), s1);
+            EXPECT_EQ(sphere_pairs(s1), sphere_pairs(s2)) << "pair " << (&pr - pairs) << " pose " << it;
+            const QueryResult deep = collide_relative(*pr.a, *pr.b, p, opts(QueryLevel::Spheres, QueryMode::Deepest), s1);
+            const QueryResult ref_deep =
+                collide_brute_force(*pr.a, *pr.b, p, opts(QueryLevel::Spheres, QueryMode::Deepest), s2);
+            ASSERT_EQ(deep.collide, ref.collide);
+            EXPECT_EQ(deep.deepest.depth, ref_deep.deepest.depth);
+            collisions += ref.collide;
+        }
+    EXPECT_GT(collisions, poses / 10);
+    EXPECT_LT(collisions, poses * 9 / 10);
+}
+
 TEST(Query, OpenSheetsOnePercentApartDoNotCollideFromEitherSide) {
-    // Default conversion of an open sheet: spheres sit behind the surface, so without the
-    // sheet cap (half the protrusion allowance) they would poke out of the back by their diameter.
+    // Default conversion of an open sheet: two-sided spheres centred on the surface, tested
+    // as discs on their faces, so a sheet 1% away is apart from either side.
     const TriangleMesh mesh = make_sheet(2, 6);
     SptDocument doc = make_document(mesh);
     const CollisionModel m(doc, mesh);
@@ -203,11 +240,11 @@ TEST(Query, OpenSheetsOnePercentApartDoNotCollideFromEitherSide) {
             const Pose apart = Pose::from(Eigen::Vector3d(0.05, 0.03, side * gap), q);
             EXPECT_FALSE(collide_relative(m, m, apart, opts(QueryLevel::Spheres, QueryMode::Any), s).collide)
                 << "side " << side;
-            // Crossing at a slant they meet along a line: `exact` sees it. (The capped spheres
-            // of a sheet are sparser than they are wide, so `spheres` may not: docs/sampling.md.)
+            // Crossing at a slant they meet along a line, which lies in a disc of each.
             const Eigen::Quaterniond slant(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
             const Pose into = Pose::from(Eigen::Vector3d(0.05, 0.03, 0), slant * q);
             EXPECT_TRUE(collide_relative(m, m, into, opts(QueryLevel::Exact, QueryMode::Any), s).collide);
+            EXPECT_TRUE(collide_relative(m, m, into, opts(QueryLevel::Spheres, QueryMode::Any), s).collide);
         }
 }
 

@@ -53,6 +53,9 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
             for (uint32_t k = 0; k < nb && !done(); ++k) {
                 const float reach = ra[i] + rb[k] + options.inflate;
                 if (!(row[k] < reach * reach)) continue;
+                if (!run.shapes_touch(i, k, Eigen::Vector3f(ax[i], ay[i], az[i]), Eigen::Vector3f(bx[k], by[k], bz[k]),
+                                      ra[i], rb[k]))
+                    continue;
                 run.res.collide = true;
                 run.record(node_a[i], node_b[k], i, k, Eigen::Vector3f(ax[i], ay[i], az[i]),
                            Eigen::Vector3f(bx[k], by[k], bz[k]), reach, ra[i], row[k]);

@@ -76,6 +76,18 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         wall[k] = !doc.samples.is_two_sided(i) &&
                   (doc.samples.is_face_sample(i) ? (src < nt && e.closed[src]) : (src < vertex_closed.size() && vertex_closed[src]));
     }
+    if (tree_.two_sided()) { // the faces two-sided spheres stand for (query/sample_piece.cpp)
+        e.sphere_source.resize(tree_.sphere_count());
+        for (size_t k = 0; k < e.sphere_source.size(); ++k) e.sphere_source[k] = doc.samples.sources[tree_.sample_index()[k]];
+        e.vertex_face_start.assign(e.positions.size() + 1, 0);
+        for (const Triangle& t : e.triangles)
+            for (uint32_t v : t) ++e.vertex_face_start[v + 1];
+        for (size_t v = 0; v < e.positions.size(); ++v) e.vertex_face_start[v + 1] += e.vertex_face_start[v];
+        e.vertex_faces.resize(e.vertex_face_start.back());
+        std::vector<uint32_t> fill(e.vertex_face_start.begin(), e.vertex_face_start.end() - 1);
+        for (uint32_t f = 0; f < nt; ++f)
+            for (uint32_t v : e.triangles[f]) e.vertex_faces[fill[v]++] = f;
+    }
     exact_ = std::move(data);
     solid_ = std::make_shared<SolidData>(SolidData::build(tree_, *exact_, wall));
 }
@@ -129,7 +141,9 @@ size_t CollisionModel::memory_bytes() const {
     return tree_.memory_bytes() + e.positions.capacity() * sizeof(Eigen::Vector3d) +
            e.triangles.capacity() * sizeof(Triangle) +
            e.tri_nodes.capacity() * sizeof(TriangleNode) + e.tri_order.capacity() * sizeof(uint32_t) +
-           e.tri_sphere.capacity() * sizeof(float) + e.closed.capacity() + solid().memory_bytes();
+           e.tri_sphere.capacity() * sizeof(float) + e.closed.capacity() +
+           (e.sphere_source.capacity() + e.vertex_face_start.capacity() + e.vertex_faces.capacity()) * sizeof(uint32_t) +
+           solid().memory_bytes();
 }
 
 } // namespace spt

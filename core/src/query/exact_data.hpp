@@ -46,7 +46,12 @@ struct ExactData {
     std::vector<TriangleNode> tri_nodes;      ///< root first, depth-first (the left child follows its parent)
     std::vector<uint32_t> tri_order;          ///< triangle indices; a leaf holds tri_order[first, first + count)
     std::vector<float> tri_sphere;            ///< per triangle: centre xyz and radius of a bounding sphere
-    size_t degenerate_triangles = 0;          ///< zero-area triangles left out (their edges belong to neighbours)
+    size_t degenerate_triangles = 0;
+    // The sphere level's patches of two-sided samples (query/sample_piece.cpp); empty when no
+    // sphere is two-sided.
+    std::vector<uint32_t> sphere_source;      ///< per CompactTree sphere: its sample's SampleSet::sources entry
+    std::vector<uint32_t> vertex_face_start;  ///< faces around vertex v: vertex_faces[start[v], start[v + 1])
+    std::vector<uint32_t> vertex_faces;          ///< zero-area triangles left out (their edges belong to neighbours)
 };
 
 } // namespace spt

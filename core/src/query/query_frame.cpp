@@ -62,9 +62,13 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
     if (s.gb.size() < 3 * lb) s.gb.resize(3 * lb), s.ib.resize(lb);
     if (s.stack.capacity() < 256) s.stack.reserve(256);
     if (s.visits.size() < 256) s.visits.resize(256);
-    if (exact) {
-        const size_t nv = b.exact().positions.size(), nt = b.exact().triangles.size();
+    // B's vertices: the exact level's triangles, and the faces of two-sided spheres at the sphere level.
+    if (exact || !b.exact().sphere_source.empty()) {
+        const size_t nv = b.exact().positions.size();
         if (s.bverts.size() < nv) s.bverts.resize(nv), s.vert_stamp.resize(nv, 0);
+    }
+    if (exact) {
+        const size_t nt = b.exact().triangles.size();
         if (s.btri.size() < 4 * nt) s.btri.resize(4 * nt), s.tri_stamp.resize(nt, 0);
         const size_t nn = b.exact().tri_nodes.size();
         if (s.bboxes.size() < nn) s.bboxes.resize(nn), s.bbox_stamp.resize(nn, 0);

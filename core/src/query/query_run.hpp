@@ -70,6 +70,14 @@ struct QueryRun {
     // many pairs it recorded (mode all: every overlapping pair; any and deepest: the
     // closest one, or none).
     uint32_t sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca);
+    // Whether A's sphere sa and B's sphere sb, centres ca and cb in A's frame, radii ra and rb,
+    // whose balls overlap, still touch when a two-sided one is taken as its disc.
+    bool shapes_touch(uint32_t sa, uint32_t sb, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
+                      float rb);
+    // With the mesh: whether the faces that two-sided spheres sa and/or sb stand for still
+    // touch the other's face or ball (their discs met; query/sample_piece.cpp).
+    bool pieces_touch(uint32_t sa, uint32_t sb, bool disc_a, bool disc_b, const Eigen::Vector3f& ca,
+                      const Eigen::Vector3f& cb, float ra, float rb);
     // Records a colliding pair: spheres a, b of active nodes node_a, node_b (at `bounds`, the nodes).
     void record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
                 const Eigen::Vector3f& cb, float reach, float ra, float d2);
@@ -84,6 +92,10 @@ struct QueryRun {
     bool exact;
     bool have_best = false;
     bool roots_overlap = false; // set by the walks: containment is possible only then
+    struct {
+        uint32_t a, b;
+        bool meet, valid;
+    } piece_memo{0, 0, false, false}; // the last face pair pieces_touch tested: a leaf's hits share faces
     QueryResult res; // res.deepest is written only by record(), so it stays default without a contact
 };
 

@@ -1,6 +1,7 @@
 // The bottom of the sphere walk: B's leaf spheres moved into A's frame, a leaf pair's
 // sphere tests, and the recording of what collides.
 #include "query/lanes.hpp"
+#include "geometry/sample_disc.hpp"
 #include "geometry/sphere_block.hpp"
 #include <cmath>
 #include <cstring>
@@ -47,6 +48,22 @@ void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, 
     const Eigen::Vector3d d = (cb - ca).cast<double>();
     c.normal = dist > 0 ? Eigen::Vector3d(d / d.norm()) : Eigen::Vector3d::UnitX();
     c.point = A.origin() + ca.cast<double>() + c.normal * (double(ra) - 0.5 * depth);
+}
+
+bool QueryRun::shapes_touch(uint32_t sa, uint32_t sb, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
+                            float rb) {
+    const uint8_t *two_a = A.tree().two_sided(), *two_b = B.tree().two_sided();
+    const bool disc_a = two_a && two_a[sa], disc_b = two_b && two_b[sb];
+    if (!disc_a && !disc_b) return true;
+    auto normal = [](const CompactTree& t, uint32_t k) {
+        return Eigen::Vector3f(t.nx()[k], t.ny()[k], t.nz()[k]).normalized();
+    };
+    const detail::LeafShape a{ca, disc_a ? normal(A.tree(), sa) : Eigen::Vector3f::Zero(), ra, disc_a};
+    const detail::LeafShape b{cb, disc_b ? Eigen::Vector3f(f.R * normal(B.tree(), sb)) : Eigen::Vector3f::Zero(), rb, disc_b};
+    if (!detail::leaf_shapes_may_touch(a, b, o.inflate)) return false;
+    // Grown spheres (continuous detection, a scene's contact band) keep the discs' answer: the
+    // faces are tested only for touching.
+    return o.inflate > 0 || pieces_touch(sa, sb, disc_a, disc_b, ca, cb, ra, rb);
 }
 
 uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca) {
@@ -99,7 +116,13 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     auto sphere_a = [&](uint32_t k) { return cull ? s.ia[k] : na.first + k; };
     auto sphere_b = [&](uint32_t k) { return cull ? s.ib[k] : nb.first + k; };
     auto centre = [](const float* x, const float* y, const float* z, uint32_t k) { return Eigen::Vector3f(x[k], y[k], z[k]); };
-    if (o.mode != QueryMode::All) { // any and deepest want only the closest pair (the first, on ties)
+    // Two-sided spheres are tested as discs after their balls overlap (geometry/sample_disc.hpp).
+    const bool discs = ta.two_sided() || tb.two_sided();
+    auto touch = [&](uint32_t p, uint32_t q) {
+        return !discs || shapes_touch(sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q),
+                                      na.ss_radius, nb.ss_radius);
+    };
+    if (o.mode != QueryMode::All && !discs) { // any and deepest want only the closest pair (the first, on ties)
         for (uint32_t p = 0; p < count_a; ++p)
             for (uint32_t q = 0; q < count_b; ++q)
                 if (d2[size_t(p) * stride + q] == best) {
@@ -111,6 +134,8 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     // Four distances a compare and the hits walked as mask bits: a branch per distance
     // mispredicts on every boundary of the overlap. Lanes past count_b hold +inf.
     uint32_t hits = 0;
+    uint32_t best_p = 0, best_q = 0;
+    float best_d2 = INFINITY;
     const v4f lim = splat(limit2);
     for (uint32_t p = 0; p < count_a; ++p) {
         const float* row = d2 + size_t(p) * stride;
@@ -119,11 +144,27 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
             std::memcpy(&v, row + q0, sizeof v);
             for (unsigned bits = unsigned(movemask(v < lim)); bits; bits &= bits - 1) {
                 const uint32_t q = q0 + uint32_t(__builtin_ctz(bits));
+                if (o.mode == QueryMode::Deepest && !(row[q] < best_d2)) continue; // cannot be the closest
+                if (!touch(p, q)) continue;
+                if (o.mode == QueryMode::Any) { // a touching pair answers; the faces tested cost more than the order
+                    record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach,
+                           na.ss_radius, row[q]);
+                    return 1;
+                }
+                if (o.mode == QueryMode::Deepest) { // the closest pair that touches (the first, on ties)
+                    best_d2 = row[q], best_p = p, best_q = q;
+                    continue;
+                }
                 ++hits;
                 record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach,
                        na.ss_radius, row[q]);
             }
         }
+    }
+    if (o.mode != QueryMode::All && best_d2 < limit2) {
+        record(i, j, sphere_a(best_p), sphere_b(best_q), centre(ax, ay, az, best_p), centre(bx, by, bz, best_q), reach,
+               na.ss_radius, best_d2);
+        return 1;
     }
     return hits;
 }
