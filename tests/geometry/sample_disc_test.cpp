@@ -12,8 +12,8 @@ using detail::LeafShape;
 using detail::leaf_shapes_may_touch;
 using V = Eigen::Vector3f;
 
-LeafShape disc(const V& c, const V& n, float r) { return {c, n.normalized(), r, true}; }
-LeafShape ball(const V& c, float r) { return {c, V::Zero(), r, false}; }
+LeafShape disc(const V& c, const V& n, float r) { return {c, n.normalized(), r, detail::kDiscHalfThickness * r, true}; }
+LeafShape ball(const V& c, float r) { return {c, V::Zero(), r, 0, false}; }
 
 // The normal as the compact tree stores it: each component rounded to 1/127.
 V snorm8(const V& n) {

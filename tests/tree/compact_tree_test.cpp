@@ -1,6 +1,11 @@
 // The query layout: child order, sphere blocks, bytes per sample.
 #include "meshgen.hpp"
 #include "spt/compact_tree.hpp"
+#include "spt/convert.hpp"
+#include "geometry/sample_disc.hpp"
+#include "mesh/hard_shapes.hpp"
+#include "mesh/shapes.hpp"
+#include <Eigen/Geometry>
 #include "spt/tree_builder.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
@@ -44,4 +49,50 @@ TEST(CompactTree, StaysUnderThirtyTwoBytesPerSample) {
     const SampleSet s = test::vertex_samples(m.mesh);
     const CompactTree c(build_tree("t", s), s);
     EXPECT_LE(double(c.memory_bytes()) / double(s.size()), 32.0);
+}
+
+// A node's disc must hold the disc of every two-sided sphere below it (the walk prunes by it):
+// open meshes flat (a sheet), folded (a fan, an open box) and scattered (a soup). A flat
+// sheet's nodes are discs all the way up; a closed mesh has none.
+TEST(CompactTree, NodeDiscHoldsTheDiscOfEverySphereBelowIt) {
+    const TriangleMesh meshes[] = {make_sheet(1.0, 6), make_fan(5), make_open_box({0.5, 0.5, 0.5}, 3),
+                                   make_triangle_soup(60, 0.2, 3)};
+    for (const TriangleMesh& mesh : meshes) {
+        const SptDocument doc = make_document(mesh);
+        const CompactTree c(doc.trees.front(), doc.samples);
+        ASSERT_NE(c.node_disc(), nullptr) << mesh.name;
+        const auto& nodes = c.nodes();
+        size_t discs = 0;
+        for (size_t i = 0; i < nodes.size(); ++i) {
+            const float* d = c.node_disc() + 4 * i;
+            if (!(d[3] >= 0)) continue;
+            ++discs;
+            const Eigen::Vector3f n(d[0], d[1], d[2]), centre(nodes[i].center[0], nodes[i].center[1], nodes[i].center[2]);
+            EXPECT_NEAR(n.norm(), 1.0f, 1e-5f);
+            // Every sphere below node i.
+            std::vector<size_t> stack{i};
+            while (!stack.empty()) {
+                const CompactNode& m = nodes[stack.back()];
+                stack.pop_back();
+                if (!m.is_active()) {
+                    stack.push_back(size_t(&m - nodes.data()) + 1), stack.push_back(m.first);
+                    continue;
+                }
+                for (uint32_t k = m.first; k < m.first + m.count; ++k) {
+                    const Eigen::Vector3f ns = Eigen::Vector3f(c.nx()[k], c.ny()[k], c.nz()[k]).normalized();
+                    const Eigen::Vector3f cs = c.sphere_centre(m, k);
+                    const float reach = std::abs(n.dot(cs - centre)) + m.ss_radius * n.cross(ns).norm() +
+                                        detail::kDiscHalfThickness * m.ss_radius;
+                    ASSERT_LE(reach, d[3]) << mesh.name << " node " << i << " sphere " << k;
+                    ASSERT_LE((cs - centre).norm() + m.ss_radius, nodes[i].bv_radius * (1 + 1e-5f))
+                        << mesh.name << " node " << i << " sphere " << k;
+                }
+            }
+        }
+        EXPECT_GT(discs, nodes.size() / 4) << mesh.name;
+        if (mesh.name == "sheet") EXPECT_EQ(discs, nodes.size());
+    }
+    const ImportedMesh closed = meshgen::prepare(meshgen::torus(1, 0.3, 32, 16), "torus");
+    const SampleSet s = test::vertex_samples(closed.mesh);
+    EXPECT_EQ(CompactTree(build_tree("t", s), s).node_disc(), nullptr);
 }

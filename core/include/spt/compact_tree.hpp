@@ -54,6 +54,11 @@ public:
     /// Per sphere, sphere order: 1 if two-sided (an open part's sphere, centred on the surface;
     /// its normal gives an axis, not a side). nullptr when no sphere is two-sided.
     const uint8_t* two_sided() const { return two_sided_.empty() ? nullptr : two_sided_.data(); }
+    /// Per node, 4 floats: a unit normal and a half-thickness h such that the disc of every
+    /// two-sided sphere below the node (its snorm8 normal, its radius, kDiscHalfThickness of it
+    /// thick) lies within h of the plane through the node's centre; h < 0 when a sphere below
+    /// is one-sided or the node is not flat. nullptr when no sphere is two-sided.
+    const float* node_disc() const { return node_disc_.empty() ? nullptr : node_disc_.data(); }
     /// Sample index (into the SampleSet) of each sphere.
     const uint32_t* sample_index() const { return sample_index_.data(); }
     /// Number of spheres.
@@ -67,6 +72,8 @@ private:
     std::vector<float> centres_;
     std::vector<int8_t> nx_, ny_, nz_;
     std::vector<uint8_t> two_sided_; // empty when no sphere is
+    std::vector<float> node_disc_;   // empty when no sphere is two-sided
+    void build_node_discs();
     std::vector<uint32_t> sample_index_;
     size_t sphere_count_ = 0;
 };

@@ -15,23 +15,25 @@ namespace spt::detail {
 // of its face within 0.9 of its radius from the centre: 0.9 x 0.007 = 1/160, kept with room.
 constexpr float kDiscHalfThickness = 1.0f / 64;
 
-// A sampling sphere at a leaf hit, in one frame: centre, unit normal (an axis for a disc),
-// radius, and whether it is two-sided (a disc) or a ball.
+// A sampling sphere at a leaf hit, or all of a node's, in one frame: centre, unit normal (an
+// axis for a disc), radius, half-thickness, and whether it is a disc (two-sided spheres) or a
+// ball. A sample's disc is kDiscHalfThickness*r thick; a node's holds its samples' discs.
 struct LeafShape {
     Eigen::Vector3f c, n;
     float r;
+    float t;
     bool disc;
 };
 
 // False only when shapes a and b, each grown by pad/2, cannot share a point: a ball is the
-// sphere, a disc is the set within r of its centre and within kDiscHalfThickness*r of its plane.
+// sphere, a disc is the set within r of its centre and within t of its plane.
 // Conservative: every test below separates only what is surely apart, so it may keep a pair
 // that is in fact apart but never drops one that touches.
 inline bool leaf_shapes_may_touch(const LeafShape& a, const LeafShape& b, float pad) {
     if (!a.disc && !b.disc) return true; // the caller's sphere test decided
     const Eigen::Vector3f d = b.c - a.c;
     const float half = 0.5f * pad;
-    const float ta = a.disc ? kDiscHalfThickness * a.r + half : 0, tb = b.disc ? kDiscHalfThickness * b.r + half : 0;
+    const float ta = a.disc ? a.t + half : 0, tb = b.disc ? b.t + half : 0;
     if (!b.disc || !a.disc) {
         // Disc against ball: the ball's centre within its radius (plus the disc's thickness) of the thin disc.
         const LeafShape& disc = a.disc ? a : b;

@@ -113,6 +113,7 @@ void QueryRun::run() {
     const float* reach_a = bounds ? A.bounds_reach().data() : nullptr;
     const float* reach_b = bounds ? B.bounds_reach().data() : nullptr;
     const float pad = o.inflate + f.margin;
+    const bool flat = !bounds && (A.tree().node_disc() || B.tree().node_disc());
     VisitStack stack{s.visits};
     // Every pair on the stack overlaps: it was tested when pushed, four children at a
     // time, and the same distances order the descent.
@@ -139,6 +140,9 @@ void QueryRun::run() {
         ++res.counters.node_pairs;
         // Deepest: no sphere below this pair can be deeper than the bounds' overlap.
         if (deepest && have_best && !(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth))) continue;
+        // Flat nodes of two-sided spheres are discs: two sheets side by side are apart here,
+        // not after a walk down to every pair of their leaves.
+        if (flat && !node_discs_touch(ref_a & ~kActive, ref_b & ~kActive, ca, cb, ra, rb)) continue;
         const bool leaf_a = ref_a & kActive, leaf_b = ref_b & kActive;
         if (leaf_a && leaf_b) {
             const uint32_t i = ref_a & ~kActive, j = ref_b & ~kActive;

@@ -74,6 +74,11 @@ struct QueryRun {
     // whose balls overlap, still touch when a two-sided one is taken as its disc.
     bool shapes_touch(uint32_t sa, uint32_t sb, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
                       float rb);
+    // Whether A's node i and B's node j, centres ca and cb in A's frame, bounding radii ra and
+    // rb, may hold spheres that touch, when either node's two-sided spheres lie in a flat disc
+    // (CompactTree::node_disc): the walk prunes the pair otherwise.
+    bool node_discs_touch(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
+                          float rb) const;
     // With the mesh: whether the faces that two-sided spheres sa and/or sb stand for still
     // touch the other's face or ball (their discs met; query/sample_piece.cpp).
     bool pieces_touch(uint32_t sa, uint32_t sb, bool disc_a, bool disc_b, const Eigen::Vector3f& ca,

@@ -58,12 +58,27 @@ bool QueryRun::shapes_touch(uint32_t sa, uint32_t sb, const Eigen::Vector3f& ca,
     auto normal = [](const CompactTree& t, uint32_t k) {
         return Eigen::Vector3f(t.nx()[k], t.ny()[k], t.nz()[k]).normalized();
     };
-    const detail::LeafShape a{ca, disc_a ? normal(A.tree(), sa) : Eigen::Vector3f::Zero(), ra, disc_a};
-    const detail::LeafShape b{cb, disc_b ? Eigen::Vector3f(f.R * normal(B.tree(), sb)) : Eigen::Vector3f::Zero(), rb, disc_b};
+    const float k = detail::kDiscHalfThickness;
+    const detail::LeafShape a{ca, disc_a ? normal(A.tree(), sa) : Eigen::Vector3f::Zero(), ra, k * ra, disc_a};
+    const detail::LeafShape b{cb, disc_b ? Eigen::Vector3f(f.R * normal(B.tree(), sb)) : Eigen::Vector3f::Zero(), rb,
+                              k * rb, disc_b};
     if (!detail::leaf_shapes_may_touch(a, b, o.inflate)) return false;
     // Grown spheres (continuous detection, a scene's contact band) keep the discs' answer: the
     // faces are tested only for touching.
     return o.inflate > 0 || pieces_touch(sa, sb, disc_a, disc_b, ca, cb, ra, rb);
+}
+
+bool QueryRun::node_discs_touch(uint32_t i, uint32_t j, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
+                                float rb) const {
+    const float *da = A.tree().node_disc(), *db = B.tree().node_disc();
+    const float *pa = da ? da + 4 * size_t(i) : nullptr, *pb = db ? db + 4 * size_t(j) : nullptr;
+    const bool disc_a = pa && pa[3] >= 0, disc_b = pb && pb[3] >= 0;
+    if (!disc_a && !disc_b) return true;
+    const detail::LeafShape a{ca, disc_a ? Eigen::Vector3f(pa[0], pa[1], pa[2]) : Eigen::Vector3f::Zero(), ra,
+                              disc_a ? pa[3] : 0, disc_a};
+    const detail::LeafShape b{cb, disc_b ? Eigen::Vector3f(f.R * Eigen::Vector3f(pb[0], pb[1], pb[2])) : Eigen::Vector3f::Zero(),
+                              rb, disc_b ? pb[3] : 0, disc_b};
+    return detail::leaf_shapes_may_touch(a, b, o.inflate + f.margin);
 }
 
 uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca) {

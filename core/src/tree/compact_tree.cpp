@@ -1,5 +1,7 @@
 // Lays a SamplingTree out depth-first with per-leaf sphere blocks for queries.
 #include "spt/compact_tree.hpp"
+#include "geometry/sample_disc.hpp"
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -65,12 +67,62 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
         }
     }
     sphere_count_ = sphere;
+    if (!two_sided_.empty()) build_node_discs();
+}
+
+// Bottom up (children follow their parent): a leaf from its spheres' discs, an inner node from
+// its children's. A node thicker than half its radius is left a ball: its disc would prune
+// little, and the walk would pay the test on every pair.
+void CompactTree::build_node_discs() {
+    node_disc_.assign(4 * nodes_.size(), -1.0f);
+    auto centre = [&](const CompactNode& n) { return Eigen::Vector3f(n.center[0], n.center[1], n.center[2]); };
+    // A part of a node: centre, normal, radius and half-thickness of a disc.
+    struct Part {
+        Eigen::Vector3f c, n;
+        float r, t;
+    };
+    std::vector<Part> parts;
+    // The parts of node i, or false if one is a ball.
+    auto parts_of = [&](size_t i) {
+        parts.clear();
+        const CompactNode& node = nodes_[i];
+        if (node.is_active()) {
+            for (uint32_t k = node.first; k < node.first + node.count; ++k) {
+                if (!two_sided_[k]) return false;
+                const Eigen::Vector3f n = Eigen::Vector3f(nx_[k], ny_[k], nz_[k]).normalized();
+                parts.push_back({sphere_centre(node, k), n, node.ss_radius, detail::kDiscHalfThickness * node.ss_radius});
+            }
+            return true;
+        }
+        for (uint32_t child : {uint32_t(i + 1), node.first}) {
+            const float* d = node_disc_.data() + 4 * size_t(child);
+            if (!(d[3] >= 0)) return false;
+            parts.push_back({centre(nodes_[child]), Eigen::Vector3f(d[0], d[1], d[2]), nodes_[child].bv_radius, d[3]});
+        }
+        return true;
+    };
+    for (size_t i = nodes_.size(); i-- > 0;) {
+        if (!parts_of(i)) continue;
+        // Normals as axes: each turned to agree with the first, weighted by its radius.
+        Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+        for (const Part& p : parts) sum += (p.n.dot(parts[0].n) >= 0 ? p.r : -p.r) * p.n;
+        if (!(sum.norm() > 0)) continue;
+        const Eigen::Vector3f n = sum.normalized(), c = centre(nodes_[i]);
+        // A part reaches off the plane by its centre's offset, its radius times the sine of its
+        // tilt, and its thickness; plus a relative margin for the rounding of these sums.
+        float h = 0;
+        for (const Part& p : parts) h = std::max(h, std::abs(n.dot(p.c - c)) + p.r * n.cross(p.n).norm() + p.t);
+        h = h * (1 + 1e-5f) + 1e-6f * nodes_[i].bv_radius;
+        if (!(h <= 0.5f * nodes_[i].bv_radius)) continue;
+        for (int k = 0; k < 3; ++k) node_disc_[4 * i + k] = n[k];
+        node_disc_[4 * i + 3] = h;
+    }
 }
 
 size_t CompactTree::memory_bytes() const {
     return nodes_.capacity() * sizeof(CompactNode) + centres_.capacity() * sizeof(float) +
            (nx_.capacity() + ny_.capacity() + nz_.capacity()) + two_sided_.capacity() +
-           sample_index_.capacity() * sizeof(uint32_t);
+           node_disc_.capacity() * sizeof(float) + sample_index_.capacity() * sizeof(uint32_t);
 }
 
 } // namespace spt
