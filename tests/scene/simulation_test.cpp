@@ -138,6 +138,33 @@ TEST(Simulation, SameStateHashesOnEveryRunAndForEveryThreadCount) {
     EXPECT_EQ(hashes(s, fx, 4, 60, &collisions), one);
 }
 
+// With pairs and depth both on, depth takes its contact from the pairs effect's `all` query
+// (the same query) instead of running it again: the same contacts and states, and the work of
+// depth alone.
+TEST(Simulation, DepthWithPairsOnTakesItsContactFromThePairsQuery) {
+    const spt::test::SceneDir dir;
+    const Scene s = scene(dir, ball_cloud(27, 3));
+    Simulation with(s, parse_effect_list("motion,gravity,contacts,depth,pairs,response", "test"));
+    Simulation without(s, parse_effect_list("motion,gravity,contacts,depth,response", "test"));
+    uint64_t contacts = 0;
+    for (int step = 0; step < 40; ++step) {
+        const StepResult& a = with.step();
+        const StepResult& b = without.step();
+        ASSERT_EQ(a.contacts.size(), b.contacts.size()) << "step " << step;
+        for (size_t k = 0; k < a.contacts.size(); ++k) {
+            EXPECT_EQ(a.contacts[k].depth, b.contacts[k].depth) << "step " << step;
+            EXPECT_EQ(a.contacts[k].point, b.contacts[k].point) << "step " << step;
+            EXPECT_EQ(a.contacts[k].normal, b.contacts[k].normal) << "step " << step;
+            EXPECT_FALSE(a.contacts[k].pairs.empty());
+        }
+        EXPECT_EQ(a.counters.node_pairs, b.counters.node_pairs) << "step " << step;
+        EXPECT_EQ(a.counters.depth_queries, b.counters.depth_queries) << "step " << step;
+        EXPECT_EQ(a.state_hash, b.state_hash) << "step " << step;
+        contacts += a.contacts.size();
+    }
+    EXPECT_GT(contacts, 20u);
+}
+
 TEST(Simulation, StateHashIsFnv1aOverThePoseDoubles) {
     std::vector<Pose> poses(2);
     poses[1].translation = {1, 2, 3};

@@ -50,12 +50,19 @@ void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionMod
     const QueryResult r = collide(a, pa, b, pb, q, scratch);
     w.qc.node_pairs += r.counters.node_pairs, w.qc.bound_tests += r.counters.bound_tests;
     w.qc.sphere_tests += r.counters.sphere_tests, w.qc.triangle_tests += r.counters.triangle_tests;
-    const std::vector<SpherePair>& pairs = scratch.pairs();
+    contact_from_pairs(a, pa, b, pb, level, band, a_dynamic, b_dynamic, scratch.pairs(), r.collide, r.deepest.point, w,
+                       scratch);
+}
+
+void contact_from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
+                        QueryLevel level, double band, bool a_dynamic, bool b_dynamic,
+                        const std::vector<SpherePair>& pairs, bool collide, const Eigen::Vector3d& point, PairWork& w,
+                        QueryScratch& scratch) {
     if (pairs.empty()) {
         // Triangles crossing where no spheres overlap (level exact), or one object inside the
         // other (containment: the contained anchor is the point): no sphere depth.
         w.depth = 0;
-        w.point = r.collide ? r.deepest.point : Eigen::Vector3d(0.5 * (pa.translation + pb.translation));
+        w.point = collide ? point : Eigen::Vector3d(0.5 * (pa.translation + pb.translation));
         const Eigen::Vector3d d = pb.translation - pa.translation;
         w.normal = d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitX();
         return;
@@ -64,7 +71,7 @@ void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionMod
     const SpherePair* best = &pairs[0];
     for (const SpherePair& p : pairs)
         if (p.depth > best->depth) best = &p;
-    w.depth = std::max(0.0, double(best->depth) - double(q.inflate));
+    w.depth = std::max(0.0, double(best->depth) - double(float(band)));
     if (level == QueryLevel::Bounds) {
         const CompactNode& na = a.tree().nodes()[best->a];
         const CompactNode& nb = b.tree().nodes()[best->b];

@@ -14,6 +14,8 @@ struct PairWork {
     double depth = 0;
     Eigen::Vector3d point = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitX();
     std::vector<SpherePair> pairs;
+    bool all_collide = false;                           // the pairs effect's `all` query: its answer
+    Eigen::Vector3d all_point = Eigen::Vector3d::Zero(); // and its contact (a containment's anchor)
 };
 
 /// Deepest sphere pair of A and B (world poses) at `level`, spheres grown by `band` (0 for a
@@ -23,6 +25,14 @@ struct PairWork {
 void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
                      QueryLevel level, double band, bool a_dynamic, bool b_dynamic, PairWork& w,
                      QueryScratch& scratch);
+
+/// As deepest_contact, from the sphere pairs of an `all` query already run at `level` with
+/// spheres grown by `band` (`collide` and `point`: its answer and contact): the pairs effect's
+/// query serves depth too.
+void contact_from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
+                        QueryLevel level, double band, bool a_dynamic, bool b_dynamic,
+                        const std::vector<SpherePair>& pairs, bool collide, const Eigen::Vector3d& point, PairWork& w,
+                        QueryScratch& scratch);
 
 /// Contact normal (world, unit, from A towards B): the depth-weighted sum of the surface normals
 /// of the overlapping sphere pairs `pairs`, n_a - n_b, each turned to face the other sphere; so a

@@ -186,6 +186,7 @@ void Simulation::run_contacts(StepCounters& c) {
             const QueryResult all = collide(model(p.a), poses_[p.a], model(p.b), poses_[p.b], q, s);
             add(work[k].qc, all.counters);
             work[k].pairs = s.pairs();
+            work[k].all_collide = all.collide, work[k].all_point = all.deepest.point;
         }
     });
     c.ns_narrow = ns_since(t0);
@@ -207,8 +208,16 @@ void Simulation::run_contacts(StepCounters& c) {
             const size_t k = colliding[j];
             QueryScratch& s = scratch_[size_t(w)];
             const double band = work[k].collide ? 0.0 : work[k].ccd_band;
-            detail::deepest_contact(model(cand[k].a), poses_[cand[k].a], model(cand[k].b), poses_[cand[k].b],
-                                    sphere_level, band, dynamic(cand[k].a), dynamic(cand[k].b), work[k], s);
+            const CandidatePair p = cand[k];
+            if (band == 0 && effects_.has(Effect::Pairs)) { // the pairs effect ran this very query
+                detail::contact_from_pairs(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
+                                           dynamic(p.a), dynamic(p.b), work[k].pairs, work[k].all_collide,
+                                           work[k].all_point, work[k], s);
+                if (keep_pairs) start_pairs_[j].assign(work[k].pairs.begin(), work[k].pairs.end());
+                return;
+            }
+            detail::deepest_contact(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
+                                    dynamic(p.a), dynamic(p.b), work[k], s);
             if (keep_pairs && band == 0) start_pairs_[j].assign(s.pairs().begin(), s.pairs().end());
         });
         c.depth_queries = colliding.size();
