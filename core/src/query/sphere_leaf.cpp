@@ -53,14 +53,15 @@ void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, 
 bool QueryRun::shapes_touch(uint32_t sa, uint32_t sb, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
                             float rb) {
     const uint8_t *two_a = A.tree().two_sided(), *two_b = B.tree().two_sided();
-    const bool disc_a = two_a && two_a[sa], disc_b = two_b && two_b[sb];
-    if (!disc_a && !disc_b) return true;
-    auto normal = [](const CompactTree& t, uint32_t k) {
-        return Eigen::Vector3f(t.nx()[k], t.ny()[k], t.nz()[k]).normalized();
-    };
+    if (!(two_a && two_a[sa]) && !(two_b && two_b[sb])) return true;
+    // A normal that is not a direction (a snorm8 triple of zeros; never written by conversion)
+    // leaves its sphere a ball.
+    auto normal = [](const CompactTree& t, uint32_t k) { return Eigen::Vector3f(t.nx()[k], t.ny()[k], t.nz()[k]); };
+    const Eigen::Vector3f na = normal(A.tree(), sa), nb = normal(B.tree(), sb);
+    const bool disc_a = two_a && two_a[sa] && na.squaredNorm() > 0, disc_b = two_b && two_b[sb] && nb.squaredNorm() > 0;
     const float k = detail::kDiscHalfThickness;
-    const detail::LeafShape a{ca, disc_a ? normal(A.tree(), sa) : Eigen::Vector3f::Zero(), ra, k * ra, disc_a};
-    const detail::LeafShape b{cb, disc_b ? Eigen::Vector3f(f.R * normal(B.tree(), sb)) : Eigen::Vector3f::Zero(), rb,
+    const detail::LeafShape a{ca, disc_a ? na.normalized() : Eigen::Vector3f::Zero(), ra, k * ra, disc_a};
+    const detail::LeafShape b{cb, disc_b ? Eigen::Vector3f(f.R * nb.normalized()) : Eigen::Vector3f::Zero(), rb,
                               k * rb, disc_b};
     if (!detail::leaf_shapes_may_touch(a, b, o.inflate)) return false;
     // Grown spheres (continuous detection, a scene's contact band) keep the discs' answer: the

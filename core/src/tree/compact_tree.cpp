@@ -88,9 +88,10 @@ void CompactTree::build_node_discs() {
         const CompactNode& node = nodes_[i];
         if (node.is_active()) {
             for (uint32_t k = node.first; k < node.first + node.count; ++k) {
-                if (!two_sided_[k]) return false;
-                const Eigen::Vector3f n = Eigen::Vector3f(nx_[k], ny_[k], nz_[k]).normalized();
-                parts.push_back({sphere_centre(node, k), n, node.ss_radius, detail::kDiscHalfThickness * node.ss_radius});
+                const Eigen::Vector3f n(nx_[k], ny_[k], nz_[k]);
+                if (!two_sided_[k] || !(n.squaredNorm() > 0)) return false; // a ball (QueryRun::shapes_touch)
+                parts.push_back({sphere_centre(node, k), n.normalized(), node.ss_radius,
+                                 detail::kDiscHalfThickness * node.ss_radius});
             }
             return true;
         }
