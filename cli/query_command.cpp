@@ -1,6 +1,6 @@
 // spt query A B --poses FILE [--level bounds|spheres|exact] [--mode any|all|deepest] [--repeat K] [-o OUT.csv]
 #include "commands.hpp"
-#include "pose_file.hpp"
+#include "spt/pose_file.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include "spt/query.hpp"

@@ -1,6 +1,8 @@
 // CostPanel: cost runs in the background, their figures as a table and a chart.
 #include "cost_panel.hpp"
+#include "spt/error.hpp"
 #include "spt/plot/chart.hpp"
+#include "spt/pose_file.hpp"
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"
 #include <QFileDialog>
@@ -15,7 +17,6 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
-#include <cstdio>
 
 namespace spt::editor {
 namespace {
@@ -212,15 +213,13 @@ bool CostPanel::save_poses(const QString& prefix, QString* error) const {
     if (!report_) return *error = "no cost run to save", false;
     for (const auto& [suffix, poses] : {std::make_pair(QString("-random.txt"), &report_->poses.random),
                                         std::make_pair(QString("-near.txt"), &report_->poses.near)}) {
-        const QString path = prefix + suffix;
-        FILE* f = std::fopen(path.toLocal8Bit().constData(), "w");
-        if (!f) return *error = path + ": cannot write", false;
-        std::fprintf(f, "# B's poses in A's frame (tx ty tz qw qx qy qz), from the editor's cost run against %s\n",
-                     report_->against.toLocal8Bit().constData());
-        for (const Pose& p : *poses)
-            std::fprintf(f, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", p.translation.x(), p.translation.y(),
-                         p.translation.z(), p.rotation.w(), p.rotation.x(), p.rotation.y(), p.rotation.z());
-        if (std::fclose(f) != 0) return *error = path + ": write failed", false;
+        try {
+            write_pose_file((prefix + suffix).toStdString(), *poses,
+                            "B's poses in A's frame (tx ty tz qw qx qy qz), from the editor's cost run against " +
+                                report_->against.toStdString());
+        } catch (const Error& e) {
+            return *error = QString::fromStdString(e.what()), false;
+        }
     }
     return true;
 }

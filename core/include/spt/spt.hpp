@@ -11,6 +11,7 @@
 #include "spt/mesh.hpp"
 #include "spt/node_id.hpp"
 #include "spt/pose.hpp"
+#include "spt/pose_file.hpp"
 #include "spt/query.hpp"
 #include "spt/query_scratch.hpp"
 #include "spt/recipe.hpp"

@@ -1,11 +1,12 @@
-// Pose files of `spt query`: one pose a line, tx ty tz qw qx qy qz [dx dy dz].
-#include "pose_file.hpp"
+// Pose files: one pose a line, tx ty tz qw qx qy qz [dx dy dz].
+#include "spt/pose_file.hpp"
 #include "spt/error.hpp"
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
-namespace spt::cli {
+namespace spt {
 
 std::vector<PoseLine> read_pose_file(const std::string& path) {
     std::ifstream in(path);
@@ -51,4 +52,14 @@ std::vector<PoseLine> parse_poses(std::istream& in, const std::string& path) {
     return out;
 }
 
-} // namespace spt::cli
+void write_pose_file(const std::string& path, const std::vector<Pose>& poses, const std::string& comment) {
+    FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) throw Error(ErrorKind::CannotWrite, path + ": cannot write the pose file");
+    bool ok = comment.empty() || std::fprintf(f, "# %s\n", comment.c_str()) > 0;
+    for (const Pose& p : poses)
+        ok = ok && std::fprintf(f, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", p.translation.x(), p.translation.y(),
+                                p.translation.z(), p.rotation.w(), p.rotation.x(), p.rotation.y(), p.rotation.z()) > 0;
+    if (std::fclose(f) != 0 || !ok) throw Error(ErrorKind::CannotWrite, path + ": writing the pose file failed");
+}
+
+} // namespace spt
