@@ -25,10 +25,14 @@ DepthMap draw_depth(const TriangleMesh& mesh, const ViewProjection& view, int px
         if (view.perspective && (a.z() <= 0 || b.z() <= 0 || c.z() <= 0)) continue;
         const float area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
         if (area == 0 || !std::isfinite(area)) continue;
-        const int x0 = std::max(px0, int(std::floor(std::min({a.x(), b.x(), c.x()}) - 0.5f)));
-        const int x1 = std::min(px1, int(std::ceil(std::max({a.x(), b.x(), c.x()}) - 0.5f)));
-        const int y0 = std::max(py0, int(std::floor(std::min({a.y(), b.y(), c.y()}) - 0.5f)));
-        const int y1 = std::min(py1, int(std::ceil(std::max({a.y(), b.y(), c.y()}) - 0.5f)));
+        // The pixels whose centres (x + 0.5, y + 0.5) lie in the triangle's box, widened by a
+        // pixel's hundredth for the rounding of the weights below: a triangle smaller than a
+        // pixel (a million-vertex mesh in a small view) mostly holds no centre and costs no test.
+        const float slack = 0.01f;
+        const int x0 = std::max(px0, int(std::ceil(std::min({a.x(), b.x(), c.x()}) - 0.5f - slack)));
+        const int x1 = std::min(px1, int(std::floor(std::max({a.x(), b.x(), c.x()}) - 0.5f + slack)));
+        const int y0 = std::max(py0, int(std::ceil(std::min({a.y(), b.y(), c.y()}) - 0.5f - slack)));
+        const int y1 = std::min(py1, int(std::floor(std::max({a.y(), b.y(), c.y()}) - 0.5f + slack)));
         if (x0 > x1 || y0 > y1) continue;
         const float va = value(a.z()), vb = value(b.z()), vc = value(c.z());
         for (int y = y0; y <= y1; ++y)
