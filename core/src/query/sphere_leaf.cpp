@@ -177,7 +177,7 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
             }
         }
     }
-    if (o.mode != QueryMode::All && best_d2 < limit2) {
+    if (o.mode == QueryMode::Deepest && best_d2 < limit2) { // any returned at its first touching pair
         record(i, j, sphere_a(best_p), sphere_b(best_q), centre(ax, ay, az, best_p), centre(bx, by, bz, best_q), reach,
                na.ss_radius, best_d2);
         return 1;

@@ -209,17 +209,17 @@ void Simulation::run_contacts(StepCounters& c) {
             QueryScratch& s = scratch_[size_t(w)];
             const double band = work[k].collide ? 0.0 : work[k].ccd_band;
             const CandidatePair p = cand[k];
-            const bool keep = keep_pairs && (dynamic(p.a) || dynamic(p.b)); // a response moves one of them
-            if (band == 0 && effects_.has(Effect::Pairs)) { // the pairs effect ran this very query
+            const bool reuse = band == 0 && effects_.has(Effect::Pairs); // the pairs effect ran this very query
+            if (reuse)
                 detail::contact_from_pairs(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
                                            dynamic(p.a), dynamic(p.b), work[k].pairs, work[k].all_collide,
                                            work[k].all_point, work[k], s);
-                if (keep) start_pairs_[j].assign(work[k].pairs.begin(), work[k].pairs.end());
-                return;
-            }
-            detail::deepest_contact(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
-                                    dynamic(p.a), dynamic(p.b), work[k], s);
-            if (keep && band == 0) start_pairs_[j].assign(s.pairs().begin(), s.pairs().end());
+            else
+                detail::deepest_contact(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
+                                        dynamic(p.a), dynamic(p.b), work[k], s);
+            const std::vector<SpherePair>& pairs = reuse ? work[k].pairs : s.pairs();
+            if (keep_pairs && band == 0 && (dynamic(p.a) || dynamic(p.b))) // a response moves one of them
+                start_pairs_[j].assign(pairs.begin(), pairs.end());
         });
         c.depth_queries = colliding.size();
         c.ns_depth = ns_since(t0);
