@@ -1,8 +1,14 @@
-// Box tree over triangles: nearest-surface and segment queries for radius limiting.
+// Four-wide box tree over triangles: the radius limiter's ball-and-segment probe.
 #include "geometry/triangle_bvh.hpp"
 #include <algorithm>
 #include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
 #include <utility>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 namespace spt::detail {
 
@@ -30,6 +36,11 @@ Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vecto
 
 namespace {
 
+constexpr uint32_t kLeafSize = 4; // triangles a leaf holds at most
+// The walk's stack: a node pushes at most four children and the depth stays below about 80
+// (every lane holds at most three quarters of its node's triangles, plus a few near leaves).
+constexpr int kStack = 512;
+
 // Spreads the low 21 bits of v to every third bit.
 uint64_t spread_bits(uint64_t v) {
     v &= 0x1fffff;
@@ -41,25 +52,51 @@ uint64_t spread_bits(uint64_t v) {
     return v;
 }
 
-// Index of the highest set bit, -1 for 0.
-int highest_bit(uint64_t v) { return v ? 63 - __builtin_clzll(v) : -1; }
+// The next float above a finite f (libm's nextafterf is a call, and boxes take millions).
+float float_above(float f) {
+    if (f == 0) return FLT_TRUE_MIN;
+    uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    bits += f > 0 ? 1 : -1;
+    std::memcpy(&f, &bits, 4);
+    return f;
+}
 
-// Slab test: true if the segment from a along d (fraction 0 to 1) misses the box.
-bool segment_misses(const Eigen::AlignedBox3d& box, const Eigen::AlignedBox3d& seg, const Eigen::Vector3d& a,
-                    const Eigen::Vector3d& d) {
-    if (!box.intersects(seg)) return true; // cheap, and enough for short segments
-    double lo = 0, hi = 1;
-    for (int k = 0; k < 3; ++k) {
-        if (d[k] == 0) {
-            if (a[k] < box.min()[k] || a[k] > box.max()[k]) return true;
-            continue;
-        }
-        double t0 = (box.min()[k] - a[k]) / d[k], t1 = (box.max()[k] - a[k]) / d[k];
-        if (t0 > t1) std::swap(t0, t1);
-        lo = std::max(lo, t0), hi = std::min(hi, t1);
-        if (lo > hi) return true;
+// The float at or below v (at or above for up), clamped to the float range without overflow:
+// a float box rounded outwards contains the double one.
+float round_down(double v) {
+    if (!(v > -double(FLT_MAX))) return -INFINITY; // NaN too: a box that contains everything
+    if (v > double(FLT_MAX)) return FLT_MAX;
+    const float f = float(v);
+    return double(f) > v ? -float_above(-f) : f;
+}
+float round_up(double v) {
+    if (!(v < double(FLT_MAX))) return INFINITY;
+    if (v < -double(FLT_MAX)) return -FLT_MAX;
+    const float f = float(v);
+    return double(f) < v ? float_above(f) : f;
+}
+
+// Where a range [b, e) of sorted records (more than a leaf) is cut: within its middle half,
+// where the record changes in its highest bit (the Morton code's, or the index's where the
+// codes are equal). The records there share every bit above that one and are sorted, so it
+// turns on exactly once: a binary search finds it. Both parts are non-empty and the depth
+// stays logarithmic.
+uint32_t split_point(const std::vector<uint64_t>& key, uint32_t b, uint32_t e) {
+    const uint32_t len = e - b;
+    const uint32_t first = std::max(b + 1, b + len / 4), last = std::min(e - 1, e - len / 4);
+    const uint64_t diff = key[first - 1] ^ key[last];
+    if (!diff) return b + len / 2;
+    const uint64_t bit = uint64_t(1) << (63 - __builtin_clzll(diff));
+    uint32_t lo = first, hi = last;
+    while (lo < hi) {
+        const uint32_t m = lo + (hi - lo) / 2;
+        if (key[m] & bit)
+            hi = m;
+        else
+            lo = m + 1;
     }
-    return false;
+    return lo;
 }
 
 } // namespace
@@ -67,89 +104,170 @@ bool segment_misses(const Eigen::AlignedBox3d& box, const Eigen::AlignedBox3d& s
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh) : mesh_(mesh) {
     const auto n = uint32_t(mesh.triangles.size());
     if (n == 0) return;
-    // Triangles in the Morton order of their centroids (a stable radix sort: deterministic),
-    // then split near the middle where that order jumps furthest: one pass over the triangles
-    // per level, in memory order, instead of a selection per node through an index.
-    auto centroid = [&](uint32_t i) {
-        const auto& t = mesh.triangles[i];
-        return Eigen::Vector3d((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3);
-    };
-    Eigen::AlignedBox3d cbox;
-    for (uint32_t i = 0; i < n; ++i) cbox.extend(centroid(i));
-    const Eigen::Vector3d lo = cbox.min(), size = cbox.sizes();
-    constexpr double kCells = double((1 << 21) - 1);
-    std::vector<Keyed> keyed(n), spare(n);
-    for (uint32_t i = 0; i < n; ++i) {
-        const Eigen::Vector3d c = centroid(i);
-        uint64_t key = 0;
-        for (int k = 0; k < 3; ++k) {
-            const double f = size[k] > 0 ? (c[k] - lo[k]) / size[k] : 0.0;
-            key |= spread_bits(uint64_t(std::clamp(f, 0.0, 1.0) * kCells)) << (2 - k);
+    const auto [lo, hi] = mesh.bounds(); // every vertex: a box around the triangles, in one pass
+    const Eigen::AlignedBox3d vbox(lo, hi);
+    origin_ = vbox.center();
+    if (!origin_.allFinite()) origin_.setZero();
+    extent_ = std::max((vbox.max() - origin_).cwiseAbs().maxCoeff(), (vbox.min() - origin_).cwiseAbs().maxCoeff());
+    // Triangles in the Morton order of their centroids, then cut where that order jumps
+    // furthest near the middle. A record is the code's top 32 bits over the triangle's index:
+    // three radix passes of 11 bits over eight-byte records sort them (a stable sort, so the
+    // records end fully sorted and equal codes keep the mesh's order).
+    std::vector<uint64_t> record(n), spare(n);
+    {
+        // Cells of a 2^21 grid over the box, from the sum of the three corners.
+        constexpr double kCells = double((1 << 21) - 1);
+        const Eigen::Vector3d size = vbox.sizes(), low = 3 * vbox.min();
+        Eigen::Vector3d scale;
+        for (int k = 0; k < 3; ++k) scale[k] = size[k] > 0 ? kCells / (3 * size[k]) : 0.0;
+        for (uint32_t i = 0; i < n; ++i) {
+            const auto& t = mesh.triangles[i];
+            const Eigen::Vector3d sum = mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]];
+            uint64_t code = 0;
+            for (int k = 0; k < 3; ++k) {
+                const double cell = (sum[k] - low[k]) * scale[k];
+                code |= spread_bits(uint64_t(cell > 0 ? std::min(cell, kCells) : 0.0)) << (2 - k); // NaN: 0
+            }
+            record[i] = (code >> 31) << 32 | i; // the code has 63 bits
         }
-        keyed[i] = {key, i};
     }
-    for (int shift = 0; shift < 64; shift += 16) {
-        std::vector<uint32_t> count(1 << 16, 0);
-        for (const Keyed& k : keyed) ++count[(k.key >> shift) & 0xffff];
-        if (count[(keyed[0].key >> shift) & 0xffff] == n) continue; // every key has this digit
+    for (int shift = 32; shift < 64; shift += 11) {
+        std::array<uint32_t, 2048> count{};
+        for (uint64_t r : record) ++count[(r >> shift) & 2047];
+        if (count[(record[0] >> shift) & 2047] == n) continue; // every record has this digit
         uint32_t sum = 0;
         for (uint32_t& c : count) sum += std::exchange(c, sum);
-        for (const Keyed& k : keyed) spare[count[(k.key >> shift) & 0xffff]++] = k;
-        keyed.swap(spare);
+        for (uint64_t r : record) spare[count[(r >> shift) & 2047]++] = r;
+        record.swap(spare);
     }
     spare = {};
     order_.resize(n);
-    for (uint32_t i = 0; i < n; ++i) order_[i] = keyed[i].triangle;
-    nodes_.reserve(n / 2 + 1);
-    nodes_.push_back({});
-    build(0, 0, n, keyed);
+    for (uint32_t i = 0; i < n; ++i) order_[i] = uint32_t(record[i]);
+    nodes_.reserve(n / 8 + 1);
+    Eigen::AlignedBox3d box;
+    build(0, n, record, box);
 }
 
-void TriangleBvh::build(uint32_t node, uint32_t b, uint32_t e, const std::vector<Keyed>& keyed) {
-    if (e - b <= 4) {
-        Eigen::AlignedBox3d box;
-        for (uint32_t i = b; i < e; ++i)
-            for (uint32_t v : mesh_.triangles[order_[i]]) box.extend(mesh_.positions[v]);
-        nodes_[node] = {box, b, e - b};
-        return;
-    }
-    // Among the middle half of the range, the place where the Morton code changes in its
-    // highest bit (nearest the middle on a tie): children stay compact and the depth stays
-    // below log_{4/3} of the triangle count (find_triangle's stack).
-    const uint32_t len = e - b, mid0 = b + len / 2;
-    uint32_t mid = mid0;
-    int best = highest_bit(keyed[mid - 1].key ^ keyed[mid].key);
-    for (uint32_t i = std::max(b + 1, b + len / 4); i <= std::min(e - 1, e - len / 4); ++i) {
-        const int bit = highest_bit(keyed[i - 1].key ^ keyed[i].key);
-        const uint32_t dist = i > mid0 ? i - mid0 : mid0 - i, best_dist = mid > mid0 ? mid - mid0 : mid0 - mid;
-        if (bit > best || (bit == best && dist < best_dist)) best = bit, mid = i;
-    }
-    const auto left = uint32_t(nodes_.size());
-    nodes_.push_back({});
-    build(left, b, mid, keyed);
-    const auto right = uint32_t(nodes_.size());
-    nodes_.push_back({});
-    build(right, mid, e, keyed);
-    nodes_[node] = {nodes_[left].box.merged(nodes_[right].box), right, 0};
+Eigen::AlignedBox3d TriangleBvh::leaf_box(uint32_t b, uint32_t e) const {
+    Eigen::AlignedBox3d box;
+    for (uint32_t i = b; i < e; ++i)
+        for (uint32_t v : mesh_.triangles[order_[i]]) box.extend(mesh_.positions[v] - origin_);
+    return box;
 }
 
-template <class Reject, class Hit> bool TriangleBvh::find_triangle(Reject reject, Hit hit) const {
+uint32_t TriangleBvh::build(uint32_t b, uint32_t e, const std::vector<uint64_t>& key, Eigen::AlignedBox3d& box) {
+    const auto self = uint32_t(nodes_.size());
+    nodes_.emplace_back();
+    // Up to four lanes: the range, then its largest part cut again while one exceeds a leaf.
+    std::array<std::pair<uint32_t, uint32_t>, 4> lane{};
+    lane[0] = {b, e};
+    int lanes = 1;
+    while (lanes < 4) {
+        int widest = -1;
+        for (int k = 0; k < lanes; ++k)
+            if (lane[k].second - lane[k].first > kLeafSize &&
+                (widest < 0 || lane[k].second - lane[k].first > lane[widest].second - lane[widest].first))
+                widest = k;
+        if (widest < 0) break;
+        const uint32_t cut = split_point(key, lane[widest].first, lane[widest].second);
+        lane[lanes++] = {cut, lane[widest].second};
+        lane[widest].second = cut;
+    }
+    Node node{};
+    for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 4; ++k) node.lo[a][k] = INFINITY, node.hi[a][k] = -INFINITY;
+    node.lanes = uint8_t(lanes);
+    box.setEmpty();
+    for (int k = 0; k < lanes; ++k) {
+        const auto [first, last] = lane[k];
+        Eigen::AlignedBox3d child;
+        if (last - first <= kLeafSize) {
+            child = leaf_box(first, last);
+            node.child[k] = first, node.count[k] = uint8_t(last - first);
+        } else {
+            node.child[k] = build(first, last, key, child);
+        }
+        for (int a = 0; a < 3; ++a) node.lo[a][k] = round_down(child.min()[a]), node.hi[a][k] = round_up(child.max()[a]);
+        box.extend(child);
+    }
+    nodes_[self] = node;
+    return self;
+}
+
+// Which lanes of a node the probe's ball (bit k of *ball) and segment's box (*seg) meet.
+// (A slab test of the segment itself culled 9% of the triangle tests and cost more than that.)
+void TriangleBvh::lanes_met(const Node& n, const FloatProbe& q, int* ball, int* seg) {
+#if defined(__SSE2__)
+    const __m128 zero = _mm_setzero_ps();
+    __m128 dist2 = zero, in_seg = _mm_castsi128_ps(_mm_set1_epi32(-1));
+    for (int a = 0; a < 3; ++a) {
+        const __m128 lo = _mm_loadu_ps(n.lo[a]), hi = _mm_loadu_ps(n.hi[a]), c = _mm_set1_ps(q.centre[a]);
+        const __m128 d = _mm_max_ps(_mm_max_ps(_mm_sub_ps(lo, c), _mm_sub_ps(c, hi)), zero);
+        dist2 = _mm_add_ps(dist2, _mm_mul_ps(d, d));
+        in_seg = _mm_and_ps(in_seg, _mm_and_ps(_mm_cmple_ps(lo, _mm_set1_ps(q.seg_hi[a])),
+                                               _mm_cmpge_ps(hi, _mm_set1_ps(q.seg_lo[a]))));
+    }
+    *ball = _mm_movemask_ps(_mm_cmple_ps(dist2, _mm_set1_ps(q.reach2)));
+    *seg = _mm_movemask_ps(in_seg);
+#else
+    *ball = *seg = 0;
+    for (int k = 0; k < 4; ++k) {
+        float dist2 = 0;
+        bool in_seg = true;
+        for (int a = 0; a < 3; ++a) {
+            const float d = std::max(std::max(n.lo[a][k] - q.centre[a], q.centre[a] - n.hi[a][k]), 0.0f);
+            dist2 += d * d;
+            in_seg = in_seg && n.lo[a][k] <= q.seg_hi[a] && n.hi[a][k] >= q.seg_lo[a];
+        }
+        *ball |= int(dist2 <= q.reach2) << k;
+        *seg |= int(in_seg) << k;
+    }
+#endif
+}
+
+TriangleBvh::FloatProbe TriangleBvh::float_probe(const BallSegmentProbe& p) const {
+    // Relative to origin_ the floats keep the precision of the mesh's own size. Every rounding
+    // of the boxes' tests (and of these casts) is far below eta, by which the ball and the
+    // segment's box are widened: the boxes prune only what the exact tests would reject.
+    const Eigen::Vector3d c = p.centre - origin_, a = p.start - origin_, b = a + p.end * p.dir;
+    const bool segment = p.end > p.skip;
+    const double reach = std::sqrt(std::max(0.0, p.d2));
+    const double scale = extent_ + c.cwiseAbs().maxCoeff() + reach +
+                         (segment ? a.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff() : 0.0);
+    const double eta = std::ldexp(scale, -18);
+    const bool pruned = scale < 1e30; // beyond, or NaN: every box is met, the triangle tests decide
+    FloatProbe q;
+    for (int k = 0; k < 3; ++k) {
+        q.centre[k] = pruned ? float(c[k]) : 0.0f;
+        q.seg_lo[k] = !segment ? INFINITY : pruned ? float(std::min(a[k], b[k]) - 2 * eta) : -INFINITY;
+        q.seg_hi[k] = !segment ? -INFINITY : pruned ? float(std::max(a[k], b[k]) + 2 * eta) : INFINITY;
+    }
+    q.reach2 = pruned ? float((reach + 2 * eta) * (reach + 2 * eta)) : INFINITY;
+    return q;
+}
+
+bool TriangleBvh::touches(const BallSegmentProbe& p) const {
     if (nodes_.empty()) return false;
-    uint32_t stack[128];
+    const FloatProbe q = float_probe(p);
+    uint32_t stack[kStack];
     int top = 0;
     stack[top++] = 0;
     while (top) {
-        const uint32_t self = stack[--top];
-        const Node& n = nodes_[self];
-        if (reject(n.box)) continue;
-        if (n.count) {
-            for (uint32_t i = n.first; i < n.first + n.count; ++i)
-                if (hit(order_[i])) return true;
-            continue;
+        const Node& n = nodes_[stack[--top]];
+        int ball, seg;
+        lanes_met(n, q, &ball, &seg);
+        for (int mask = (ball | seg) & ((1 << n.lanes) - 1); mask; mask &= mask - 1) {
+            const int k = __builtin_ctz(unsigned(mask));
+            if (!n.count[k]) {
+                stack[top++] = n.child[k];
+                continue;
+            }
+            const bool in_ball = ball >> k & 1, on_segment = seg >> k & 1;
+            for (uint32_t i = n.child[k]; i < n.child[k] + n.count[k]; ++i) {
+                if (in_ball && triangle_within(order_[i], p.centre, p.d2)) return true;
+                if (on_segment && triangle_crossed(order_[i], p.start, p.dir, p.skip, p.end)) return true;
+            }
         }
-        if (top + 2 > 128) continue; // cannot happen: the depth is below log_{4/3} of 2^32
-        stack[top++] = n.first;
-        stack[top++] = self + 1;
     }
     return false;
 }
@@ -160,8 +278,8 @@ bool TriangleBvh::triangle_within(uint32_t triangle, const Eigen::Vector3d& p, d
     return (q - p).squaredNorm() < d2;
 }
 
-bool TriangleBvh::triangle_crossed(uint32_t triangle, const Eigen::Vector3d& a, const Eigen::Vector3d& d,
-                                   double skip) const {
+bool TriangleBvh::triangle_crossed(uint32_t triangle, const Eigen::Vector3d& a, const Eigen::Vector3d& d, double skip,
+                                   double end) const {
     const Triangle& t = mesh_.triangles[triangle];
     const Eigen::Vector3d& v0 = mesh_.positions[t[0]];
     const Eigen::Vector3d e1 = mesh_.positions[t[1]] - v0, e2 = mesh_.positions[t[2]] - v0;
@@ -175,21 +293,7 @@ bool TriangleBvh::triangle_crossed(uint32_t triangle, const Eigen::Vector3d& a, 
     const double v = d.dot(qv) / det;
     if (v < 0 || u + v > 1) return false;
     const double s = e2.dot(qv) / det;
-    return s > skip && s <= 1;
-}
-
-bool TriangleBvh::any_within(const Eigen::Vector3d& p, double d2) const {
-    return find_triangle([&](const Eigen::AlignedBox3d& box) { return box.squaredExteriorDistance(p) >= d2; },
-                         [&](uint32_t t) { return triangle_within(t, p, d2); });
-}
-
-bool TriangleBvh::segment_hits(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double skip) const {
-    const Eigen::Vector3d d = b - a;
-    // Slab test of the segment against each box: long segments (rays out of the mesh)
-    // would overlap most boxes if only the segment's own box were compared.
-    const Eigen::AlignedBox3d seg(a.cwiseMin(b), a.cwiseMax(b));
-    return find_triangle([&](const Eigen::AlignedBox3d& box) { return segment_misses(box, seg, a, d); },
-                         [&](uint32_t t) { return triangle_crossed(t, a, d, skip); });
+    return s > skip && s <= end;
 }
 
 } // namespace spt::detail

@@ -26,14 +26,17 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     const Eigen::Vector3d c = p - r * n;
     // The tangent point p is at distance r; a surface nearer than r - allowance means the
     // sphere pokes out there by more than the allowance.
-    if (bvh_->any_within(c, (r - protrusion_) * (r - protrusion_))) return true;
-    // A centre beyond a wall thinner than the allowance passes the test above; the segment
-    // from the tangent point to the centre then crosses the surface. The start is skipped
+    // A centre beyond a wall thinner than the allowance passes that test; the segment from
+    // the tangent point to the centre then crosses the surface. A crossing deeper than twice
+    // the allowance lies in the ball above with a margin of an allowance, so the segment is
+    // searched only that far: one walk of the tree near p answers both. The start is skipped
     // so the faces at p itself do not count: p lies on them only up to the rounding of its
     // coordinates, which grows with their distance from the file's origin, not with r (a
     // 1e-4 mesh 1e6 away is rounded to 1e-10, a sizeable fraction of its small spheres).
     const double rounding = 64 * std::numeric_limits<double>::epsilon() * p.cwiseAbs().maxCoeff();
-    return bvh_->segment_hits(p, c, std::max(1e-6, rounding / r));
+    const detail::BallSegmentProbe probe{c, (r - protrusion_) * (r - protrusion_), p, c - p,
+                                         std::max(1e-6, rounding / r), std::min(1.0, 2 * protrusion_ / r)};
+    return bvh_->touches(probe);
 }
 
 float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, bool two_sided) const {
