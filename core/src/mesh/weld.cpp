@@ -20,42 +20,54 @@ uint64_t hash_cell(const Cell& c) {
 }
 
 // Open-addressing table from a cell to the first welded vertex in it; the rest of the
-// cell's vertices are chained through `next`. No allocation per cell; grows with the
-// welded vertices, not the input (an unindexed STL has six times as many).
+// cell's vertices are chained through `next`. A slot is eight bytes, the head and the top of
+// the cell's hash, and the cell itself is read from `cell_of` (the cell of each welded
+// vertex) only when that matches: nearly every probe of a large mesh misses the cache, and a
+// small slot makes the table a quarter of the size a slot holding the cell would.
 class CellTable {
 public:
-    CellTable() { rehash(1024); }
-    int32_t head(const Cell& c) const {
-        for (size_t i = hash_cell(c) & mask_;; i = (i + 1) & mask_) {
-            if (slots_[i].head < 0) return -1;
-            if (slots_[i].cell == c) return slots_[i].head;
+    /// A table sized for `expected` cells, so that it need not grow while they go in.
+    explicit CellTable(size_t expected) {
+        size_t cap = 1024;
+        while (cap < 2 * expected) cap *= 2;
+        slots_.assign(cap, Slot{});
+        mask_ = cap - 1;
+    }
+    int32_t head(const Cell& c, uint64_t h, const std::vector<Cell>& cell_of) const {
+        const auto tag = uint32_t(h >> 32);
+        for (size_t i = h & mask_;; i = (i + 1) & mask_) {
+            const Slot s = slots_[i];
+            if (s.head < 0) return -1;
+            if (s.tag == tag && cell_of[size_t(s.head)] == c) return s.head;
         }
     }
-    // Makes `v` the head of its cell and returns the previous head (or -1).
-    int32_t push(const Cell& c, int32_t v) {
-        if (2 * (used_ + 1) > slots_.size()) rehash(slots_.size() * 2);
-        for (size_t i = hash_cell(c) & mask_;; i = (i + 1) & mask_) {
+    // Makes `v` the head of cell c (hash h) and returns the previous head (or -1);
+    // cell_of[v] must already be c.
+    int32_t push(const Cell& c, uint64_t h, int32_t v, const std::vector<Cell>& cell_of) {
+        if (2 * (used_ + 1) > slots_.size()) rehash(slots_.size() * 2, cell_of);
+        const auto tag = uint32_t(h >> 32);
+        for (size_t i = h & mask_;; i = (i + 1) & mask_) {
             if (slots_[i].head < 0) {
-                slots_[i] = {c, v};
+                slots_[i] = {v, tag};
                 ++used_;
                 return -1;
             }
-            if (slots_[i].cell == c) return std::exchange(slots_[i].head, v);
+            if (slots_[i].tag == tag && cell_of[size_t(slots_[i].head)] == c) return std::exchange(slots_[i].head, v);
         }
     }
 
 private:
     struct Slot {
-        Cell cell;
         int32_t head = -1;
+        uint32_t tag = 0; // the top 32 bits of the cell's hash
     };
-    void rehash(size_t cap) {
+    void rehash(size_t cap, const std::vector<Cell>& cell_of) {
         std::vector<Slot> old = std::move(slots_);
         slots_.assign(cap, Slot{});
         mask_ = cap - 1;
         for (const Slot& s : old)
             if (s.head >= 0)
-                for (size_t i = hash_cell(s.cell) & mask_;; i = (i + 1) & mask_)
+                for (size_t i = hash_cell(cell_of[size_t(s.head)]) & mask_;; i = (i + 1) & mask_)
                     if (slots_[i].head < 0) {
                         slots_[i] = s;
                         break;
@@ -71,17 +83,20 @@ std::vector<uint32_t> weld_positions(const std::vector<Eigen::Vector3d>& positio
                                      std::vector<Eigen::Vector3d>& welded) {
     std::vector<uint32_t> map(positions.size());
     welded.clear();
-    // Cells twice the tolerance: a match lies in this cell, or in a neighbour on a side
-    // where the point is within the tolerance of the cell's boundary (3.4 cells on average).
+    // Cells four times the tolerance: a match lies in this cell, or in a neighbour on a side
+    // where the point is within the tolerance of the cell's boundary (half the points per
+    // axis: 3.4 cells on average; cells twice the tolerance would always take 8). Far below
+    // the spacing of a mesh's vertices, a cell holds one vertex or none.
     // A cell also at least 2^-60 of the largest coordinate, so every cell index fits int64
     // (a larger cell is only slower: matches are still in the cell or a neighbour).
     double largest = 0;
     for (const Eigen::Vector3d& p : positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
-    double cell = std::max(tolerance > 0 ? 2 * tolerance : 1.0, std::ldexp(largest, -60));
+    double cell = std::max(tolerance > 0 ? 4 * tolerance : 1.0, std::ldexp(largest, -60));
     if (!(cell > 0) || !std::isfinite(cell)) cell = 1.0;
     const double tol2 = tolerance * tolerance;
-    CellTable table;
+    CellTable table(positions.size());
     std::vector<int32_t> next;
+    std::vector<Cell> cell_of; // of each welded vertex
     for (size_t i = 0; i < positions.size(); ++i) {
         const Eigen::Vector3d& p = positions[i];
         int64_t k[3];
@@ -95,16 +110,20 @@ std::vector<uint32_t> weld_positions(const std::vector<Eigen::Vector3d>& positio
         int64_t found = -1;
         for (int dx = lo[0]; dx <= hi[0] && found < 0; ++dx)
             for (int dy = lo[1]; dy <= hi[1] && found < 0; ++dy)
-                for (int dz = lo[2]; dz <= hi[2] && found < 0; ++dz)
-                    for (int32_t w = table.head({k[0] + dx, k[1] + dy, k[2] + dz}); w >= 0; w = next[size_t(w)])
+                for (int dz = lo[2]; dz <= hi[2] && found < 0; ++dz) {
+                    const Cell c{k[0] + dx, k[1] + dy, k[2] + dz};
+                    for (int32_t w = table.head(c, hash_cell(c), cell_of); w >= 0; w = next[size_t(w)])
                         if ((welded[size_t(w)] - p).squaredNorm() <= tol2) {
                             found = w;
                             break;
                         }
+                }
         if (found < 0) {
             found = int64_t(welded.size());
             welded.push_back(p);
-            next.push_back(table.push({k[0], k[1], k[2]}, int32_t(found)));
+            const Cell c{k[0], k[1], k[2]};
+            cell_of.push_back(c);
+            next.push_back(table.push(c, hash_cell(c), int32_t(found), cell_of));
         }
         map[i] = uint32_t(found);
     }
