@@ -19,6 +19,8 @@ struct BallSegmentProbe {
     double skip, end;
 };
 
+/// Box tree over a mesh's triangles, four children a node, boxes as floats relative to the
+/// mesh's centre (rounded outwards), for the radius limiter's probes.
 class TriangleBvh {
 public:
     /// Indexes `mesh` (kept by reference).
@@ -37,7 +39,7 @@ public:
 
 private:
     // Four children's boxes, as floats relative to origin_ rounded outwards, one lane a child;
-    // an unused lane has an empty box (lo > hi), which no probe meets.
+    // lanes past `lanes` are unused (an empty box, and never visited).
     struct Node {
         float lo[3][4], hi[3][4];
         uint32_t child[4]; // count 0: a node's index; otherwise the leaf's first place in order_
