@@ -13,6 +13,25 @@ float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples
 void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const SampleSet& samples,
                    BoundsMethod method, const detail::Ball& hint = {});
 
+/// A tree's reachable nodes in depth-first order (a node, its left subtree, its right subtree)
+/// with their children's indices, so that whole-tree passes need no look-ups by id.
+struct NodeArray {
+    static constexpr uint32_t kNone = ~0u; ///< no such child
+    std::vector<TreeNode*> node;
+    std::vector<uint32_t> left, right;
+    /// Appends a node whose children are not known yet; returns its index.
+    uint32_t add(TreeNode* n) {
+        node.push_back(n), left.push_back(kNone), right.push_back(kNone);
+        return uint32_t(node.size() - 1);
+    }
+};
+
+/// Sets every node's sampling-sphere radius: active nodes by `rule`, inner nodes the largest below.
+void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& rule);
+
+/// Sets every node's bounding sphere, leaves first (SamplingTree::compute_bounds's rule).
+void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method);
+
 namespace detail {
 
 /// Sets node.center/bv_radius from n sampling spheres (centres c, radii r, surface points p).

@@ -15,7 +15,11 @@ SamplingTree::SamplingTree(std::string name, uint32_t sample_count) : name_(std:
 }
 
 SamplingTree::SamplingTree(std::string name, std::vector<TreeNode> nodes) : name_(std::move(name)) {
-    for (auto& n : nodes) nodes_[n.id] = std::move(n);
+    // Inserting in id order at the end skips the map's searches; of equal ids the last given wins.
+    std::vector<std::pair<NodeId, size_t>> order(nodes.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = {nodes[i].id, i};
+    std::sort(order.begin(), order.end());
+    for (const auto& [id, i] : order) nodes_.insert_or_assign(nodes_.end(), id, std::move(nodes[i]));
 }
 
 const TreeNode* SamplingTree::find(NodeId id) const {
@@ -93,48 +97,93 @@ void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule
 
 namespace {
 
-// Appends an active node's sampling spheres (centres, radii) and their surface points.
+// Appends an active node's sampling spheres (centres, radii) and, if `p` is given, their surface points.
 void append_spheres(const TreeNode& n, const SampleSet& samples, std::vector<Eigen::Vector3f>& c,
-                    std::vector<float>& r, std::vector<Eigen::Vector3f>& p) {
+                    std::vector<float>& r, std::vector<Eigen::Vector3f>* p) {
     for (uint32_t s : n.samples) {
-        p.push_back(samples.points[s]);
+        if (p) p->push_back(samples.points[s]);
         c.push_back(samples.sphere_centre(s, n.ss_radius));
         r.push_back(n.ss_radius);
     }
 }
 
-} // namespace
+float radius_at(const NodeArray& tree, uint32_t i) { return i == NodeArray::kNone ? 0.0f : tree.node[i]->ss_radius; }
 
-void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
-    // Lay the samples out leaf by leaf so that every node covers one contiguous run.
-    std::vector<Eigen::Vector3f> c, p;
+// Bounds every node of a NodeArray, children before parents. The samples are laid out leaf by
+// leaf so that every node covers one contiguous run.
+struct BoundsPass {
+    NodeArray& tree;
+    const SampleSet& samples;
+    BoundsMethod method;
+    std::vector<Eigen::Vector3f> c, p; // p only for the paper's bounds, the one method that reads it
     std::vector<float> r;
-    c.reserve(samples.size()), p.reserve(samples.size()), r.reserve(samples.size());
+
     struct Result {
         detail::Ball ball;
         Eigen::AlignedBox3f box; // of the sphere centres below
     };
-    std::function<Result(TreeNode&)> visit = [&](TreeNode& n) -> Result {
+
+    Result visit(uint32_t i) {
+        TreeNode& n = *tree.node[i];
         const size_t begin = c.size();
         Result out;
         detail::Ball hint;
         if (n.active) {
-            append_spheres(n, samples, c, r, p);
+            append_spheres(n, samples, c, r, method == BoundsMethod::Paper ? &p : nullptr);
             for (size_t k = begin; k < c.size(); ++k) out.box.extend(c[k]);
         } else {
-            for (NodeId child : {left_child(n.id), right_child(n.id)})
-                if (TreeNode* ch = find_mutable(child)) {
-                    const Result sub = visit(*ch);
+            for (uint32_t child : {tree.left[i], tree.right[i]})
+                if (child != NodeArray::kNone) {
+                    const Result sub = visit(child);
                     hint = detail::merge_balls(hint, sub.ball);
                     out.box.extend(sub.box);
                 }
         }
-        detail::bound_run(n, c.data() + begin, r.data() + begin, p.data() + begin, c.size() - begin, hint, method,
-                          &out.box);
+        const Eigen::Vector3f* points = p.empty() ? nullptr : p.data() + begin;
+        detail::bound_run(n, c.data() + begin, r.data() + begin, points, c.size() - begin, hint, method, &out.box);
         out.ball = {n.center.cast<double>(), double(n.bv_radius)};
         return out;
-    };
-    if (TreeNode* root = find_mutable(root_id())) visit(*root);
+    }
+};
+
+// Appends node `id` and, depth first, the nodes below it; returns its index (kNone if missing).
+uint32_t add_subtree(SamplingTree& tree, NodeId id, NodeArray& out) {
+    TreeNode* n = tree.find_mutable(id);
+    if (!n) return NodeArray::kNone;
+    const uint32_t i = out.add(n);
+    if (!n->active) {
+        const uint32_t l = add_subtree(tree, left_child(id), out);
+        out.left[i] = l;
+        const uint32_t r = add_subtree(tree, right_child(id), out);
+        out.right[i] = r;
+    }
+    return i;
+}
+
+} // namespace
+
+void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& rule) {
+    // Children follow their parent: walking backwards finishes children first.
+    for (size_t i = tree.node.size(); i-- > 0;) {
+        TreeNode& n = *tree.node[i];
+        n.ss_radius = n.active ? node_radius(n.samples, samples, rule)
+                               : std::max(radius_at(tree, tree.left[i]), radius_at(tree, tree.right[i]));
+    }
+}
+
+void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method) {
+    if (tree.node.empty()) return;
+    BoundsPass pass{tree, samples, method, {}, {}, {}};
+    pass.c.reserve(samples.size()), pass.r.reserve(samples.size());
+    if (method == BoundsMethod::Paper) pass.p.reserve(samples.size());
+    pass.visit(0);
+}
+
+void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
+    NodeArray array;
+    array.node.reserve(nodes_.size()), array.left.reserve(nodes_.size()), array.right.reserve(nodes_.size());
+    add_subtree(*this, root_id(), array);
+    spt::compute_bounds(array, samples, method);
 }
 
 void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMethod method) {
@@ -151,7 +200,7 @@ void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMet
         std::vector<float> rad;
         std::function<void(const TreeNode&)> collect = [&](const TreeNode& t) {
             if (t.active) {
-                append_spheres(t, samples, c, rad, p);
+                append_spheres(t, samples, c, rad, &p);
                 return;
             }
             if (const TreeNode* l = find(left_child(t.id))) collect(*l);

@@ -1,6 +1,7 @@
 // Automatic sampling-tree construction: median or binned volume splits down to a leaf size.
 #include "spt/tree_builder.hpp"
 #include "sampling/radius_class.hpp"
+#include "tree/bounds.hpp"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -52,8 +53,39 @@ struct Bounds3 {
 struct Builder {
     const BuildOptions& options;
     std::vector<Item> items;
-    std::vector<TreeNode> out;
+    std::vector<TreeNode> out; // depth first: an inner node's left child follows it
+    std::vector<uint32_t> right_of; // per node of `out`: its right child's index, or NodeArray::kNone
     int max_depth = kMaxNodeDepth; // deepest id the built nodes may have
+
+    // Appends a node to `out`; returns its index.
+    size_t emit(TreeNode&& node) {
+        out.push_back(std::move(node));
+        right_of.push_back(NodeArray::kNone);
+        return out.size() - 1;
+    }
+
+    // Emits an inner node and builds its children over [b, mid) and [mid, e).
+    void build_children(TreeNode&& node, size_t b, size_t mid, size_t e) {
+        const NodeId id = node.id;
+        node.active = false;
+        const size_t at = emit(std::move(node));
+        build(b, mid, left_child(id));
+        right_of[at] = uint32_t(out.size());
+        build(mid, e, right_child(id));
+    }
+
+    // The built nodes with their children's indices (valid while `out` is not resized).
+    NodeArray links() {
+        NodeArray array;
+        array.node.reserve(out.size()), array.left.reserve(out.size()), array.right.reserve(out.size());
+        for (size_t i = 0; i < out.size(); ++i) {
+            array.node.push_back(&out[i]);
+            const bool inner = right_of[i] != NodeArray::kNone;
+            array.left.push_back(inner ? uint32_t(i + 1) : NodeArray::kNone);
+            array.right.push_back(right_of[i]);
+        }
+        return array;
+    }
 
     Bounds3 box_of(size_t b, size_t e) const {
         Bounds3 box;
@@ -158,10 +190,7 @@ struct Builder {
                 const int cut = lo + (hi - lo + 1) / 2;
                 const auto mid = std::partition(items.begin() + long(b), items.begin() + long(e),
                                                 [cut](const Item& it) { return it.radius_class >= cut; });
-                node.active = false;
-                out.push_back(std::move(node));
-                build(b, size_t(mid - items.begin()), left_child(id));
-                build(size_t(mid - items.begin()), e, right_child(id));
+                build_children(std::move(node), b, size_t(mid - items.begin()), e);
                 return;
             }
         }
@@ -169,7 +198,7 @@ struct Builder {
             node.samples.reserve(e - b);
             for (size_t i = b; i < e; ++i) node.samples.push_back(items[i].sample);
             std::sort(node.samples.begin(), node.samples.end());
-            out.push_back(std::move(node));
+            emit(std::move(node));
             return;
         }
         const Bounds3 box = box_of(b, e);
@@ -179,10 +208,7 @@ struct Builder {
         size_t mid = options.strategy == SplitStrategy::Median || small ? split_median(b, e, box)
                                                                         : split_volume(b, e, box);
         if (mid <= b || mid >= e) mid = split_median(b, e, box);
-        node.active = false;
-        out.push_back(std::move(node));
-        build(b, mid, left_child(id));
-        build(mid, e, right_child(id));
+        build_children(std::move(node), b, mid, e);
     }
 };
 
@@ -192,7 +218,7 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
                         const BuildOptions& options, int max_depth) {
     BuildOptions fixed = options;
     fixed.leaf_size = std::max<uint32_t>(1, options.leaf_size);
-    Builder builder{fixed, std::vector<Item>(members.size()), {}, max_depth};
+    Builder builder{fixed, std::vector<Item>(members.size()), {}, {}, max_depth};
     for (size_t k = 0; k < members.size(); ++k) {
         const uint32_t i = members[k];
         const auto& p = samples.points[i];
@@ -200,12 +226,14 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
                                                                                             : samples.max_radius[i]);
         builder.items[k] = {{p.x(), p.y(), p.z()}, i, samples.is_two_sided(i) ? two_sided_radius_class(own) : radius_class(own)};
     }
-    builder.out.reserve(2 * members.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1);
+    const size_t expected = 2 * members.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1;
+    builder.out.reserve(expected), builder.right_of.reserve(expected);
     builder.build(0, members.size(), root_id());
-    SamplingTree tree(std::move(name), std::move(builder.out));
-    tree.assign_radii(samples, options.radius);
-    tree.compute_bounds(samples, options.bounds);
-    return tree;
+    // Radii and bounds on the builder's array, where children are indices rather than look-ups.
+    NodeArray array = builder.links();
+    assign_radii(array, samples, options.radius);
+    compute_bounds(array, samples, options.bounds);
+    return SamplingTree(std::move(name), std::move(builder.out));
 }
 
 } // namespace
