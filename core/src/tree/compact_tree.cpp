@@ -8,15 +8,22 @@
 namespace spt {
 namespace {
 
-int8_t to_snorm8(float v) { return int8_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 127.0f)); }
+// std::lround's value (halves away from zero), without the library call per coordinate: in
+// double, x + 0.5 is exact for every |x| <= 127, and truncation is then the rounding.
+int8_t to_snorm8(float v) {
+    const double x = std::clamp(v, -1.0f, 1.0f) * 127.0f;
+    if (std::isnan(x)) return 0; // lround's out-of-range result, truncated to 8 bits
+    return int8_t(x >= 0 ? int(x + 0.5) : -int(0.5 - x));
+}
 
 } // namespace
 
 CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : origin_(samples.origin) {
     const auto all = tree.nodes();
+    // Index in `all` (id order) of node `id`, or all.size() if there is none.
     auto index_of = [&](NodeId id) {
         auto it = std::lower_bound(all.begin(), all.end(), id, [](const TreeNode* n, NodeId v) { return n->id < v; });
-        return uint32_t(it - all.begin());
+        return uint32_t(it != all.end() && (*it)->id == id ? it - all.begin() : all.size());
     };
     size_t total = 0;
     for (const TreeNode* n : all) total += n->samples.size();
@@ -32,14 +39,15 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
     while (!stack.empty()) {
         auto [id, patch] = stack.back();
         stack.pop_back();
-        const TreeNode* n = tree.find(id);
-        if (!n) continue;
+        const uint32_t index = index_of(id);
+        if (index == all.size()) continue;
+        const TreeNode* n = all[index];
         if (patch >= 0) nodes_[size_t(patch)].first = uint32_t(nodes_.size());
         CompactNode c{};
         c.center[0] = n->center.x(), c.center[1] = n->center.y(), c.center[2] = n->center.z();
         c.bv_radius = n->bv_radius;
         c.ss_radius = n->ss_radius;
-        c.tree_node = index_of(id);
+        c.tree_node = index;
         const size_t slot = nodes_.size();
         if (n->active) {
             c.first = uint32_t(sphere);
