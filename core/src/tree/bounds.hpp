@@ -34,12 +34,32 @@ void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod meth
 
 namespace detail {
 
+/// Measures, for each of m candidate centres, the largest |centre - c_i| + r_i over a run's
+/// spheres: exactly the values a pass over the run gives, found with the help of something the
+/// caller knows (e.g. the bounding spheres of the nodes below).
+class FarthestSearch {
+public:
+    virtual ~FarthestSearch() = default;
+    /// Writes the m radii to `out`; `equal_radii` as bound_run found it.
+    virtual void radii(const Eigen::Vector3d* centre, size_t m, bool equal_radii, double* out) const = 0;
+};
+
+/// What a caller already knows about a run, to save passes over it.
+struct RunFacts {
+    const Eigen::AlignedBox3f* centre_box = nullptr; ///< the box of the n centres
+    int equal_radii = -1; ///< 1: every radius is r[0]; 0: not; -1: unknown
+    const FarthestSearch* farthest = nullptr; ///< replaces the pass that measures radii (tight bounds)
+};
+
 /// Sets node.center/bv_radius from n sampling spheres (centres c, radii r, surface points p).
 /// `hint` (may be empty) is a ball whose centre is worth trying, e.g. the children's merged
-/// ball, or the parent's ball for the two halves of a split (tight bounds only);
-/// `centre_box`, if given, is the box of the n centres (saves a pass).
+/// ball, or the parent's ball for the two halves of a split (tight bounds only).
 void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const Eigen::Vector3f* p, size_t n,
-               const Ball& hint, BoundsMethod method, const Eigen::AlignedBox3f* centre_box = nullptr);
+               const Ball& hint, BoundsMethod method, const RunFacts& facts = {});
+
+/// Largest |centre - c_i|^2 over n spheres if `equal_radii`, else largest |centre - c_i| + r_i
+/// (as bound_run computes them: with equal radii, the largest squared distance is what it roots).
+double run_extent(const Eigen::Vector3d& centre, const Eigen::Vector3f* c, const float* r, size_t n, bool equal_radii);
 
 } // namespace detail
 } // namespace spt

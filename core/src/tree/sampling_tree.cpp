@@ -117,6 +117,8 @@ struct BoundsPass {
     BoundsMethod method;
     std::vector<Eigen::Vector3f> c, p; // p only for the paper's bounds, the one method that reads it
     std::vector<float> r;
+    std::vector<uint32_t> begin, end; // per node: its run of spheres
+    std::vector<uint8_t> equal;       // per node: every radius of its run is the first
 
     struct Result {
         detail::Ball ball;
@@ -125,25 +127,80 @@ struct BoundsPass {
 
     Result visit(uint32_t i) {
         TreeNode& n = *tree.node[i];
-        const size_t begin = c.size();
+        const size_t first = c.size();
         Result out;
         detail::Ball hint;
+        detail::RunFacts facts;
         if (n.active) {
             append_spheres(n, samples, c, r, method == BoundsMethod::Paper ? &p : nullptr);
-            for (size_t k = begin; k < c.size(); ++k) out.box.extend(c[k]);
+            for (size_t k = first; k < c.size(); ++k) out.box.extend(c[k]);
+            equal[i] = !std::isnan(n.ss_radius);
         } else {
+            equal[i] = 1;
             for (uint32_t child : {tree.left[i], tree.right[i]})
                 if (child != NodeArray::kNone) {
                     const Result sub = visit(child);
                     hint = detail::merge_balls(hint, sub.ball);
                     out.box.extend(sub.box);
+                    if (begin[child] < end[child]) equal[i] &= equal[child] && r[begin[child]] == r[first];
                 }
         }
-        const Eigen::Vector3f* points = p.empty() ? nullptr : p.data() + begin;
-        detail::bound_run(n, c.data() + begin, r.data() + begin, points, c.size() - begin, hint, method, &out.box);
+        begin[i] = uint32_t(first), end[i] = uint32_t(c.size());
+        facts.centre_box = &out.box;
+        facts.equal_radii = equal[i];
+        const SubtreeSearch search(*this, i);
+        if (!n.active) facts.farthest = &search;
+        const Eigen::Vector3f* points = p.empty() ? nullptr : p.data() + first;
+        detail::bound_run(n, c.data() + first, r.data() + first, points, c.size() - first, hint, method, facts);
         out.ball = {n.center.cast<double>(), double(n.bv_radius)};
         return out;
     }
+
+    // Measures an inner node's radii from its subtree: a node whose bounding sphere cannot reach
+    // past the farthest sphere found so far is not read. The result is the full pass's, as the
+    // spheres skipped are provably nearer (by a margin far above the rounding of the tests).
+    class SubtreeSearch : public detail::FarthestSearch {
+    public:
+        SubtreeSearch(const BoundsPass& pass, uint32_t node) : pass_(pass), node_(node) {}
+        void radii(const Eigen::Vector3d* centre, size_t m, bool equal_radii, double* out) const override {
+            const float r0 = pass_.r[pass_.begin[node_]];
+            for (size_t k = 0; k < m; ++k) {
+                double best = 0; // equal radii: largest squared distance; otherwise largest distance + radius
+                descend(node_, centre[k], equal_radii, r0, best);
+                out[k] = equal_radii ? std::sqrt(best) + r0 : best;
+            }
+        }
+
+    private:
+        void descend(uint32_t j, const Eigen::Vector3d& centre, bool equal_radii, float r0, double& best) const {
+            const uint32_t b = pass_.begin[j], e = pass_.end[j];
+            const NodeArray& t = pass_.tree;
+            if (t.node[j]->active || e - b <= kScan) {
+                best = std::max(best, detail::run_extent(centre, pass_.c.data() + b, pass_.r.data() + b, e - b, equal_radii));
+                return;
+            }
+            uint32_t child[2] = {t.left[j], t.right[j]};
+            double reach[2];
+            for (int s = 0; s < 2; ++s) reach[s] = child[s] == NodeArray::kNone ? -1 : reach_of(*t.node[child[s]], centre);
+            if (reach[1] > reach[0]) std::swap(child[0], child[1]), std::swap(reach[0], reach[1]);
+            for (int s = 0; s < 2; ++s) {
+                if (child[s] == NodeArray::kNone) continue;
+                // Everything below lies within reach (minus its radius): skip unless it can matter.
+                const double bound = equal_radii ? square(std::max(0.0, reach[s] - r0)) : reach[s];
+                if (bound < best) continue;
+                descend(child[s], centre, equal_radii, r0, best);
+            }
+        }
+        // An upper bound on |centre - c_i| + r_i over the node's spheres, with a relative margin.
+        static double reach_of(const TreeNode& n, const Eigen::Vector3d& centre) {
+            const double d = (n.center.cast<double>() - centre).norm();
+            return (d + n.bv_radius) * (1 + 1e-9);
+        }
+        static double square(double x) { return x * x; }
+        static constexpr uint32_t kScan = 16; // runs this short are read whole
+        const BoundsPass& pass_;
+        uint32_t node_;
+    };
 };
 
 // Appends node `id` and, depth first, the nodes below it; returns its index (kNone if missing).
@@ -173,7 +230,8 @@ void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& r
 
 void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method) {
     if (tree.node.empty()) return;
-    BoundsPass pass{tree, samples, method, {}, {}, {}};
+    BoundsPass pass{tree, samples, method, {}, {}, {}, std::vector<uint32_t>(tree.node.size()),
+                    std::vector<uint32_t>(tree.node.size()), std::vector<uint8_t>(tree.node.size())};
     pass.c.reserve(samples.size()), pass.r.reserve(samples.size());
     if (method == BoundsMethod::Paper) pass.p.reserve(samples.size());
     pass.visit(0);
