@@ -20,10 +20,13 @@ int8_t to_snorm8(float v) {
 
 CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : origin_(samples.origin) {
     const auto all = tree.nodes();
+    // The ids in one array: the searches below then read no nodes.
+    std::vector<NodeId> ids(all.size());
+    for (size_t i = 0; i < all.size(); ++i) ids[i] = all[i]->id;
     // Index in `all` (id order) of node `id`, or all.size() if there is none.
     auto index_of = [&](NodeId id) {
-        auto it = std::lower_bound(all.begin(), all.end(), id, [](const TreeNode* n, NodeId v) { return n->id < v; });
-        return uint32_t(it != all.end() && (*it)->id == id ? it - all.begin() : all.size());
+        auto it = std::lower_bound(ids.begin(), ids.end(), id);
+        return uint32_t(it != ids.end() && *it == id ? it - ids.begin() : ids.size());
     };
     size_t total = 0;
     for (const TreeNode* n : all) total += n->samples.size();
