@@ -20,14 +20,18 @@ int8_t to_snorm8(float v) {
 
 CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : origin_(samples.origin) {
     const auto all = tree.nodes();
-    // The ids in one array: the searches below then read no nodes.
-    std::vector<NodeId> ids(all.size());
-    for (size_t i = 0; i < all.size(); ++i) ids[i] = all[i]->id;
-    // Index in `all` (id order) of node `id`, or all.size() if there is none.
-    auto index_of = [&](NodeId id) {
-        auto it = std::lower_bound(ids.begin(), ids.end(), id);
-        return uint32_t(it != ids.end() && *it == id ? it - ids.begin() : ids.size());
-    };
+    const uint32_t none = uint32_t(all.size());
+    // Children by index in `all` (id order). The children's ids of successive nodes increase
+    // too, so one forward walk finds them all.
+    std::vector<uint32_t> left(all.size(), none), right(all.size(), none);
+    for (size_t i = 0, j = 0; i < all.size(); ++i) {
+        if (all[i]->active) continue;
+        const NodeId l = left_child(all[i]->id);
+        while (j < all.size() && all[j]->id < l) ++j;
+        if (j < all.size() && all[j]->id == l) left[i] = uint32_t(j);
+        const size_t k = j < all.size() && all[j]->id == l ? j + 1 : j;
+        if (k < all.size() && all[k]->id == right_child(all[i]->id)) right[i] = uint32_t(k);
+    }
     size_t total = 0;
     for (const TreeNode* n : all) total += n->samples.size();
     const size_t padded = total + 8;
@@ -37,13 +41,14 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
     nodes_.reserve(all.size());
     // Explicit stack: a one-sided tree can be 62 levels deep, recursion is fine, but
     // iteration keeps the right-child fix-up in one place.
-    std::vector<std::pair<NodeId, int64_t>> stack{{root_id(), -1}}; // (node, parent slot awaiting right index)
+    std::vector<std::pair<uint32_t, int64_t>> stack; // (node index, parent slot awaiting right index)
+    const auto root = std::lower_bound(all.begin(), all.end(), root_id(), [](const TreeNode* n, NodeId v) { return n->id < v; });
+    if (root != all.end() && (*root)->id == root_id()) stack.push_back({uint32_t(root - all.begin()), -1});
     size_t sphere = 0;
     while (!stack.empty()) {
-        auto [id, patch] = stack.back();
+        auto [index, patch] = stack.back();
         stack.pop_back();
-        const uint32_t index = index_of(id);
-        if (index == all.size()) continue;
+        if (index == none) continue;
         const TreeNode* n = all[index];
         if (patch >= 0) nodes_[size_t(patch)].first = uint32_t(nodes_.size());
         CompactNode c{};
@@ -73,8 +78,8 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
             nodes_.push_back(c);
         } else {
             nodes_.push_back(c);
-            stack.push_back({right_child(id), int64_t(slot)});
-            stack.push_back({left_child(id), -1});
+            stack.push_back({right[index], int64_t(slot)});
+            stack.push_back({left[index], -1});
         }
     }
     sphere_count_ = sphere;
