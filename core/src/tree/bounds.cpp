@@ -70,9 +70,9 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
         facts.equal_radii >= 0 ? facts.equal_radii == 1 : std::all_of(r, r + n, [&](float x) { return x == r[0]; });
     if (n <= 32 && equal_radii) {
         // Equal radii: the smallest ball of the centres grown by r is the smallest enclosing ball.
-        std::vector<Eigen::Vector3d> pts(n);
+        Eigen::Vector3d pts[32];
         for (size_t i = 0; i < n; ++i) pts[i] = c[i].cast<double>();
-        add(smallest_ball(std::move(pts)).center);
+        add(smallest_ball(pts, n).center);
     }
     double radii[3];
     if (facts.farthest) facts.farthest->radii(candidates, m, equal_radii, radii);

@@ -59,14 +59,18 @@ float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples
     if (members.empty()) return 0;
     // The median spacing makes neighbouring spheres overlap; the smallest allowed radius
     // keeps every sphere of the node from poking out of the mesh.
-    std::vector<float> s(members.size());
+    // Leaves are small: their spacings fit on the stack (no allocation per leaf).
+    const size_t n = members.size();
+    float local[64];
+    std::vector<float> heap(n > 64 ? n : 0);
+    float* s = n > 64 ? heap.data() : local;
     float cap = INFINITY;
-    for (size_t i = 0; i < members.size(); ++i) {
+    for (size_t i = 0; i < n; ++i) {
         s[i] = samples.spacing[members[i]];
         if (!samples.max_radius.empty()) cap = std::min(cap, samples.max_radius[members[i]]);
     }
-    std::nth_element(s.begin(), s.begin() + long(s.size() / 2), s.end());
-    const float r = std::min(rule.scale * s[s.size() / 2], cap);
+    std::nth_element(s, s + n / 2, s + n);
+    const float r = std::min(rule.scale * s[n / 2], cap);
     return r > 0 ? r : 1e-6f;
 }
 
