@@ -16,6 +16,11 @@ SamplingTree::SamplingTree(std::string name, uint32_t sample_count) : name_(std:
 
 SamplingTree::SamplingTree(std::string name, std::vector<TreeNode> nodes) : name_(std::move(name)) {
     // Inserting in id order at the end skips the map's searches; of equal ids the last given wins.
+    const auto by_id = [](const TreeNode& a, const TreeNode& b) { return a.id < b.id; };
+    if (std::is_sorted(nodes.begin(), nodes.end(), by_id)) {
+        for (TreeNode& n : nodes) nodes_.insert_or_assign(nodes_.end(), n.id, std::move(n));
+        return;
+    }
     std::vector<std::pair<NodeId, size_t>> order(nodes.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = {nodes[i].id, i};
     std::sort(order.begin(), order.end());

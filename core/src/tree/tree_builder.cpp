@@ -105,6 +105,21 @@ struct Builder {
         build(mid, e, right_child(id), boxes ? &(*boxes)[1] : nullptr);
     }
 
+    // The built nodes in breadth-first order, children left to right: increasing ids, the
+    // order SamplingTree keeps them in.
+    std::vector<TreeNode> in_id_order() {
+        std::vector<TreeNode> sorted;
+        sorted.reserve(out.size());
+        std::vector<uint32_t> queue{0};
+        queue.reserve(out.size());
+        for (size_t k = 0; k < queue.size(); ++k) {
+            const uint32_t i = queue[k];
+            if (right_of[i] != NodeArray::kNone) queue.push_back(i + 1), queue.push_back(right_of[i]);
+            sorted.push_back(std::move(out[i]));
+        }
+        return sorted;
+    }
+
     // The built nodes with their children's indices (valid while `out` is not resized).
     NodeArray links() {
         NodeArray array;
@@ -277,7 +292,7 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
     NodeArray array = builder.links();
     assign_radii(array, samples, options.radius);
     compute_bounds(array, samples, options.bounds);
-    return SamplingTree(std::move(name), std::move(builder.out));
+    return SamplingTree(std::move(name), builder.in_id_order());
 }
 
 } // namespace
