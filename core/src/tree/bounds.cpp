@@ -33,8 +33,17 @@ void enclosing_radii(const Eigen::Vector3d* centre, size_t m, const Eigen::Vecto
 
 } // namespace
 
+double run_extent(const Eigen::Vector3d& centre, const Eigen::Vector3f* c, const float* r, size_t n, bool equal_radii) {
+    double best = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d ci = c[i].cast<double>();
+        best = std::max(best, equal_radii ? (ci - centre).squaredNorm() : (ci - centre).norm() + r[i]);
+    }
+    return best;
+}
+
 void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const Eigen::Vector3f* p, size_t n,
-               const Ball& hint, BoundsMethod method, const Eigen::AlignedBox3f* centre_box) {
+               const Ball& hint, BoundsMethod method, const RunFacts& facts) {
     if (n == 0) {
         node.center.setZero();
         node.bv_radius = 0;
@@ -53,19 +62,21 @@ void bound_run(TreeNode& node, const Eigen::Vector3f* c, const float* r, const E
     size_t m = 0;
     auto add = [&](const Eigen::Vector3d& x) { candidates[m++] = float_rounded(x); };
     Eigen::AlignedBox3f box;
-    if (centre_box) box = *centre_box;
+    if (facts.centre_box) box = *facts.centre_box;
     else for (size_t i = 0; i < n; ++i) box.extend(c[i]);
     add(box.center().cast<double>());
     if (hint.radius >= 0) add(hint.center);
-    const bool equal_radii = std::all_of(r, r + n, [&](float x) { return x == r[0]; });
+    const bool equal_radii =
+        facts.equal_radii >= 0 ? facts.equal_radii == 1 : std::all_of(r, r + n, [&](float x) { return x == r[0]; });
     if (n <= 32 && equal_radii) {
         // Equal radii: the smallest ball of the centres grown by r is the smallest enclosing ball.
-        std::vector<Eigen::Vector3d> pts(n);
+        Eigen::Vector3d pts[32];
         for (size_t i = 0; i < n; ++i) pts[i] = c[i].cast<double>();
-        add(smallest_ball(std::move(pts)).center);
+        add(smallest_ball(pts, n).center);
     }
     double radii[3];
-    enclosing_radii(candidates, m, c, r, n, equal_radii, radii);
+    if (facts.farthest) facts.farthest->radii(candidates, m, equal_radii, radii);
+    else enclosing_radii(candidates, m, c, r, n, equal_radii, radii);
     double rad = INFINITY;
     for (size_t k = 0; k < m; ++k) {
         const Eigen::Vector3d& cand = candidates[k];

@@ -8,18 +8,51 @@
 namespace spt {
 namespace {
 
-int8_t to_snorm8(float v) { return int8_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 127.0f)); }
+// std::lround's value (halves away from zero), without the library call per coordinate: in
+// double, x + 0.5 is exact for every |x| <= 127, and truncation is then the rounding.
+int8_t to_snorm8(float v) {
+    const double x = std::clamp(v, -1.0f, 1.0f) * 127.0f;
+    if (std::isnan(x)) return 0; // lround's out-of-range result, truncated to 8 bits
+    return int8_t(x >= 0 ? int(x + 0.5) : -int(0.5 - x));
+}
 
 } // namespace
 
 CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : origin_(samples.origin) {
     const auto all = tree.nodes();
-    auto index_of = [&](NodeId id) {
-        auto it = std::lower_bound(all.begin(), all.end(), id, [](const TreeNode* n, NodeId v) { return n->id < v; });
-        return uint32_t(it - all.begin());
+    const uint32_t none = uint32_t(all.size());
+    // What the depth-first walk needs of each node, copied in id order (the map's order, so the
+    // nodes are read once, in turn): the walk then reads small records, not scattered map nodes.
+    struct Source {
+        CompactNode node; // all but first and count
+        NodeId id;
+        const uint32_t* samples;
+        uint32_t count;
+        bool active;
     };
+    std::vector<Source> src(all.size());
     size_t total = 0;
-    for (const TreeNode* n : all) total += n->samples.size();
+    for (size_t i = 0; i < all.size(); ++i) {
+        const TreeNode& n = *all[i];
+        CompactNode c{};
+        c.center[0] = n.center.x(), c.center[1] = n.center.y(), c.center[2] = n.center.z();
+        c.bv_radius = n.bv_radius;
+        c.ss_radius = n.ss_radius;
+        c.tree_node = uint32_t(i);
+        src[i] = {c, n.id, n.samples.data(), uint32_t(n.samples.size()), n.active};
+        total += n.samples.size();
+    }
+    // Children by index in id order. The children's ids of successive nodes increase too, so
+    // one forward walk finds them all.
+    std::vector<uint32_t> left(all.size(), none), right(all.size(), none);
+    for (size_t i = 0, j = 0; i < src.size(); ++i) {
+        if (src[i].active) continue;
+        const NodeId l = left_child(src[i].id);
+        while (j < src.size() && src[j].id < l) ++j;
+        if (j < src.size() && src[j].id == l) left[i] = uint32_t(j);
+        const size_t k = j < src.size() && src[j].id == l ? j + 1 : j;
+        if (k < src.size() && src[k].id == right_child(src[i].id)) right[i] = uint32_t(k);
+    }
     const size_t padded = total + 8;
     centres_.assign(3 * total + 8, 0);
     nx_.assign(padded, 0), ny_.assign(padded, 0), nz_.assign(padded, 0);
@@ -27,27 +60,25 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
     nodes_.reserve(all.size());
     // Explicit stack: a one-sided tree can be 62 levels deep, recursion is fine, but
     // iteration keeps the right-child fix-up in one place.
-    std::vector<std::pair<NodeId, int64_t>> stack{{root_id(), -1}}; // (node, parent slot awaiting right index)
+    std::vector<std::pair<uint32_t, int64_t>> stack; // (node index, parent slot awaiting right index)
+    const auto root = std::lower_bound(src.begin(), src.end(), root_id(), [](const Source& n, NodeId v) { return n.id < v; });
+    if (root != src.end() && root->id == root_id()) stack.push_back({uint32_t(root - src.begin()), -1});
     size_t sphere = 0;
     while (!stack.empty()) {
-        auto [id, patch] = stack.back();
+        auto [index, patch] = stack.back();
         stack.pop_back();
-        const TreeNode* n = tree.find(id);
-        if (!n) continue;
+        if (index == none) continue;
+        const Source& n = src[index];
         if (patch >= 0) nodes_[size_t(patch)].first = uint32_t(nodes_.size());
-        CompactNode c{};
-        c.center[0] = n->center.x(), c.center[1] = n->center.y(), c.center[2] = n->center.z();
-        c.bv_radius = n->bv_radius;
-        c.ss_radius = n->ss_radius;
-        c.tree_node = index_of(id);
+        CompactNode c = n.node;
         const size_t slot = nodes_.size();
-        if (n->active) {
+        if (n.active) {
             c.first = uint32_t(sphere);
-            c.count = uint32_t(n->samples.size());
+            c.count = n.count;
             float* block = centres_.data() + 3 * sphere;
             for (uint32_t k = 0; k < c.count; ++k) {
-                const uint32_t s = n->samples[k];
-                const Eigen::Vector3f ctr = samples.sphere_centre(s, n->ss_radius);
+                const uint32_t s = n.samples[k];
+                const Eigen::Vector3f ctr = samples.sphere_centre(s, c.ss_radius);
                 block[k] = ctr.x(), block[c.count + k] = ctr.y(), block[2 * c.count + k] = ctr.z();
                 nx_[sphere] = to_snorm8(samples.normals[s].x());
                 ny_[sphere] = to_snorm8(samples.normals[s].y());
@@ -62,8 +93,8 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
             nodes_.push_back(c);
         } else {
             nodes_.push_back(c);
-            stack.push_back({right_child(id), int64_t(slot)});
-            stack.push_back({left_child(id), -1});
+            stack.push_back({right[index], int64_t(slot)});
+            stack.push_back({left[index], -1});
         }
     }
     sphere_count_ = sphere;

@@ -44,7 +44,7 @@ bool inside(const Ball& b, const Eigen::Vector3d& p) {
     return b.radius >= 0 && (p - b.center).norm() <= b.radius * (1 + 1e-12) + 1e-15;
 }
 
-Ball welzl(std::vector<Eigen::Vector3d>& p, size_t n, Eigen::Vector3d* support, int ns) {
+Ball welzl(Eigen::Vector3d* p, size_t n, Eigen::Vector3d* support, int ns) {
     Ball b = ball_from(support, ns);
     if (ns == 4) return b;
     for (size_t i = 0; i < n; ++i) {
@@ -61,10 +61,9 @@ Ball welzl(std::vector<Eigen::Vector3d>& p, size_t n, Eigen::Vector3d* support, 
 
 } // namespace
 
-Ball smallest_ball(std::vector<Eigen::Vector3d> points) {
+Ball smallest_ball(Eigen::Vector3d* points, size_t n) {
     Eigen::Vector3d support[4];
-    Ball b = welzl(points, points.size(), support, 0);
-    return b;
+    return welzl(points, n, support, 0);
 }
 
 Ball merge_balls(const Ball& a, const Ball& b) {

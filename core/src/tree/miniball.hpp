@@ -10,8 +10,9 @@ struct Ball {
     double radius = -1; // empty
 };
 
-/// Exact smallest ball containing `points`; expected linear time, deterministic order.
-Ball smallest_ball(std::vector<Eigen::Vector3d> points);
+/// Exact smallest ball containing points[0, n), which it reorders; expected linear time,
+/// deterministic order.
+Ball smallest_ball(Eigen::Vector3d* points, size_t n);
 
 /// Smallest ball containing two balls.
 Ball merge_balls(const Ball& a, const Ball& b);

@@ -15,7 +15,16 @@ SamplingTree::SamplingTree(std::string name, uint32_t sample_count) : name_(std:
 }
 
 SamplingTree::SamplingTree(std::string name, std::vector<TreeNode> nodes) : name_(std::move(name)) {
-    for (auto& n : nodes) nodes_[n.id] = std::move(n);
+    // Inserting in id order at the end skips the map's searches; of equal ids the last given wins.
+    const auto by_id = [](const TreeNode& a, const TreeNode& b) { return a.id < b.id; };
+    if (std::is_sorted(nodes.begin(), nodes.end(), by_id)) {
+        for (TreeNode& n : nodes) nodes_.insert_or_assign(nodes_.end(), n.id, std::move(n));
+        return;
+    }
+    std::vector<std::pair<NodeId, size_t>> order(nodes.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = {nodes[i].id, i};
+    std::sort(order.begin(), order.end());
+    for (const auto& [id, i] : order) nodes_.insert_or_assign(nodes_.end(), id, std::move(nodes[i]));
 }
 
 const TreeNode* SamplingTree::find(NodeId id) const {
@@ -55,14 +64,18 @@ float node_radius(const std::vector<uint32_t>& members, const SampleSet& samples
     if (members.empty()) return 0;
     // The median spacing makes neighbouring spheres overlap; the smallest allowed radius
     // keeps every sphere of the node from poking out of the mesh.
-    std::vector<float> s(members.size());
+    // Leaves are small: their spacings fit on the stack (no allocation per leaf).
+    const size_t n = members.size();
+    float local[64];
+    std::vector<float> heap(n > 64 ? n : 0);
+    float* s = n > 64 ? heap.data() : local;
     float cap = INFINITY;
-    for (size_t i = 0; i < members.size(); ++i) {
+    for (size_t i = 0; i < n; ++i) {
         s[i] = samples.spacing[members[i]];
         if (!samples.max_radius.empty()) cap = std::min(cap, samples.max_radius[members[i]]);
     }
-    std::nth_element(s.begin(), s.begin() + long(s.size() / 2), s.end());
-    const float r = std::min(rule.scale * s[s.size() / 2], cap);
+    std::nth_element(s, s + n / 2, s + n);
+    const float r = std::min(rule.scale * s[n / 2], cap);
     return r > 0 ? r : 1e-6f;
 }
 
@@ -93,48 +106,151 @@ void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule
 
 namespace {
 
-// Appends an active node's sampling spheres (centres, radii) and their surface points.
+// Appends an active node's sampling spheres (centres, radii) and, if `p` is given, their surface points.
 void append_spheres(const TreeNode& n, const SampleSet& samples, std::vector<Eigen::Vector3f>& c,
-                    std::vector<float>& r, std::vector<Eigen::Vector3f>& p) {
+                    std::vector<float>& r, std::vector<Eigen::Vector3f>* p) {
     for (uint32_t s : n.samples) {
-        p.push_back(samples.points[s]);
+        if (p) p->push_back(samples.points[s]);
         c.push_back(samples.sphere_centre(s, n.ss_radius));
         r.push_back(n.ss_radius);
     }
 }
 
-} // namespace
+float radius_at(const NodeArray& tree, uint32_t i) { return i == NodeArray::kNone ? 0.0f : tree.node[i]->ss_radius; }
 
-void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
-    // Lay the samples out leaf by leaf so that every node covers one contiguous run.
-    std::vector<Eigen::Vector3f> c, p;
+// Bounds every node of a NodeArray, children before parents. The samples are laid out leaf by
+// leaf so that every node covers one contiguous run.
+struct BoundsPass {
+    NodeArray& tree;
+    const SampleSet& samples;
+    BoundsMethod method;
+    std::vector<Eigen::Vector3f> c, p; // p only for the paper's bounds, the one method that reads it
     std::vector<float> r;
-    c.reserve(samples.size()), p.reserve(samples.size()), r.reserve(samples.size());
+    std::vector<uint32_t> begin, end; // per node: its run of spheres
+    std::vector<uint8_t> equal;       // per node: every radius of its run is the first
+
     struct Result {
         detail::Ball ball;
         Eigen::AlignedBox3f box; // of the sphere centres below
     };
-    std::function<Result(TreeNode&)> visit = [&](TreeNode& n) -> Result {
-        const size_t begin = c.size();
+
+    Result visit(uint32_t i) {
+        TreeNode& n = *tree.node[i];
+        const size_t first = c.size();
         Result out;
         detail::Ball hint;
+        detail::RunFacts facts;
         if (n.active) {
-            append_spheres(n, samples, c, r, p);
-            for (size_t k = begin; k < c.size(); ++k) out.box.extend(c[k]);
+            append_spheres(n, samples, c, r, method == BoundsMethod::Paper ? &p : nullptr);
+            for (size_t k = first; k < c.size(); ++k) out.box.extend(c[k]);
+            equal[i] = !std::isnan(n.ss_radius);
         } else {
-            for (NodeId child : {left_child(n.id), right_child(n.id)})
-                if (TreeNode* ch = find_mutable(child)) {
-                    const Result sub = visit(*ch);
+            equal[i] = 1;
+            for (uint32_t child : {tree.left[i], tree.right[i]})
+                if (child != NodeArray::kNone) {
+                    const Result sub = visit(child);
                     hint = detail::merge_balls(hint, sub.ball);
                     out.box.extend(sub.box);
+                    if (begin[child] < end[child]) equal[i] &= equal[child] && r[begin[child]] == r[first];
                 }
         }
-        detail::bound_run(n, c.data() + begin, r.data() + begin, p.data() + begin, c.size() - begin, hint, method,
-                          &out.box);
+        begin[i] = uint32_t(first), end[i] = uint32_t(c.size());
+        facts.centre_box = &out.box;
+        facts.equal_radii = equal[i];
+        const SubtreeSearch search(*this, i);
+        if (!n.active) facts.farthest = &search;
+        const Eigen::Vector3f* points = p.empty() ? nullptr : p.data() + first;
+        detail::bound_run(n, c.data() + first, r.data() + first, points, c.size() - first, hint, method, facts);
         out.ball = {n.center.cast<double>(), double(n.bv_radius)};
         return out;
+    }
+
+    // Measures an inner node's radii from its subtree: a node whose bounding sphere cannot reach
+    // past the farthest sphere found so far is not read. The result is the full pass's, as the
+    // spheres skipped are provably nearer (by a margin far above the rounding of the tests).
+    class SubtreeSearch : public detail::FarthestSearch {
+    public:
+        SubtreeSearch(const BoundsPass& pass, uint32_t node) : pass_(pass), node_(node) {}
+        void radii(const Eigen::Vector3d* centre, size_t m, bool equal_radii, double* out) const override {
+            const float r0 = pass_.r[pass_.begin[node_]];
+            for (size_t k = 0; k < m; ++k) {
+                double best = 0; // equal radii: largest squared distance; otherwise largest distance + radius
+                descend(node_, centre[k], equal_radii, r0, best);
+                out[k] = equal_radii ? std::sqrt(best) + r0 : best;
+            }
+        }
+
+    private:
+        void descend(uint32_t j, const Eigen::Vector3d& centre, bool equal_radii, float r0, double& best) const {
+            const uint32_t b = pass_.begin[j], e = pass_.end[j];
+            const NodeArray& t = pass_.tree;
+            if (t.node[j]->active || e - b <= kScan) {
+                best = std::max(best, detail::run_extent(centre, pass_.c.data() + b, pass_.r.data() + b, e - b, equal_radii));
+                return;
+            }
+            uint32_t child[2] = {t.left[j], t.right[j]};
+            double reach[2];
+            for (int s = 0; s < 2; ++s) reach[s] = child[s] == NodeArray::kNone ? -1 : reach_of(*t.node[child[s]], centre);
+            if (reach[1] > reach[0]) std::swap(child[0], child[1]), std::swap(reach[0], reach[1]);
+            for (int s = 0; s < 2; ++s) {
+                if (child[s] == NodeArray::kNone) continue;
+                // Everything below lies within reach (minus its radius): skip unless it can matter.
+                const double bound = equal_radii ? square(std::max(0.0, reach[s] - r0)) : reach[s];
+                if (bound < best) continue;
+                descend(child[s], centre, equal_radii, r0, best);
+            }
+        }
+        // An upper bound on |centre - c_i| + r_i over the node's spheres, with a relative margin.
+        static double reach_of(const TreeNode& n, const Eigen::Vector3d& centre) {
+            const double d = (n.center.cast<double>() - centre).norm();
+            return (d + n.bv_radius) * (1 + 1e-9);
+        }
+        static double square(double x) { return x * x; }
+        static constexpr uint32_t kScan = 16; // runs this short are read whole
+        const BoundsPass& pass_;
+        uint32_t node_;
     };
-    if (TreeNode* root = find_mutable(root_id())) visit(*root);
+};
+
+// Appends node `id` and, depth first, the nodes below it; returns its index (kNone if missing).
+uint32_t add_subtree(SamplingTree& tree, NodeId id, NodeArray& out) {
+    TreeNode* n = tree.find_mutable(id);
+    if (!n) return NodeArray::kNone;
+    const uint32_t i = out.add(n);
+    if (!n->active) {
+        const uint32_t l = add_subtree(tree, left_child(id), out);
+        out.left[i] = l;
+        const uint32_t r = add_subtree(tree, right_child(id), out);
+        out.right[i] = r;
+    }
+    return i;
+}
+
+} // namespace
+
+void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& rule) {
+    // Children follow their parent: walking backwards finishes children first.
+    for (size_t i = tree.node.size(); i-- > 0;) {
+        TreeNode& n = *tree.node[i];
+        n.ss_radius = n.active ? node_radius(n.samples, samples, rule)
+                               : std::max(radius_at(tree, tree.left[i]), radius_at(tree, tree.right[i]));
+    }
+}
+
+void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method) {
+    if (tree.node.empty()) return;
+    BoundsPass pass{tree, samples, method, {}, {}, {}, std::vector<uint32_t>(tree.node.size()),
+                    std::vector<uint32_t>(tree.node.size()), std::vector<uint8_t>(tree.node.size())};
+    pass.c.reserve(samples.size()), pass.r.reserve(samples.size());
+    if (method == BoundsMethod::Paper) pass.p.reserve(samples.size());
+    pass.visit(0);
+}
+
+void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
+    NodeArray array;
+    array.node.reserve(nodes_.size()), array.left.reserve(nodes_.size()), array.right.reserve(nodes_.size());
+    add_subtree(*this, root_id(), array);
+    spt::compute_bounds(array, samples, method);
 }
 
 void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMethod method) {
@@ -151,7 +267,7 @@ void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMet
         std::vector<float> rad;
         std::function<void(const TreeNode&)> collect = [&](const TreeNode& t) {
             if (t.active) {
-                append_spheres(t, samples, c, rad, p);
+                append_spheres(t, samples, c, rad, &p);
                 return;
             }
             if (const TreeNode* l = find(left_child(t.id))) collect(*l);

@@ -1,6 +1,7 @@
 // Automatic sampling-tree construction: median or binned volume splits down to a leaf size.
 #include "spt/tree_builder.hpp"
 #include "sampling/radius_class.hpp"
+#include "tree/bounds.hpp"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -37,8 +38,14 @@ struct Bounds3 {
     void extend(const float* p) {
         for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
     }
+    // Also merges the ignored fourth lanes, which no reader looks at.
     void extend(const Bounds3& b) {
+#if defined(__SSE2__)
+        _mm_store_ps(lo, _mm_min_ps(_mm_load_ps(lo), _mm_load_ps(b.lo)));
+        _mm_store_ps(hi, _mm_max_ps(_mm_load_ps(hi), _mm_load_ps(b.hi)));
+#else
         for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], b.lo[a]), hi[a] = std::max(hi[a], b.hi[a]);
+#endif
     }
     bool empty() const { return lo[0] > hi[0]; }
     // Half the diagonal: the radius of a sphere around the box.
@@ -49,11 +56,82 @@ struct Bounds3 {
     }
 };
 
+// The unclamped bin of a point on each axis, int((p - lo) * scale) per lane: the same float
+// operations as one axis at a time, three axes in one vector step.
+struct AxisBins {
+    alignas(16) float lo[4];
+    alignas(16) float scale[4];
+    AxisBins(const float* box_lo, const float* axis_scale)
+        : lo{box_lo[0], box_lo[1], box_lo[2], 0}, scale{axis_scale[0], axis_scale[1], axis_scale[2], 0} {}
+    // p: as for Bounds3::extend4; its fourth word is ignored.
+    void operator()(const float* p, int* k) const {
+#if defined(__SSE2__)
+        // The fourth word (a sample index, often a denormal float) is zeroed: no slow arithmetic.
+        const __m128 keep = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+        const __m128 v = _mm_and_ps(_mm_loadu_ps(p), keep);
+        const __m128 t = _mm_mul_ps(_mm_sub_ps(v, _mm_load_ps(lo)), _mm_load_ps(scale));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(k), _mm_cvttps_epi32(t));
+#else
+        for (int a = 0; a < 3; ++a) k[a] = int((p[a] - lo[a]) * scale[a]);
+#endif
+    }
+};
+
 struct Builder {
     const BuildOptions& options;
     std::vector<Item> items;
-    std::vector<TreeNode> out;
+    std::vector<TreeNode> out; // depth first: an inner node's left child follows it
+    std::vector<uint32_t> right_of; // per node of `out`: its right child's index, or NodeArray::kNone
     int max_depth = kMaxNodeDepth; // deepest id the built nodes may have
+    // Set by split_volume when it knows the exact boxes of the two parts it made (left, right).
+    std::array<Bounds3, 2> parts;
+    bool parts_known = false;
+
+    // Appends a node to `out`; returns its index.
+    size_t emit(TreeNode&& node) {
+        out.push_back(std::move(node));
+        right_of.push_back(NodeArray::kNone);
+        return out.size() - 1;
+    }
+
+    // Emits an inner node and builds its children over [b, mid) and [mid, e); `boxes`, if
+    // given, are the children's boxes.
+    void build_children(TreeNode&& node, size_t b, size_t mid, size_t e, const std::array<Bounds3, 2>* boxes = nullptr) {
+        const NodeId id = node.id;
+        node.active = false;
+        const size_t at = emit(std::move(node));
+        build(b, mid, left_child(id), boxes ? &(*boxes)[0] : nullptr);
+        right_of[at] = uint32_t(out.size());
+        build(mid, e, right_child(id), boxes ? &(*boxes)[1] : nullptr);
+    }
+
+    // The built nodes in breadth-first order, children left to right: increasing ids, the
+    // order SamplingTree keeps them in.
+    std::vector<TreeNode> in_id_order() {
+        std::vector<TreeNode> sorted;
+        sorted.reserve(out.size());
+        std::vector<uint32_t> queue{0};
+        queue.reserve(out.size());
+        for (size_t k = 0; k < queue.size(); ++k) {
+            const uint32_t i = queue[k];
+            if (right_of[i] != NodeArray::kNone) queue.push_back(i + 1), queue.push_back(right_of[i]);
+            sorted.push_back(std::move(out[i]));
+        }
+        return sorted;
+    }
+
+    // The built nodes with their children's indices (valid while `out` is not resized).
+    NodeArray links() {
+        NodeArray array;
+        array.node.reserve(out.size()), array.left.reserve(out.size()), array.right.reserve(out.size());
+        for (size_t i = 0; i < out.size(); ++i) {
+            array.node.push_back(&out[i]);
+            const bool inner = right_of[i] != NodeArray::kNone;
+            array.left.push_back(inner ? uint32_t(i + 1) : NodeArray::kNone);
+            array.right.push_back(right_of[i]);
+        }
+        return array;
+    }
 
     Bounds3 box_of(size_t b, size_t e) const {
         Bounds3 box;
@@ -86,6 +164,7 @@ struct Builder {
         auto bin_of = [&](const Item& it, int a) {
             return std::min(kBins - 1, int((it.p[a] - box.lo[a]) * scale[a]));
         };
+        const AxisBins axis_bins(box.lo, scale);
         // Large nodes choose their plane from an even subsample: the cost estimate barely
         // changes, and the top levels stop dominating the build time. The partition is exact.
         // Neighbouring items mostly fall in the same bin: alternate items go to two sets of
@@ -95,10 +174,12 @@ struct Builder {
         std::array<std::array<uint32_t, kBins>, 3> odd_counts{};
         auto add = [&](const Item& it, std::array<std::array<Bounds3, kBins>, 3>& to,
                        std::array<std::array<uint32_t, kBins>, 3>& n) {
+            int k[4];
+            axis_bins(it.p, k);
             for (int a = 0; a < 3; ++a) {
-                const int k = bin_of(it, a);
-                to[a][k].extend4(it.p);
-                ++n[a][k];
+                const int ka = std::min(kBins - 1, k[a]);
+                to[a][ka].extend4(it.p);
+                ++n[a][ka];
             }
         };
         size_t i = b;
@@ -142,10 +223,17 @@ struct Builder {
         if (best_axis < 0) return split_median(b, e, box);
         auto mid = std::partition(items.begin() + long(b), items.begin() + long(e),
                                   [&](const Item& it) { return bin_of(it, best_axis) < best_plane; });
+        if (stride == 1) {
+            // Every item was binned: the parts' boxes are the unions of their bins.
+            parts = {};
+            for (int k = 0; k < kBins; ++k) parts[k < best_plane ? 0 : 1].extend(bins[best_axis][k]);
+            parts_known = true;
+        }
         return size_t(mid - items.begin());
     }
 
-    void build(size_t b, size_t e, NodeId id) {
+    // Builds the node `id` over [b, e); `known`, if given, is the box of the items.
+    void build(size_t b, size_t e, NodeId id, const Bounds3* known = nullptr) {
         TreeNode node;
         node.id = id;
         // Active nodes must be radius-coherent. Grouping by radius class a few levels above
@@ -158,10 +246,7 @@ struct Builder {
                 const int cut = lo + (hi - lo + 1) / 2;
                 const auto mid = std::partition(items.begin() + long(b), items.begin() + long(e),
                                                 [cut](const Item& it) { return it.radius_class >= cut; });
-                node.active = false;
-                out.push_back(std::move(node));
-                build(b, size_t(mid - items.begin()), left_child(id));
-                build(size_t(mid - items.begin()), e, right_child(id));
+                build_children(std::move(node), b, size_t(mid - items.begin()), e);
                 return;
             }
         }
@@ -169,20 +254,20 @@ struct Builder {
             node.samples.reserve(e - b);
             for (size_t i = b; i < e; ++i) node.samples.push_back(items[i].sample);
             std::sort(node.samples.begin(), node.samples.end());
-            out.push_back(std::move(node));
+            emit(std::move(node));
             return;
         }
-        const Bounds3 box = box_of(b, e);
+        const Bounds3 box = known ? *known : box_of(b, e);
         // Near the leaves a few samples remain and the binned sweep costs more than it can
         // save; the median of the longest axis is as good there.
         const bool small = e - b <= 4 * size_t(options.leaf_size);
+        parts_known = false;
         size_t mid = options.strategy == SplitStrategy::Median || small ? split_median(b, e, box)
                                                                         : split_volume(b, e, box);
-        if (mid <= b || mid >= e) mid = split_median(b, e, box);
-        node.active = false;
-        out.push_back(std::move(node));
-        build(b, mid, left_child(id));
-        build(mid, e, right_child(id));
+        if (mid <= b || mid >= e) mid = split_median(b, e, box), parts_known = false;
+        // Copied: the children's splits overwrite `parts`.
+        const std::array<Bounds3, 2> boxes = parts;
+        build_children(std::move(node), b, mid, e, parts_known ? &boxes : nullptr);
     }
 };
 
@@ -192,7 +277,7 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
                         const BuildOptions& options, int max_depth) {
     BuildOptions fixed = options;
     fixed.leaf_size = std::max<uint32_t>(1, options.leaf_size);
-    Builder builder{fixed, std::vector<Item>(members.size()), {}, max_depth};
+    Builder builder{fixed, std::vector<Item>(members.size()), {}, {}, max_depth, {}, false};
     for (size_t k = 0; k < members.size(); ++k) {
         const uint32_t i = members[k];
         const auto& p = samples.points[i];
@@ -200,12 +285,14 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
                                                                                             : samples.max_radius[i]);
         builder.items[k] = {{p.x(), p.y(), p.z()}, i, samples.is_two_sided(i) ? two_sided_radius_class(own) : radius_class(own)};
     }
-    builder.out.reserve(2 * members.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1);
+    const size_t expected = 2 * members.size() / std::max<uint32_t>(1, fixed.leaf_size / 2) + 1;
+    builder.out.reserve(expected), builder.right_of.reserve(expected);
     builder.build(0, members.size(), root_id());
-    SamplingTree tree(std::move(name), std::move(builder.out));
-    tree.assign_radii(samples, options.radius);
-    tree.compute_bounds(samples, options.bounds);
-    return tree;
+    // Radii and bounds on the builder's array, where children are indices rather than look-ups.
+    NodeArray array = builder.links();
+    assign_radii(array, samples, options.radius);
+    compute_bounds(array, samples, options.bounds);
+    return SamplingTree(std::move(name), builder.in_id_order());
 }
 
 } // namespace
