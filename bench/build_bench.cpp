@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -29,6 +30,18 @@ template <class F> double best_seconds(int reps, F&& f) {
 int main(int argc, char** argv) {
     std::vector<int> sides = {100, 316, 1000}; // nu = nv: 10k, ~100k, 1M vertices
     if (argc > 1 && std::strcmp(argv[1], "--quick") == 0) sides = {100, 316};
+    if (argc > 2 && std::strcmp(argv[1], "--sample-only") == 0) {
+        // One run of the sample stage on a torus of SIDE x SIDE vertices: a target for
+        // callgrind (--toggle-collect='spt::sample_vertices*' and the limiter's constructor).
+        const int side = std::max(3, std::atoi(argv[2]));
+        const spt::ImportedMesh m = spt::meshgen::prepare(spt::meshgen::torus(1.0, 0.35, side, side), "torus");
+        const double t = best_seconds(1, [&] {
+            const spt::RadiusLimiter limiter(m.mesh, spt::kDefaultProtrusion * m.mesh.diagonal());
+            spt::sample_vertices(m.mesh, limiter);
+        });
+        std::printf("sample, %zu vertices: %.3f s\n", m.mesh.positions.size(), t);
+        return 0;
+    }
     std::printf("| vertices | samples | strategy | sample (s) | build tree (s) | query layout (s) | "
                 "layout B/sample | .spt B/sample | depth |\n");
     std::printf("|---:|---:|---|---:|---:|---:|---:|---:|---:|\n");
