@@ -99,6 +99,8 @@ uint32_t split_point(const std::vector<uint64_t>& key, uint32_t b, uint32_t e) {
     return lo;
 }
 
+bool has_vertex(const Triangle& t, uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
+
 } // namespace
 
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh) : mesh_(mesh) {
@@ -265,7 +267,9 @@ bool TriangleBvh::touches(const BallSegmentProbe& p) const {
             const bool in_ball = ball >> k & 1, on_segment = seg >> k & 1;
             for (uint32_t i = n.child[k]; i < n.child[k] + n.count[k]; ++i) {
                 if (in_ball && triangle_within(order_[i], p.centre, p.d2)) return true;
-                if (on_segment && triangle_crossed(order_[i], p.start, p.dir, p.skip, p.end)) return true;
+                if (on_segment && !has_vertex(mesh_.triangles[order_[i]], p.start_vertex) &&
+                    triangle_crossed(order_[i], p.start, p.dir, p.skip, p.end))
+                    return true;
             }
         }
     }

@@ -17,6 +17,9 @@ struct BallSegmentProbe {
     double d2;
     Eigen::Vector3d start, dir;
     double skip, end;
+    /// The mesh vertex the segment starts at, if any: the segment meets its faces' planes
+    /// only at the start, which `skip` excludes, so they are not tested (~0u: none).
+    uint32_t start_vertex = ~0u;
 };
 
 /// Box tree over a mesh's triangles, four children a node, boxes as floats relative to the

@@ -21,7 +21,7 @@ RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion, double
 
 RadiusLimiter::~RadiusLimiter() = default;
 
-bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r) const {
+bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex) const {
     if (r <= protrusion_) return false;
     const Eigen::Vector3d c = p - r * n;
     // The tangent point p is at distance r; a surface nearer than r - allowance means the
@@ -35,11 +35,12 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     // 1e-4 mesh 1e6 away is rounded to 1e-10, a sizeable fraction of its small spheres).
     const double rounding = 64 * std::numeric_limits<double>::epsilon() * p.cwiseAbs().maxCoeff();
     const detail::BallSegmentProbe probe{c, (r - protrusion_) * (r - protrusion_), p, c - p,
-                                         std::max(1e-6, rounding / r), std::min(1.0, 2 * protrusion_ / r)};
+                                         std::max(1e-6, rounding / r), std::min(1.0, 2 * protrusion_ / r), vertex};
     return bvh_->touches(probe);
 }
 
-float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, bool two_sided) const {
+float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, bool two_sided,
+                           uint32_t vertex) const {
     // Where inside and outside are not defined, no solid may be invented: a sphere of an open
     // part is centred on its surface and stays within the allowance of it, on both sides.
     if (two_sided) {
@@ -55,11 +56,11 @@ float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, 
     const Eigen::Vector3d n = nf.cast<double>();
     // Protrusion grows with r (a centre that passes through a thin part counts as outside),
     // so the largest allowed radius is found by bisection.
-    if (!protrudes(p, n, r_max)) return r_max;
+    if (!protrudes(p, n, r_max, vertex)) return r_max;
     double lo = std::min<double>(protrusion_, r_max), hi = r_max;
     for (int i = 0; i < 20 && hi > lo * 1.01; ++i) {
         const double mid = (lo + hi) / 2;
-        (protrudes(p, n, mid) ? hi : lo) = mid;
+        (protrudes(p, n, mid, vertex) ? hi : lo) = mid;
     }
     return float(lo);
 }

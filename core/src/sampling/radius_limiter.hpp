@@ -30,7 +30,9 @@ public:
     /// p in the mesh's object frame. `two_sided`: the sample is on an open part and its sphere
     /// is centred at p, so every point of it is within r of the surface: the largest of
     /// two_sided_radius() x 2^(-k/2), k >= 0, that is at most r_max (a short ladder of radii).
-    float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, bool two_sided) const;
+    /// `vertex`: the mesh vertex p is (~0u if none), whose faces the segment test can skip.
+    float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, bool two_sided,
+                uint32_t vertex = ~0u) const;
     /// True if `vertex` belongs to an open part (one of its faces does; TriangleMesh::on_open_part,
     /// unknown counts as open).
     bool on_open_part(uint32_t vertex) const { return vertex >= open_part_.size() || open_part_[vertex]; }
@@ -46,7 +48,7 @@ public:
     const TriangleMesh& mesh() const { return mesh_; }
 
 private:
-    bool protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r) const;
+    bool protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex) const;
     const TriangleMesh& mesh_;
     std::unique_ptr<detail::TriangleBvh> bvh_;
     double protrusion_;

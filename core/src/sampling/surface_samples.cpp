@@ -54,7 +54,7 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
         const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
         const bool two_sided = limiter.on_open_part(v);
         s.add((p - s.origin).cast<float>(), nrm, v | (two_sided ? kTwoSidedBit : 0), spacing,
-              limiter.limit(p, nrm, search_radius(rule, spacing, two_sided), two_sided));
+              limiter.limit(p, nrm, search_radius(rule, spacing, two_sided), two_sided, v));
     }
     return s;
 }
