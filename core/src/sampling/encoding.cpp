@@ -7,7 +7,13 @@
 namespace spt {
 namespace {
 
-float to_snorm16(float v) { return std::round(std::clamp(v, -1.0f, 1.0f) * 32767.0f); }
+// std::round's value (halves away from zero) without a library call per coordinate: in
+// double, x + 0.5 is exact for every |x| <= 32767, and truncation is then the rounding.
+int16_t to_snorm16(float v) {
+    const double x = std::clamp(v, -1.0f, 1.0f) * 32767.0f;
+    if (std::isnan(x)) return 0; // (an infinite input normal); rounding NaN to an integer is undefined
+    return int16_t(x >= 0 ? int(x + 0.5) : -int(0.5 - x));
+}
 
 } // namespace
 
@@ -23,8 +29,8 @@ uint32_t encode_normal(const Eigen::Vector3f& n_in) {
         u = (1.0f - std::abs(ov)) * (ou >= 0 ? 1.0f : -1.0f);
         v = (1.0f - std::abs(ou)) * (ov >= 0 ? 1.0f : -1.0f);
     }
-    const auto qu = uint16_t(int16_t(to_snorm16(u)));
-    const auto qv = uint16_t(int16_t(to_snorm16(v)));
+    const auto qu = uint16_t(to_snorm16(u));
+    const auto qv = uint16_t(to_snorm16(v));
     return uint32_t(qu) | (uint32_t(qv) << 16);
 }
 
