@@ -18,6 +18,14 @@ inline float to_float(double v) {
     return f;
 }
 
+/// x rounded to the nearest integer, halves away from zero (std::round's and std::lround's
+/// value) for |x| < 2^30, without a library call: in double, x + 0.5 is exact for every
+/// float-valued x of that size, and truncation is then the rounding. NaN gives 0.
+inline int round_half_away(double x) {
+    if (std::isnan(x)) return 0;
+    return x >= 0 ? int(x + 0.5) : -int(0.5 - x);
+}
+
 /// x rounded to float per coordinate (see to_float), read back as double.
 inline Eigen::Vector3d float_rounded(const Eigen::Vector3d& x) {
     return {double(to_float(x.x())), double(to_float(x.y())), double(to_float(x.z()))};

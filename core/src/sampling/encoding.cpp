@@ -1,5 +1,6 @@
 // Compact stored forms of sample data: octahedral normals and bfloat16 lengths.
 #include "sampling/encoding.hpp"
+#include "base/float_round.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -7,13 +8,9 @@
 namespace spt {
 namespace {
 
-// std::round's value (halves away from zero) without a library call per coordinate: in
-// double, x + 0.5 is exact for every |x| <= 32767, and truncation is then the rounding.
-int16_t to_snorm16(float v) {
-    const double x = std::clamp(v, -1.0f, 1.0f) * 32767.0f;
-    if (std::isnan(x)) return 0; // (an infinite input normal); rounding NaN to an integer is undefined
-    return int16_t(x >= 0 ? int(x + 0.5) : -int(0.5 - x));
-}
+// std::round's value, without a library call per coordinate (NaN, from an infinite input
+// normal: 0, where rounding it to an integer would be undefined).
+int16_t to_snorm16(float v) { return int16_t(detail::round_half_away(std::clamp(v, -1.0f, 1.0f) * 32767.0f)); }
 
 } // namespace
 

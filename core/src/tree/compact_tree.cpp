@@ -1,5 +1,6 @@
 // Lays a SamplingTree out depth-first with per-leaf sphere blocks for queries.
 #include "spt/compact_tree.hpp"
+#include "base/float_round.hpp"
 #include "geometry/sample_disc.hpp"
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -8,13 +9,9 @@
 namespace spt {
 namespace {
 
-// std::lround's value (halves away from zero), without the library call per coordinate: in
-// double, x + 0.5 is exact for every |x| <= 127, and truncation is then the rounding.
-int8_t to_snorm8(float v) {
-    const double x = std::clamp(v, -1.0f, 1.0f) * 127.0f;
-    if (std::isnan(x)) return 0; // lround's out-of-range result, truncated to 8 bits
-    return int8_t(x >= 0 ? int(x + 0.5) : -int(0.5 - x));
-}
+// std::lround's value, without a library call per coordinate (NaN: 0, lround's out-of-range
+// result truncated to 8 bits).
+int8_t to_snorm8(float v) { return int8_t(detail::round_half_away(std::clamp(v, -1.0f, 1.0f) * 127.0f)); }
 
 } // namespace
 
