@@ -90,20 +90,6 @@ void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const S
     detail::bound_run(node, c.data(), r.data(), p.data(), members.size(), hint, method);
 }
 
-void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule) {
-    // Children have larger ids than parents: walking ids downwards finishes children first.
-    for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
-        TreeNode& n = it->second;
-        if (n.active) {
-            n.ss_radius = node_radius(n.samples, samples, rule);
-        } else {
-            const TreeNode* l = find(left_child(n.id));
-            const TreeNode* r = find(right_child(n.id));
-            n.ss_radius = std::max(l ? l->ss_radius : 0.0f, r ? r->ss_radius : 0.0f);
-        }
-    }
-}
-
 namespace {
 
 // Appends an active node's sampling spheres (centres, radii) and, if `p` is given, their surface points.
@@ -244,6 +230,12 @@ void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod meth
     pass.c.reserve(samples.size()), pass.r.reserve(samples.size());
     if (method == BoundsMethod::Paper) pass.p.reserve(samples.size());
     pass.visit(0);
+}
+
+void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule) {
+    NodeArray array;
+    add_subtree(*this, root_id(), array);
+    spt::assign_radii(array, samples, rule);
 }
 
 void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
