@@ -62,15 +62,16 @@ float float_above(float f) {
     return f;
 }
 
-// The float at or below v (at or above for up), clamped to the float range without overflow:
-// a float box rounded outwards contains the double one.
-float round_down(double v) {
+// The float at or below v (at or above for the next one), clamped to the float range without
+// overflow: a float box rounded outwards contains the double one. (Exact, unlike
+// detail::round_up of base/float_round.hpp, which grows a positive radius by 1e-6 relative.)
+float float_at_or_below(double v) {
     if (!(v > -double(FLT_MAX))) return -INFINITY; // NaN too: a box that contains everything
     if (v > double(FLT_MAX)) return FLT_MAX;
     const float f = float(v);
     return double(f) > v ? -float_above(-f) : f;
 }
-float round_up(double v) {
+float float_at_or_above(double v) {
     if (!(v < double(FLT_MAX))) return INFINITY;
     if (v < -double(FLT_MAX)) return -FLT_MAX;
     const float f = float(v);
@@ -189,7 +190,10 @@ uint32_t TriangleBvh::build(uint32_t b, uint32_t e, const std::vector<uint64_t>&
         } else {
             node.child[k] = build(first, last, key, child);
         }
-        for (int a = 0; a < 3; ++a) node.lo[a][k] = round_down(child.min()[a]), node.hi[a][k] = round_up(child.max()[a]);
+        for (int a = 0; a < 3; ++a) {
+            node.lo[a][k] = float_at_or_below(child.min()[a]);
+            node.hi[a][k] = float_at_or_above(child.max()[a]);
+        }
         box.extend(child);
     }
     nodes_[self] = node;
