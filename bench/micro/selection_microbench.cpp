@@ -1,5 +1,7 @@
-// Google Benchmark micro-benchmark: the software depth map of visible-only selection, on the
-// editor bench's mesh and view size (a 1,000,000-vertex torus, a 463 x 379 orthographic view).
+// Google Benchmark micro-benchmark: rectangle selection in core (through, visible only, and the
+// software depth map of visible only) on the editor bench's mesh and view size (a
+// 1,000,000-vertex torus with a sample a vertex, root current; a 463 x 379 orthographic view).
+#include "spt/recipe.hpp"
 #include "spt/selection.hpp"
 #include "mesh/shapes.hpp"
 #include <benchmark/benchmark.h>
@@ -35,6 +37,37 @@ void depth_map(benchmark::State& state, bool window) {
     state.counters["pixels"] = double(pixels);
 }
 
+// A sample a vertex, one unsplit tree: the editor bench's document.
+struct VertexSamples {
+    SampleSet samples;
+    SamplingTree tree{"default", 0};
+};
+const VertexSamples& vertex_samples() {
+    static const VertexSamples v = [] {
+        VertexSamples out;
+        const TriangleMesh& m = torus();
+        for (size_t i = 0; i < m.positions.size(); ++i)
+            out.samples.add(m.positions[i].cast<float>(), m.normals[i].cast<float>(), uint32_t(i), 0.003f);
+        out.tree = unsplit_tree("default", out.samples);
+        return out;
+    }();
+    return v;
+}
+
+void selection(benchmark::State& state, bool visible) {
+    const VertexSamples& v = vertex_samples();
+    const RecipeStroke stroke{front_view(), PixelRect{115, 95, 347, 284}, SelectionMode::Replace, visible};
+    size_t hits = 0;
+    for (auto _ : state) {
+        const std::vector<uint32_t> s = apply_stroke(v.samples, v.tree, root_id(), {}, stroke, &torus());
+        benchmark::DoNotOptimize(s.data());
+        hits = s.size();
+    }
+    state.counters["hits"] = double(hits);
+}
+
+BENCHMARK_CAPTURE(selection, through_a_quarter, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(selection, visible_only_a_quarter, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(depth_map, window_of_a_quarter, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(depth_map, whole_view, false)->Unit(benchmark::kMillisecond);
 

@@ -52,6 +52,67 @@ TEST(Selection, ThroughSelectsExactlyThePointsInsideTheRectangle) {
     }
 }
 
+TEST(Selection, FarFromTheOriginSelectsWhatTheSameGridSelectsAtTheOrigin) {
+    // The same grid 10^6 away (a local origin there, as imported meshes far out have) seen by
+    // the same view moved with it: the same window points, so the same samples, rect by rect.
+    // Rounding object coordinates to float before the view's translation (1/16 of a unit at
+    // 10^6, six pixels here) would move them.
+    const SampleSet near = grid_samples(41);
+    SampleSet far = near;
+    far.origin = {1e6, -2e6, 5e5};
+    SamplingTree t("t", uint32_t(near.size()));
+    ViewProjection moved = front_view();
+    moved.view(0, 3) = -1e6f, moved.view(1, 3) = 2e6f, moved.view(2, 3) = -5e5f - 10.0f; // exact in float
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0, 200);
+    size_t selected = 0;
+    for (int k = 0; k < 50; ++k) {
+        const PixelRect r{u(rng), u(rng), u(rng), u(rng)};
+        const std::vector<uint32_t> expected = samples_in_rect(near, t, 1, front_view(), r);
+        EXPECT_EQ(samples_in_rect(far, t, 1, moved, r), expected) << k;
+        selected += expected.size();
+    }
+    EXPECT_GT(selected, 1000u);
+}
+
+TEST(Selection, VisibleOnlyComparesWithTheFarthestOfTheNinePixelsAroundASample) {
+    // A hand-made depth map with holes (+infinity) and samples over it and past its edges,
+    // against the rule read pixel by pixel.
+    ViewProjection v = front_view();
+    v.width = 30, v.height = 20;
+    DepthMap depth;
+    depth.width = 30, depth.height = 20;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(0, 1);
+    for (int i = 0; i < 600; ++i) depth.depth.push_back(u(rng) < 0.1f ? INFINITY : 8.5f + 2.0f * u(rng));
+    SampleSet s;
+    for (uint32_t i = 0; i < 3000; ++i)
+        s.add({2.4f * u(rng) - 1.2f, 2.4f * u(rng) - 1.2f, 2.0f * u(rng) - 1.0f}, {0, 0, 1}, i, 0.1f);
+    SamplingTree t("t", uint32_t(s.size()));
+    const float tolerance = 0.05f;
+    size_t visible = 0, hidden = 0;
+    for (const PixelRect r : {PixelRect{-5, -5, 35, 25}, PixelRect{0.5f, 0.5f, 29.5f, 19.5f}, PixelRect{12.3f, 3.7f, 4.1f, 17.2f},
+                              PixelRect{28.2f, 18.9f, 40, 30}}) {
+        std::vector<uint32_t> expected;
+        for (uint32_t i = 0; i < s.size(); ++i) {
+            const Eigen::Vector3f w = project_to_window(v, s.position(i));
+            if (w.x() < std::min(r.x0, r.x1) || w.x() > std::max(r.x0, r.x1) || w.y() < std::min(r.y0, r.y1) ||
+                w.y() > std::max(r.y0, r.y1))
+                continue;
+            const int px = int(std::floor(w.x())), py = int(std::floor(w.y()));
+            float farthest = -INFINITY;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) farthest = std::max(farthest, depth.at(px + dx, py + dy));
+            if (w.z() <= farthest + tolerance) expected.push_back(i);
+            else ++hidden;
+        }
+        visible += expected.size();
+        EXPECT_EQ(visible_samples_in_rect(s, t, 1, v, r, depth, tolerance), expected);
+    }
+    EXPECT_GT(visible, 100u);
+    EXPECT_GT(hidden, 100u);
+}
+
 TEST(Selection, OnlyTheCurrentNodesSamplesAndTheLocalOriginCount) {
     SampleSet s = grid_samples(5);
     s.origin = {0.5, 0, 0}; // every point moves right by half a unit: 50 pixels

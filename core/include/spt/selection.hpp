@@ -14,7 +14,9 @@
 namespace spt {
 
 /// Where object-frame point p lands: x, y in GL window pixels, z the eye depth (model
-/// units in front of the eye; negative behind it).
+/// units in front of the eye; negative behind it). Computed in double through the view's
+/// matrices composed once, rounded to float at the end, so a point far from the origin
+/// keeps its place to the pixel.
 Eigen::Vector3f project_to_window(const ViewProjection& view, const Eigen::Vector3d& p);
 
 /// Every sample below node `id` (all samples of its active descendants), sorted; empty if

@@ -1,5 +1,6 @@
 // A software depth buffer of a mesh in one view, for visible-only selection.
 #include "spt/selection.hpp"
+#include "selection/window_point.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -15,12 +16,24 @@ DepthMap draw_depth(const TriangleMesh& mesh, const ViewProjection& view, int px
     map.depth.assign(size_t(map.width) * size_t(map.height), INFINITY);
     if (px0 > px1 || py0 > py1) return map;
     std::vector<Eigen::Vector3f> win(mesh.positions.size());
-    for (size_t i = 0; i < win.size(); ++i) win[i] = project_to_window(view, mesh.positions[i]);
+    // Which side of the drawn pixels each vertex lies beyond (bits: left, right, below, above),
+    // a quarter pixel clear of the pixel centres' box test below: a triangle with all three
+    // corners beyond one side holds no centre it draws, and is skipped with three byte reads.
+    std::vector<uint8_t> beyond(mesh.positions.size());
+    const float left = float(px0) + 0.25f, right = float(px1) + 0.75f;
+    const float below = float(py0) + 0.25f, above = float(py1) + 0.75f;
+    const detail::WindowMap window(view);
+    for (size_t i = 0; i < win.size(); ++i) {
+        const Eigen::Vector3f w = window(mesh.positions[i]);
+        win[i] = w;
+        beyond[i] = uint8_t(int(w.x() < left) | int(w.x() > right) << 1 | int(w.y() < below) << 2 | int(w.y() > above) << 3);
+    }
     // Screen-space interpolation: eye depth is affine in x, y for an orthographic view;
     // for a perspective one its reciprocal is.
     auto value = [&](float z) { return view.perspective ? 1.0f / z : z; };
     auto depth = [&](float v) { return view.perspective ? 1.0f / v : v; };
     for (const Triangle& t : mesh.triangles) {
+        if (beyond[t[0]] & beyond[t[1]] & beyond[t[2]]) continue;
         const Eigen::Vector3f &a = win[t[0]], &b = win[t[1]], &c = win[t[2]];
         if (view.perspective && (a.z() <= 0 || b.z() <= 0 || c.z() <= 0)) continue;
         const float area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());

@@ -1,5 +1,6 @@
 // Rectangle selection of a node's samples: projection, the through test, combining with a selection.
 #include "spt/selection.hpp"
+#include "selection/window_point.hpp"
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -7,12 +8,7 @@
 namespace spt {
 
 Eigen::Vector3f project_to_window(const ViewProjection& view, const Eigen::Vector3d& p) {
-    const Eigen::Vector4f eye = view.view * Eigen::Vector4f(float(p.x()), float(p.y()), float(p.z()), 1.0f);
-    const Eigen::Vector4f clip = view.projection * eye;
-    const float w = view.perspective ? clip.w() : 1.0f;
-    const float x = (clip.x() / w + 1.0f) * 0.5f * float(std::max(view.width, 1));
-    const float y = (clip.y() / w + 1.0f) * 0.5f * float(std::max(view.height, 1));
-    return {x, y, -eye.z()};
+    return detail::WindowMap(view)(p);
 }
 
 std::vector<uint32_t> samples_below(const SamplingTree& tree, NodeId id) {
@@ -33,23 +29,47 @@ struct Box {
     float x0, y0, x1, y1;
     explicit Box(const PixelRect& r)
         : x0(std::min(r.x0, r.x1)), y0(std::min(r.y0, r.y1)), x1(std::max(r.x0, r.x1)), y1(std::max(r.y0, r.y1)) {}
-    bool contains(const Eigen::Vector3f& w) const { return w.x() >= x0 && w.x() <= x1 && w.y() >= y0 && w.y() <= y1; }
+    // `&`, not `&&`: samples fall in and out of a rectangle in no order a branch predicts.
+    bool contains(const Eigen::Vector3f& w) const {
+        return (w.x() >= x0) & (w.x() <= x1) & (w.y() >= y0) & (w.y() <= y1);
+    }
 };
 
 // A point behind the eye projects through it mirrored: it is never inside the rectangle.
-bool selectable(const ViewProjection& view, const Eigen::Vector3f& w) { return !view.perspective || w.z() > 0; }
+bool selectable(const ViewProjection& view, const Eigen::Vector3f& w) { return !view.perspective | (w.z() > 0); }
+
+// The samples below `id` whose window point passes `keep(window point)`, in place over the
+// sorted id list (an id is read before its slot is written), with the view's kind fixed.
+template <bool Perspective, class Keep>
+std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+                                   const detail::WindowMap& window, const Keep& keep) {
+    std::vector<uint32_t> out = samples_below(tree, id);
+    const double ox = samples.origin.x(), oy = samples.origin.y(), oz = samples.origin.z();
+    size_t kept = 0;
+    for (const uint32_t s : out) {
+        const Eigen::Vector3f& q = samples.points[s]; // SampleSet::position, unrolled
+        const Eigen::Vector3f w = window.map<Perspective>(ox + double(q.x()), oy + double(q.y()), oz + double(q.z()));
+        out[kept] = s;
+        kept += size_t(keep(w));
+    }
+    out.resize(kept);
+    return out;
+}
+
+template <class Keep>
+std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+                                   const detail::WindowMap& window, const Keep& keep) {
+    return window.perspective() ? kept_samples<true>(samples, tree, id, window, keep)
+                                : kept_samples<false>(samples, tree, id, window, keep);
+}
 
 } // namespace
 
 std::vector<uint32_t> samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
                                       const ViewProjection& view, const PixelRect& rect) {
     const Box box(rect);
-    std::vector<uint32_t> out;
-    for (uint32_t s : samples_below(tree, id)) {
-        const Eigen::Vector3f w = project_to_window(view, samples.position(s));
-        if (selectable(view, w) && box.contains(w)) out.push_back(s);
-    }
-    return out;
+    return kept_samples(samples, tree, id, detail::WindowMap(view),
+                        [&](const Eigen::Vector3f& w) { return selectable(view, w) & box.contains(w); });
 }
 
 float DepthMap::at(int x, int y) const {
@@ -57,21 +77,54 @@ float DepthMap::at(int x, int y) const {
     return depth[size_t(y) * size_t(width) + size_t(x)];
 }
 
+namespace {
+
+// The farthest depth among the 3x3 pixels around each pixel of the rectangle, made once for
+// all its samples instead of nine reads a sample; +infinity where one of the nine lies outside
+// the map, that is around every pixel but those in [1, width - 2] x [1, height - 2].
+class FarthestAround {
+public:
+    FarthestAround(const DepthMap& depth, const Box& box) {
+        x0_ = std::max(1.0f, std::floor(box.x0)), x1_ = std::min(float(depth.width - 2), std::floor(box.x1));
+        y0_ = std::max(1.0f, std::floor(box.y0)), y1_ = std::min(float(depth.height - 2), std::floor(box.y1));
+        if (!(x0_ <= x1_ && y0_ <= y1_)) return; // no such pixel (or NaN corners)
+        w_ = int(x1_ - x0_) + 1;
+        const int h = int(y1_ - y0_) + 1, ix0 = int(x0_), iy0 = int(y0_);
+        std::vector<float> rows(size_t(w_) * size_t(h + 2)); // the maxima across, rows y0 - 1 to y1 + 1
+        for (int r = 0; r < h + 2; ++r) {
+            const float* d = depth.depth.data() + size_t(iy0 - 1 + r) * size_t(depth.width) + size_t(ix0);
+            for (int i = 0; i < w_; ++i) rows[size_t(r) * size_t(w_) + size_t(i)] = std::max({d[i - 1], d[i], d[i + 1]});
+        }
+        farthest_.resize(size_t(w_) * size_t(h));
+        for (int r = 0; r < h; ++r)
+            for (int i = 0; i < w_; ++i) {
+                const size_t k = size_t(r) * size_t(w_) + size_t(i);
+                farthest_[k] = std::max({rows[k], rows[k + size_t(w_)], rows[k + 2 * size_t(w_)]});
+            }
+    }
+
+    /// The farthest depth around the pixel holding window point (x, y).
+    float at(float x, float y) const {
+        if (!(x >= x0_ && x < x1_ + 1.0f && y >= y0_ && y < y1_ + 1.0f)) return INFINITY;
+        return farthest_[size_t(int(y - y0_)) * size_t(w_) + size_t(int(x - x0_))];
+    }
+
+private:
+    float x0_ = 0, x1_ = -1, y0_ = 0, y1_ = -1; // pixel range held, whole pixels
+    int w_ = 0;
+    std::vector<float> farthest_;
+};
+
+} // namespace
+
 std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
                                               const ViewProjection& view, const PixelRect& rect,
                                               const DepthMap& depth, float tolerance) {
     const Box box(rect);
-    std::vector<uint32_t> out;
-    for (uint32_t s : samples_below(tree, id)) {
-        const Eigen::Vector3f w = project_to_window(view, samples.position(s));
-        if (!selectable(view, w) || !box.contains(w)) continue;
-        const int px = int(std::floor(w.x())), py = int(std::floor(w.y()));
-        float farthest = -INFINITY;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) farthest = std::max(farthest, depth.at(px + dx, py + dy));
-        if (w.z() <= farthest + tolerance) out.push_back(s);
-    }
-    return out;
+    const FarthestAround farthest(depth, box);
+    return kept_samples(samples, tree, id, detail::WindowMap(view), [&](const Eigen::Vector3f& w) {
+        return selectable(view, w) & box.contains(w) && w.z() <= farthest.at(w.x(), w.y()) + tolerance;
+    });
 }
 
 float visible_tolerance(const TriangleMesh& mesh) { return float(0.005 * mesh.diagonal()); }
