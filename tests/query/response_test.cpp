@@ -1,6 +1,7 @@
 // Backtrack: exact for the sphere model, the paper's rule, the exact level by bisection.
 #include "query_fixtures.hpp"
 #include "spt/response.hpp"
+#include "query/query_run.hpp"
 #include <gtest/gtest.h>
 
 namespace spt {
@@ -38,6 +39,59 @@ TEST(Backtrack, AfterBacktrackNoCollisionAndOnePercentLessStillCollides) {
         }
     }
     for (int c : checked) EXPECT_GT(c, 10);
+}
+
+TEST(Backtrack, PrunedExitSearchFindsTheLargestRootOfEveryOverlappingPair) {
+    // The backtrack's look at one shift walks the trees keeping only the largest exit root and
+    // skipping node pairs that part sooner. Against every pair an `all` query records, the
+    // roots computed one by one: the same root and reach, bit for bit, with fewer node pairs.
+    static auto box = test::make_object(make_box({0.4, 0.25, 0.3}, 6));
+    std::mt19937 rng(23);
+    QueryScratch s;
+    uint64_t walked_all = 0, walked_exit = 0;
+    int compared = 0;
+    for (int it = 0; it < 120; ++it) {
+        const bool same = it % 2 == 0;
+        const CollisionModel& a = torus().model;
+        const CollisionModel& b = same ? torus().model : box->model;
+        const Pose p = test::random_pose(rng, 0.1 + 0.01 * it);
+        const Eigen::Vector3d back = test::random_unit(rng);
+        for (QueryLevel level : {QueryLevel::Bounds, QueryLevel::Spheres}) {
+            QueryOptions o;
+            o.level = level;
+            o.mode = QueryMode::All;
+            const QueryResult all = collide_relative(a, b, p, o, s);
+            walked_all += all.counters.node_pairs;
+            const bool bounds = level == QueryLevel::Bounds;
+            auto centre = [&](const CompactTree& t, uint32_t node, uint32_t k) -> Eigen::Vector3d {
+                const CompactNode& n = t.nodes()[bounds ? k : node];
+                return bounds ? Eigen::Vector3f(n.center[0], n.center[1], n.center[2]).cast<double>()
+                              : t.sphere_centre(n, k).cast<double>();
+            };
+            const Eigen::Matrix3d rot = unit_rotation(p.rotation).toRotationMatrix();
+            const Eigen::Vector3d t = local_translation(a, b, rot, p.translation);
+            double root = -INFINITY, reach = 0;
+            for (const SpherePair& q : s.pairs()) {
+                const Eigen::Vector3d w = rot * centre(b.tree(), q.node_b, q.b) + t - centre(a.tree(), q.node_a, q.a);
+                const double r = detail::exit_root(w, double(q.reach), back);
+                if (r > root) root = r, reach = q.reach;
+                else if (r == root) reach = std::max(reach, double(q.reach));
+            }
+            detail::ExitSearch exit;
+            exit.back = back;
+            const QueryResult e = collide_exit(a, b, p, o, exit, s);
+            walked_exit += e.counters.node_pairs;
+            EXPECT_EQ(e.collide, all.collide) << it;
+            EXPECT_TRUE(s.pairs().empty());
+            ASSERT_EQ(exit.found, root > -INFINITY) << it;
+            if (!exit.found) continue;
+            EXPECT_EQ(exit.root, root) << it << " level " << int(level);
+            EXPECT_EQ(exit.reach, reach) << it << " level " << int(level);
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 150);
+    EXPECT_LT(walked_exit, walked_all / 2) << "the search prunes";
 }
 
 TEST(Backtrack, ZeroMotionDirectionMovesNothing) {

@@ -138,6 +138,8 @@ void QueryRun::run() {
         }
         carried = false;
         ++res.counters.node_pairs;
+        // Exit search: no pair below can leave later than its bounding balls part.
+        if (exit && exit->found && !may_exit_later(ca, cb, ra, rb, pad)) continue;
         // Deepest: no sphere below this pair can be deeper than the bounds' overlap.
         if (deepest && have_best && !(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth))) continue;
         // Flat nodes of two-sided spheres are discs: two sheets side by side are apart here,
@@ -202,6 +204,25 @@ void QueryRun::run() {
                            lr[k], ld2[k]);
         };
         const unsigned first = nearest >= 0 ? 1u << nearest : 0u;
+        if (exit) {
+            // Exit search: the lane likely to part last on top of the stack, so that the best
+            // root comes early and prunes more: by how far B's side lies behind A's along
+            // back, plus the radii (the root when the centres are in line).
+            int order[4], n = 0;
+            float key[4];
+            const Eigen::Vector3f back = exit->back.cast<float>();
+            for (unsigned bits = unsigned(movemask(pass)); bits; bits &= bits - 1) {
+                const int k = __builtin_ctz(bits);
+                const Eigen::Vector3f child(lx[k], ly[k], lz[k]);
+                const float along = side_a ? (child - cb).dot(back) : (ca - child).dot(back);
+                key[k] = along + lr[k];
+                int m = n++;
+                for (; m > 0 && key[order[m - 1]] > key[k]; --m) order[m] = order[m - 1];
+                order[m] = k;
+            }
+            for (int m = 0; m < n; ++m) push(order[m]);
+            continue;
+        }
         for (unsigned bits = unsigned(movemask(pass)) & ~first; bits; bits &= bits - 1) push(__builtin_ctz(bits));
         if (nearest >= 0) {
             const int k = nearest;
@@ -244,6 +265,22 @@ QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, c
             if (!run.have_best) run.res.deepest = contained; // no spheres overlap: containment's contact
         }
     }
+    return run.res;
+}
+
+QueryResult collide_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                         const QueryOptions& options, detail::ExitSearch& search, QueryScratch& scratch) {
+    QueryOptions all = options;
+    all.mode = QueryMode::All;
+    QueryRun run(a, b, b_in_a, all, scratch);
+    search.found = false, search.root = 0, search.reach = 0;
+    run.exit = &search;
+    if (run.f.apart) {
+        run.res.counters.bound_tests = 1;
+        return run.res;
+    }
+    run.run();
+    run.check_containment();
     return run.res;
 }
 

@@ -2,6 +2,8 @@
 // Pieces of the query shared by query.cpp, the brute-force reference, response and CCD.
 #include "spt/query.hpp"
 #include "query/scratch.hpp"
+#include <algorithm>
+#include <cmath>
 
 namespace spt {
 
@@ -40,6 +42,39 @@ struct QueryFrame {
     float margin = 0;
     bool apart = false;
 };
+
+namespace detail {
+
+// The exact backtrack's question at one shift (response.cpp): B moving on by s * back (unit,
+// A's local frame), the largest s at which a pair overlapping now stops overlapping. Answered
+// by a walk that keeps only that root and skips node pairs whose own bounding spheres part
+// sooner, instead of recording every overlapping pair.
+struct ExitSearch {
+    Eigen::Vector3d back = Eigen::Vector3d::UnitX();
+    bool found = false; // some pair overlaps (at level bounds: some leaf bound pair)
+    double root = 0;    // the largest exit root among them (model units along back)
+    double reach = 0;   // the largest reach among the pairs with that root
+};
+
+// Where two balls whose centres differ by w (B's minus A's) and whose radii sum to `reach`
+// stop overlapping as B moves by s * back: the larger root of |w + s back| = reach.
+inline double exit_root(const Eigen::Vector3d& w, double reach, const Eigen::Vector3d& back) {
+    const double half_b = w.dot(back), c = w.squaredNorm() - reach * reach;
+    return -half_b + std::sqrt(std::max(0.0, half_b * half_b - c));
+}
+
+// Keeps pair (root, reach) if it beats or ties the search's best.
+inline void keep_exit(ExitSearch& e, double root, double reach) {
+    if (!e.found || root > e.root) e.found = true, e.root = root, e.reach = reach;
+    else if (root == e.root) e.reach = std::max(e.reach, reach);
+}
+
+} // namespace detail
+
+// Mode all at a non-exact level with `search` answered instead of pairs recorded: sets
+// res.collide (sphere pairs or containment) and the search; scratch.pairs() stays empty.
+QueryResult collide_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                         const QueryOptions& options, detail::ExitSearch& search, QueryScratch& scratch);
 
 // Grows the scratch for this pair of models and starts a new epoch of lazy stamps.
 void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const CollisionModel& b, bool exact);
@@ -102,6 +137,13 @@ struct QueryRun {
         bool meet, valid;
     } piece_memo{0, 0, false, false}; // the last face pair pieces_touch tested: a leaf's hits share faces
     QueryResult res; // res.deepest is written only by record(), so it stays default without a contact
+    detail::ExitSearch* exit = nullptr; // collide_exit: record() feeds it, run() prunes by it
+    // Whether node pair (centres ca, cb in A's frame, radii ra, rb grown by pad) may hold a pair
+    // whose exit root reaches the search's best: their bounding balls must stay met that long.
+    bool may_exit_later(const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra, float rb, float pad) const;
+    // The exit root of sphere pair a, b (of nodes node_a, node_b; at level bounds the nodes), from
+    // their centres moved in double as the backtrack moves them.
+    void keep_exit_root(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, float reach);
 };
 
 } // namespace spt

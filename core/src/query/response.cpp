@@ -58,50 +58,48 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
 }
 
 // Rule Exact at levels bounds and spheres. Every pair overlapping at s keeps overlapping until
-// its own exit root, so the model collides on [s, largest root): jump there and look again.
+// its own exit root, so the model collides on [s, largest root): jump there (and a millionth
+// of that pair's reach past it) and look again. Each look asks only for the largest root
+// (collide_exit), not for every overlapping pair.
 // `start_pairs`: the pairs at s = 0 when the caller has them (then that query is not run).
 BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                               const Eigen::Vector3d& back, const QueryOptions& options,
                               const std::vector<SpherePair>* start_pairs, QueryScratch& scratch) {
     BacktrackResult r;
-    QueryOptions q = options;
-    q.mode = QueryMode::All;
     const bool bounds = options.level == QueryLevel::Bounds;
     double s = 0;
     for (int it = 0; it < 100000; ++it) {
         Pose p = b_in_a;
         p.translation += s * back;
-        const std::vector<SpherePair>* pairs = it == 0 ? start_pairs : nullptr;
-        if (!pairs) {
+        detail::ExitSearch exit;
+        exit.back = back;
+        if (it == 0 && start_pairs) {
+            // As collide_exit would answer from these pairs: B's centres moved as the walk's
+            // exit roots move them, once a sphere (a sphere is in many pairs).
+            const Eigen::Matrix3d rot = unit_rotation(p.rotation).toRotationMatrix();
+            const Eigen::Vector3d t = local_translation(a, b, rot, p.translation); // the centres are local
+            detail::SphereMemo<Eigen::Vector3d>& moved = scratch.buffers().memo_b;
+            moved.start(std::max(b.tree().nodes().size(), b.tree().sphere_count()));
+            for (const SpherePair& pair : *start_pairs) {
+                const Eigen::Vector3d ca =
+                    bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
+                const Eigen::Vector3d& cb = moved.get(pair.b, [&] {
+                    const Eigen::Vector3d cb0 =
+                        bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
+                    return Eigen::Vector3d(rot * cb0 + t);
+                });
+                detail::keep_exit(exit, detail::exit_root(cb - ca, double(pair.reach), back), double(pair.reach));
+            }
+        } else {
             ++r.queries;
-            if (!collide_relative(a, b, p, q, scratch).collide) {
+            if (!collide_exit(a, b, p, options, exit, scratch).collide) {
                 r.distance = s;
                 return r;
             }
             // Held by containment alone (no sphere pairs to solve): step out instead.
-            if (scratch.pairs().empty()) return by_bisection(a, b, b_in_a, back, q, scratch, s, r.queries);
-            pairs = &scratch.pairs();
+            if (!exit.found) return by_bisection(a, b, b_in_a, back, options, scratch, s, r.queries);
         }
-        const Eigen::Matrix3d rot = p.rotation.toRotationMatrix();
-        const Eigen::Vector3d t = local_translation(a, b, rot, p.translation); // the centres are local
-        // B's centres moved once each, not once a pair (a sphere is in many pairs).
-        detail::SphereMemo<Eigen::Vector3d>& moved = scratch.buffers().memo_b;
-        moved.start(std::max(b.tree().nodes().size(), b.tree().sphere_count()));
-        double step = 0, reach_max = 0;
-        for (const SpherePair& pair : *pairs) {
-            const Eigen::Vector3d ca =
-                bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
-            const Eigen::Vector3d& cb = moved.get(pair.b, [&] {
-                const Eigen::Vector3d cb0 =
-                    bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
-                return Eigen::Vector3d(rot * cb0 + t);
-            });
-            const Eigen::Vector3d w = cb - ca;
-            const double reach = pair.reach, half_b = w.dot(back), c = w.squaredNorm() - reach * reach;
-            step = std::max(step, -half_b + std::sqrt(std::max(0.0, half_b * half_b - c)));
-            reach_max = std::max(reach_max, reach);
-        }
-        const double next = s + step + 1e-6 * reach_max;
+        const double next = s + std::max(0.0, exit.root) + 1e-6 * exit.reach;
         if (!(next > s) || !std::isfinite(next)) break; // s no longer moves: report unconverged
         s = next;
     }

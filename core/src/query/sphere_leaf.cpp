@@ -34,6 +34,10 @@ void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
 
 void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
                       const Eigen::Vector3f& cb, float reach, float ra, float d2) {
+    if (exit) {
+        keep_exit_root(node_a, node_b, a, b, reach);
+        return;
+    }
     const float dist = std::sqrt(d2);
     const float depth = reach - dist;
     if (o.mode == QueryMode::All) {
@@ -48,6 +52,30 @@ void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, 
     const Eigen::Vector3d d = (cb - ca).cast<double>();
     c.normal = dist > 0 ? Eigen::Vector3d(d / d.norm()) : Eigen::Vector3d::UnitX();
     c.point = A.origin() + ca.cast<double>() + c.normal * (double(ra) - 0.5 * depth);
+}
+
+void QueryRun::keep_exit_root(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, float reach) {
+    const CompactTree &ta = A.tree(), &tb = B.tree();
+    auto centre = [&](const CompactTree& t, uint32_t node, uint32_t k) -> Eigen::Vector3d {
+        if (o.level == QueryLevel::Bounds) {
+            const CompactNode& n = t.nodes()[k];
+            return Eigen::Vector3f(n.center[0], n.center[1], n.center[2]).cast<double>();
+        }
+        return t.sphere_centre(t.nodes()[node], k).cast<double>();
+    };
+    const Eigen::Vector3d w = f.Rd * centre(tb, node_b, b) + f.td - centre(ta, node_a, a);
+    detail::keep_exit(*exit, detail::exit_root(w, double(reach), exit->back), double(reach));
+}
+
+bool QueryRun::may_exit_later(const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra, float rb,
+                              float pad) const {
+    // Every sphere below lies in its node's bounding ball, so a pair of them overlaps only
+    // while the balls do; the walk's float centres are within pad of the exact ones. The
+    // bound is widened by a millionth so that rounding never drops a pair that ties.
+    const Eigen::Vector3d w = (cb - ca).cast<double>();
+    const double reach = double(ra) + double(rb) + double(pad);
+    const double bound = detail::exit_root(w, reach, exit->back) + 1e-6 * (reach + w.norm());
+    return bound >= exit->root;
 }
 
 bool QueryRun::shapes_touch(uint32_t sa, uint32_t sb, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
