@@ -1,8 +1,10 @@
 // Rectangle selection: through and visible-only against analytic answers, and the three modes.
 #include "mesh/shapes.hpp"
 #include "spt/selection.hpp"
+#include "base/parallel.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
+#include <cstring>
 #include <random>
 
 using namespace spt;
@@ -188,6 +190,57 @@ TEST(Selection, DepthMapOfAWindowEqualsTheFullMapWhereTheSelectionReadsIt) {
             }
         EXPECT_GT(covered, 100u);
         EXPECT_EQ(visible_samples_in_rect(s, t, 1, v, r, part, 0.01f), visible_samples_in_rect(s, t, 1, v, r, full, 0.01f));
+    }
+}
+
+TEST(Selection, ThreadCountChangesNothingOnAMeshOfManyChunks) {
+    // Through, visible only and the depth map split their samples, vertices and triangles
+    // among threads in chunks: on a mesh of several chunks each gives the same answer, bit for
+    // bit, on one, two and three threads, in an orthographic and a perspective view.
+    const TriangleMesh torus = make_torus(0.6, 0.25, 400, 300); // 120,000 vertices, 240,000 triangles
+    const SampleSet s = test::vertex_samples(torus);
+    SamplingTree t("t", uint32_t(s.size()));
+    ViewProjection persp = front_view();
+    persp.perspective = true;
+    persp.projection = Eigen::Matrix4f::Zero();
+    persp.projection(0, 0) = persp.projection(1, 1) = 4;
+    persp.projection(2, 2) = -1.02f, persp.projection(2, 3) = -0.2f, persp.projection(3, 2) = -1;
+    for (const ViewProjection& v : {front_view(), persp}) {
+        const PixelRect r{30.5f, 20.2f, 150.7f, 170.1f};
+        std::vector<uint32_t> through[3], visible[3];
+        std::vector<float> depth[3];
+        for (int n = 1; n <= 3; ++n) {
+            const detail::PinnedThreads pin(n);
+            through[n - 1] = samples_in_rect(s, t, 1, v, r);
+            const DepthMap map = render_depth(torus, v, r);
+            depth[n - 1] = map.depth;
+            visible[n - 1] = visible_samples_in_rect(s, t, 1, v, r, map, 0.01f);
+        }
+        ASSERT_GT(through[0].size(), 20000u);
+        ASSERT_GT(through[0].size(), visible[0].size() + 1000);
+        // Against the rule applied sample by sample, and the window's depths against the
+        // whole view's (drawn over other pixel ranges, so merged at other offsets).
+        std::vector<uint32_t> expected;
+        for (uint32_t i = 0; i < s.size(); ++i) {
+            const Eigen::Vector3f w = project_to_window(v, s.position(i));
+            if ((!v.perspective || w.z() > 0) && w.x() >= r.x0 && w.x() <= r.x1 && w.y() >= r.y0 && w.y() <= r.y1)
+                expected.push_back(i);
+        }
+        EXPECT_EQ(through[0], expected);
+        const DepthMap whole = render_depth(torus, v);
+        size_t covered = 0;
+        for (int y = 20; y <= 171; ++y)
+            for (int x = 29; x <= 151; ++x) {
+                const float d = depth[0][size_t(y) * size_t(v.width) + size_t(x)];
+                EXPECT_EQ(d, whole.at(x, y)) << x << ", " << y;
+                covered += std::isfinite(d);
+            }
+        EXPECT_GT(covered, 2000u);
+        for (int n = 1; n < 3; ++n) {
+            EXPECT_EQ(through[n], through[0]);
+            EXPECT_EQ(visible[n], visible[0]);
+            EXPECT_EQ(0, std::memcmp(depth[n].data(), depth[0].data(), depth[0].size() * sizeof(float)));
+        }
     }
 }
 

@@ -2,7 +2,7 @@
 // each stage runs only when its effect is listed.
 #include "spt/simulation.hpp"
 #include "base/hash.hpp"
-#include "scene/parallel.hpp"
+#include "base/parallel.hpp"
 #include "scene/pair_work.hpp"
 #include "scene/same_pose.hpp"
 #include "spt/ccd.hpp"

@@ -1,7 +1,7 @@
 // The kinematic response (paper §3-4-3): colliding pairs moved back along their relative
 // motion by the scene's rule, velocities reflected about the contact normal. Not a solver.
 #include "query/backtrack_from.hpp"
-#include "scene/parallel.hpp"
+#include "base/parallel.hpp"
 #include "scene/same_pose.hpp"
 #include "spt/error.hpp"
 #include "spt/simulation.hpp"

@@ -1,6 +1,7 @@
 // Rectangle selection of a node's samples: projection, the through test, combining with a selection.
 #include "spt/selection.hpp"
 #include "selection/window_point.hpp"
+#include "base/parallel.hpp"
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -38,21 +39,39 @@ struct Box {
 // A point behind the eye projects through it mirrored: it is never inside the rectangle.
 bool selectable(const ViewProjection& view, const Eigen::Vector3f& w) { return !view.perspective | (w.z() > 0); }
 
-// The samples below `id` whose window point passes `keep(window point)`, in place over the
-// sorted id list (an id is read before its slot is written), with the view's kind fixed.
+// Samples a thread takes at a time: below a few of these, threads cost more than they save.
+constexpr size_t kChunk = size_t(1) << 16;
+
+// The samples below `id` whose window point passes `keep(window point)`, with the view's kind
+// fixed. Chunks of the sorted id list are filtered in place on the machine's threads (an id is
+// read before its slot is written), then closed up in order: the result does not depend on
+// the thread count.
 template <bool Perspective, class Keep>
 std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree& tree, NodeId id,
                                    const detail::WindowMap& window, const Keep& keep) {
     std::vector<uint32_t> out = samples_below(tree, id);
     const double ox = samples.origin.x(), oy = samples.origin.y(), oz = samples.origin.z();
-    size_t kept = 0;
-    for (const uint32_t s : out) {
-        const Eigen::Vector3f& q = samples.points[s]; // SampleSet::position, unrolled
-        const Eigen::Vector3f w = window.map<Perspective>(ox + double(q.x()), oy + double(q.y()), oz + double(q.z()));
-        out[kept] = s;
-        kept += size_t(keep(w));
+    const size_t chunks = (out.size() + kChunk - 1) / kChunk;
+    std::vector<size_t> kept(chunks);
+    detail::parallel_for(chunks, detail::machine_threads(), [&](size_t c, int) {
+        const size_t b = c * kChunk, e = std::min(out.size(), b + kChunk);
+        size_t n = b;
+        for (size_t k = b; k < e; ++k) {
+            const uint32_t s = out[k];
+            const Eigen::Vector3f& q = samples.points[s]; // SampleSet::position, unrolled
+            const Eigen::Vector3f w = window.map<Perspective>(ox + double(q.x()), oy + double(q.y()), oz + double(q.z()));
+            out[n] = s;
+            n += size_t(keep(w));
+        }
+        kept[c] = n - b;
+    });
+    size_t total = 0;
+    for (size_t c = 0; c < chunks; ++c) {
+        if (total != c * kChunk) // already in place otherwise
+            std::copy(out.begin() + long(c * kChunk), out.begin() + long(c * kChunk + kept[c]), out.begin() + long(total));
+        total += kept[c];
     }
-    out.resize(kept);
+    out.resize(total);
     return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Runs f(i, worker) for i in [0, n) on up to `threads` threads. Results must be written
 // per i so that the outcome does not depend on which worker ran which i.
+#include <algorithm>
 #include <atomic>
 #include <thread>
 #include <vector>
@@ -23,5 +24,22 @@ void parallel_for(size_t n, int threads, F&& f) {
     work(0);
     for (std::thread& t : pool) t.join();
 }
+
+// A thread count that tests pin (PinnedThreads) to show that an answer does not depend on it; 0: none.
+inline int pinned_threads = 0;
+
+// Threads for work that a caller waits on (a selection, a depth map): the machine's cores.
+inline int machine_threads() {
+    return pinned_threads > 0 ? pinned_threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Pins machine_threads() to `n` while it lives (tests only: the count is global).
+struct PinnedThreads {
+    explicit PinnedThreads(int n) : previous(pinned_threads) { pinned_threads = n; }
+    ~PinnedThreads() { pinned_threads = previous; }
+    PinnedThreads(const PinnedThreads&) = delete;
+    PinnedThreads& operator=(const PinnedThreads&) = delete;
+    int previous;
+};
 
 } // namespace spt::detail
