@@ -2,6 +2,7 @@
 #include "scene_history.hpp"
 #include "spt/error.hpp"
 #include <QMetaObject>
+#include <algorithm>
 #include <chrono>
 
 namespace spt::editor {
@@ -41,7 +42,9 @@ std::shared_ptr<const RecordedState> SceneHistory::state(int k) const {
 std::vector<std::vector<Eigen::Vector3f>> SceneHistory::trails(int k) const {
     std::lock_guard<std::mutex> lock(mutex_);
     std::vector<std::vector<Eigen::Vector3f>> out(scene_ ? scene_->objects.size() : 0);
-    for (size_t s = 0; s <= size_t(std::max(k, 0)) && s < states_.size(); ++s)
+    const size_t steps = std::min(size_t(std::max(k, 0)) + 1, states_.size());
+    for (auto& trail : out) trail.reserve(steps);
+    for (size_t s = 0; s < steps; ++s)
         for (size_t i = 0; i < out.size(); ++i) out[i].push_back(states_[s]->poses[i].translation.cast<float>());
     return out;
 }
