@@ -32,11 +32,11 @@ void bind_unit(const detail::GlFunctions& gl, int unit, GLenum target, GLuint te
 
 void Renderer::Impl::free_layers() {
     FrameLayers& l = layers;
-    GLuint fbos[] = {l.base_fbo, l.overlay_fbo};
-    GLuint textures[] = {l.base, l.plain, l.marked, l.ids, l.depth, l.cover, l.transmittance};
+    GLuint fbos[] = {l.base_fbo, l.overlay_fbo, l.finals_fbo};
+    GLuint textures[] = {l.base, l.plain, l.marked, l.ids, l.depth, l.cover, l.transmittance, l.unmarked_final, l.marked_final};
     if (l.base_fbo) {
-        gl.DeleteFramebuffers(2, fbos);
-        gl.DeleteTextures(7, textures);
+        gl.DeleteFramebuffers(3, fbos);
+        gl.DeleteTextures(9, textures);
     }
     const GLuint empty_vao = l.empty_vao, marks_texture = l.marks_texture;
     l = FrameLayers{};
@@ -71,8 +71,15 @@ void Renderer::Impl::resize_layers(int width, int height) {
     attach(gl, GL_COLOR_ATTACHMENT1, l.transmittance);
     attach(gl, GL_DEPTH_ATTACHMENT, l.depth);
     const bool overlay_ok = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    l.unmarked_final = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    l.marked_final = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    gl.GenFramebuffers(1, &l.finals_fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, l.finals_fbo);
+    attach(gl, GL_COLOR_ATTACHMENT0, l.unmarked_final);
+    attach(gl, GL_COLOR_ATTACHMENT1, l.marked_final);
+    const bool finals_ok = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     check_gl(gl, "Renderer: frame layers");
-    if (!base_ok || !overlay_ok) throw std::runtime_error("Renderer: frame layers are incomplete");
+    if (!base_ok || !overlay_ok || !finals_ok) throw std::runtime_error("Renderer: frame layers are incomplete");
 }
 
 Renderer::Impl::Reuse Renderer::Impl::reuse(const Frame& f, const Camera& cam, int width, int height) const {
@@ -121,6 +128,58 @@ void Renderer::Impl::remember(const Frame& f, const Camera& cam) {
 
 void Renderer::Impl::marks_seen() {
     for (auto& [id, revision] : layers.mark_revisions) revision = sphere_sets.at(id).mark_revision;
+}
+
+void Renderer::Impl::make_finals() {
+    FrameLayers& l = layers;
+    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl.BindFramebuffer(GL_FRAMEBUFFER, l.finals_fbo);
+    gl.DrawBuffers(2, both);
+    gl.Viewport(0, 0, l.width, l.height);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.Disable(GL_DITHER);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_BLEND);
+    const detail::FinalsProgram& f = prog.finals;
+    gl.UseProgram(f.id);
+    bind_unit(gl, 0, GL_TEXTURE_2D, l.base, f.base);
+    bind_unit(gl, 1, GL_TEXTURE_2D, l.cover, f.cover);
+    bind_unit(gl, 2, GL_TEXTURE_2D, l.transmittance, f.transmittance);
+    bind_unit(gl, 3, GL_TEXTURE_2D, l.ids, f.ids);
+    bind_unit(gl, 4, GL_TEXTURE_2D, l.plain, f.plain);
+    bind_unit(gl, 5, GL_TEXTURE_2D, l.marked, f.marked);
+    gl.BindVertexArray(l.empty_vao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.ActiveTexture(GL_TEXTURE0);
+    l.finals = true;
+}
+
+void Renderer::Impl::recolour(const Viewport& vp, GLuint fbo) {
+    FrameLayers& l = layers;
+    if (!l.finals) make_finals();
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.Viewport(vp.x, vp.y, vp.width, vp.height);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(vp.x, vp.y, vp.width, vp.height);
+    gl.Disable(GL_DITHER);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_BLEND);
+    const detail::RecolourProgram& r = prog.recolour;
+    gl.UseProgram(r.id);
+    bind_unit(gl, 0, GL_TEXTURE_2D, l.unmarked_final, r.unmarked);
+    bind_unit(gl, 1, GL_TEXTURE_2D, l.marked_final, r.marked);
+    bind_unit(gl, 2, GL_TEXTURE_2D, l.ids, r.ids);
+    bind_unit(gl, 3, GL_TEXTURE_BUFFER, l.marks_texture, r.marks);
+    gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sphere_sets.at(l.mark_set).mark_vbo);
+    gl.Uniform2i(r.origin, vp.x, vp.y);
+    gl.BindVertexArray(l.empty_vao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.BindVertexArray(0);
+    gl.UseProgram(0);
 }
 
 void Renderer::Impl::composite(const Viewport& vp, GLuint fbo) {

@@ -110,7 +110,7 @@ void Renderer::Impl::draw(const Frame& f, const Camera& cam, const Viewport& vp,
     if (vp.width <= 0 || vp.height <= 0) return;
     switch (reuse(f, cam, vp.width, vp.height)) {
     case Reuse::None:
-        layers.valid = false;
+        layers.valid = false, layers.finals = false;
         draw_layers(f, cam, vp.width, vp.height, b);
         remember(f, cam);
         last_kind = DrawKind::Full;
@@ -121,7 +121,12 @@ void Renderer::Impl::draw(const Frame& f, const Camera& cam, const Viewport& vp,
         break;
     case Reuse::Composite: last_kind = DrawKind::Composited; break;
     }
-    composite(vp, fbo);
+    // A frame drawn again with its marks (changed or not) chooses between its two final
+    // pictures; a new frame is put together once, without making them.
+    if (last_kind != DrawKind::Full && layers.mark_set)
+        recolour(vp, fbo);
+    else
+        composite(vp, fbo);
     check_gl(gl, "Renderer::draw");
 }
 

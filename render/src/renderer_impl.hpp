@@ -53,7 +53,11 @@ struct Renderer::Impl {
         int width = 0, height = 0;
         GLuint base_fbo = 0, overlay_fbo = 0, empty_vao = 0, marks_texture = 0;
         GLuint base = 0, plain = 0, marked = 0, ids = 0, depth = 0, cover = 0, transmittance = 0;
+        // The layers put together with every sphere unmarked and every sphere marked, made at
+        // the first reuse of a frame with marks: a change of marks then only chooses per pixel.
+        GLuint finals_fbo = 0, unmarked_final = 0, marked_final = 0;
         bool valid = false;
+        bool finals = false; // the two pictures hold the cached layers
         Frame frame;
         Camera camera;
         std::vector<std::pair<uint32_t, uint64_t>> revisions;      // (set id, revision) of the frame's sets
@@ -137,6 +141,10 @@ struct Renderer::Impl {
     void remember(const Frame& f, const Camera& cam);
     void marks_seen();
     void composite(const Viewport& vp, GLuint fbo);
+    // Makes the two final pictures of the cached layers (FrameLayers::finals).
+    void make_finals();
+    // Composite from the two final pictures and the marks.
+    void recolour(const Viewport& vp, GLuint fbo);
 };
 
 } // namespace spt::render

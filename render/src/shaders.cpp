@@ -298,7 +298,7 @@ Programs build_programs(const GlFunctions& gl) {
 }
 
 void delete_programs(const GlFunctions& gl, Programs& p) {
-    for (GLuint* id : {&p.mesh.id, &p.line.id, &p.sphere.id, &p.circle.id, &p.composite.id})
+    for (GLuint* id : {&p.mesh.id, &p.line.id, &p.sphere.id, &p.circle.id, &p.composite.id, &p.finals.id, &p.recolour.id})
         if (*id) gl.DeleteProgram(*id), *id = 0;
 }
 

@@ -46,17 +46,29 @@ struct CompositeProgram {
     GLint use_marks = -1, origin = -1;
 };
 
+struct FinalsProgram {
+    GLuint id = 0;
+    GLint base = -1, cover = -1, transmittance = -1, ids = -1, plain = -1, marked = -1;
+};
+
+struct RecolourProgram {
+    GLuint id = 0;
+    GLint unmarked = -1, marked = -1, ids = -1, marks = -1, origin = -1;
+};
+
 struct Programs {
     MeshProgram mesh;
     LineProgram line;
     SphereProgram sphere;
     CircleProgram circle;
     CompositeProgram composite;
+    FinalsProgram finals;     // the layers put together as all unmarked and all marked
+    RecolourProgram recolour; // the composite from those, for a change of marks
 };
 
 // Compiles and links a program from GLSL sources; throws std::runtime_error naming it with the log.
 GLuint link_program(const GlFunctions& gl, const char* vs, const char* fs, const char* name);
-// Links the composite program into `p` (shaders_layers.cpp).
+// Links the composite, finals and recolour programs into `p` (shaders_layers.cpp).
 void build_layer_programs(const GlFunctions& gl, Programs& p);
 
 // Compiles and links every program; throws std::runtime_error with the compiler log.

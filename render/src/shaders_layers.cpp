@@ -40,6 +40,46 @@ void main() {
 }
 )";
 
+// The two pictures a change of marks chooses between, made once for cached layers: every sphere
+// unmarked (location 0) and every sphere marked (location 1), each exactly what the composite
+// above writes for that mark: the same sum, rounded to eight bits as every target here rounds
+// it (Qt's widget framebuffer and the off-screen buffers are RGBA8).
+const char* kFinalsFs = R"(#version 330 core
+uniform sampler2D u_base;
+uniform sampler2D u_cover;
+uniform sampler2D u_transmittance;
+uniform usampler2D u_ids;
+uniform sampler2D u_plain;
+uniform sampler2D u_marked;
+layout(location = 0) out vec4 unmarked_color;
+layout(location = 1) out vec4 marked_color;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    uint id = texelFetch(u_ids, p, 0).r;
+    vec4 cover = texelFetch(u_cover, p, 0);
+    float t = texelFetch(u_transmittance, p, 0).r;
+    vec4 base = texelFetch(u_base, p, 0);
+    unmarked_color = cover + t * (id == 0u ? base : texelFetch(u_plain, p, 0));
+    marked_color = cover + t * (id == 0u ? base : texelFetch(u_marked, p, 0));
+}
+)";
+
+// The composite from those two pictures: three reads a pixel instead of seven.
+const char* kRecolourFs = R"(#version 330 core
+uniform sampler2D u_unmarked;
+uniform sampler2D u_marked;
+uniform usampler2D u_ids;
+uniform usamplerBuffer u_marks;
+uniform ivec2 u_origin;
+out vec4 frag_color;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy) - u_origin;
+    uint id = texelFetch(u_ids, p, 0).r;
+    bool marked = id != 0u && texelFetch(u_marks, int(3u * (id - 1u))).r != 0u;
+    frag_color = marked ? texelFetch(u_marked, p, 0) : texelFetch(u_unmarked, p, 0);
+}
+)";
+
 } // namespace
 
 void build_layer_programs(const GlFunctions& gl, Programs& p) {
@@ -55,6 +95,21 @@ void build_layer_programs(const GlFunctions& gl, Programs& p) {
     c.marks = loc(c.id, "u_marks");
     c.use_marks = loc(c.id, "u_use_marks");
     c.origin = loc(c.id, "u_origin");
+    FinalsProgram& f = p.finals;
+    f.id = link_program(gl, kFullViewVs, kFinalsFs, "finals");
+    f.base = loc(f.id, "u_base");
+    f.cover = loc(f.id, "u_cover");
+    f.transmittance = loc(f.id, "u_transmittance");
+    f.ids = loc(f.id, "u_ids");
+    f.plain = loc(f.id, "u_plain");
+    f.marked = loc(f.id, "u_marked");
+    RecolourProgram& r = p.recolour;
+    r.id = link_program(gl, kFullViewVs, kRecolourFs, "recolour");
+    r.unmarked = loc(r.id, "u_unmarked");
+    r.marked = loc(r.id, "u_marked");
+    r.ids = loc(r.id, "u_ids");
+    r.marks = loc(r.id, "u_marks");
+    r.origin = loc(r.id, "u_origin");
 }
 
 } // namespace spt::render::detail
