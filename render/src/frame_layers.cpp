@@ -130,42 +130,58 @@ void Renderer::Impl::marks_seen() {
     for (auto& [id, revision] : layers.mark_revisions) revision = sphere_sets.at(id).mark_revision;
 }
 
-void Renderer::Impl::make_finals() {
-    FrameLayers& l = layers;
-    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    gl.BindFramebuffer(GL_FRAMEBUFFER, l.finals_fbo);
-    gl.DrawBuffers(2, both);
-    gl.Viewport(0, 0, l.width, l.height);
-    gl.Disable(GL_SCISSOR_TEST);
+// The state every full-view pass draws with, into `fbo` over `vp` (clipped to it when `clip`).
+void Renderer::Impl::begin_full_view(const Viewport& vp, GLuint fbo, bool clip) {
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.Viewport(vp.x, vp.y, vp.width, vp.height);
+    if (clip) {
+        gl.Enable(GL_SCISSOR_TEST);
+        gl.Scissor(vp.x, vp.y, vp.width, vp.height);
+    } else {
+        gl.Disable(GL_SCISSOR_TEST);
+    }
     gl.Disable(GL_DITHER);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.Disable(GL_DEPTH_TEST);
     gl.Disable(GL_BLEND);
-    const detail::FinalsProgram& f = prog.finals;
-    gl.UseProgram(f.id);
-    bind_unit(gl, 0, GL_TEXTURE_2D, l.base, f.base);
-    bind_unit(gl, 1, GL_TEXTURE_2D, l.cover, f.cover);
-    bind_unit(gl, 2, GL_TEXTURE_2D, l.transmittance, f.transmittance);
-    bind_unit(gl, 3, GL_TEXTURE_2D, l.ids, f.ids);
-    bind_unit(gl, 4, GL_TEXTURE_2D, l.plain, f.plain);
-    bind_unit(gl, 5, GL_TEXTURE_2D, l.marked, f.marked);
-    gl.BindVertexArray(l.empty_vao);
+}
+
+// The cached layers on texture units 0-5, for a program's samplers.
+void Renderer::Impl::bind_layers(const detail::LayerSamplers& s) {
+    const FrameLayers& l = layers;
+    bind_unit(gl, 0, GL_TEXTURE_2D, l.base, s.base);
+    bind_unit(gl, 1, GL_TEXTURE_2D, l.cover, s.cover);
+    bind_unit(gl, 2, GL_TEXTURE_2D, l.transmittance, s.transmittance);
+    bind_unit(gl, 3, GL_TEXTURE_2D, l.ids, s.ids);
+    bind_unit(gl, 4, GL_TEXTURE_2D, l.plain, s.plain);
+    bind_unit(gl, 5, GL_TEXTURE_2D, l.marked, s.marked);
+}
+
+// The one triangle over the viewport, then the state left as the other passes expect it.
+void Renderer::Impl::end_full_view() {
+    gl.BindVertexArray(layers.empty_vao);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
     gl.ActiveTexture(GL_TEXTURE0);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.BindVertexArray(0);
+    gl.UseProgram(0);
+}
+
+void Renderer::Impl::make_finals() {
+    FrameLayers& l = layers;
+    begin_full_view(Viewport{0, 0, l.width, l.height}, l.finals_fbo, false);
+    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl.DrawBuffers(2, both);
+    gl.UseProgram(prog.finals.id);
+    bind_layers(prog.finals.layers);
+    end_full_view();
     l.finals = true;
 }
 
 void Renderer::Impl::recolour(const Viewport& vp, GLuint fbo) {
     FrameLayers& l = layers;
     if (!l.finals) make_finals();
-    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-    gl.Viewport(vp.x, vp.y, vp.width, vp.height);
-    gl.Enable(GL_SCISSOR_TEST);
-    gl.Scissor(vp.x, vp.y, vp.width, vp.height);
-    gl.Disable(GL_DITHER);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    gl.Disable(GL_DEPTH_TEST);
-    gl.Disable(GL_BLEND);
+    begin_full_view(vp, fbo, true);
     const detail::RecolourProgram& r = prog.recolour;
     gl.UseProgram(r.id);
     bind_unit(gl, 0, GL_TEXTURE_2D, l.unmarked_final, r.unmarked);
@@ -174,42 +190,20 @@ void Renderer::Impl::recolour(const Viewport& vp, GLuint fbo) {
     bind_unit(gl, 3, GL_TEXTURE_BUFFER, l.marks_texture, r.marks);
     gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sphere_sets.at(l.mark_set).mark_vbo);
     gl.Uniform2i(r.origin, vp.x, vp.y);
-    gl.BindVertexArray(l.empty_vao);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.Disable(GL_SCISSOR_TEST);
-    gl.BindVertexArray(0);
-    gl.UseProgram(0);
+    end_full_view();
 }
 
 void Renderer::Impl::composite(const Viewport& vp, GLuint fbo) {
     FrameLayers& l = layers;
-    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-    gl.Viewport(vp.x, vp.y, vp.width, vp.height);
-    gl.Enable(GL_SCISSOR_TEST);
-    gl.Scissor(vp.x, vp.y, vp.width, vp.height);
-    gl.Disable(GL_DITHER);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    gl.Disable(GL_DEPTH_TEST);
-    gl.Disable(GL_BLEND);
+    begin_full_view(vp, fbo, true);
     const detail::CompositeProgram& c = prog.composite;
     gl.UseProgram(c.id);
-    bind_unit(gl, 0, GL_TEXTURE_2D, l.base, c.base);
-    bind_unit(gl, 1, GL_TEXTURE_2D, l.cover, c.cover);
-    bind_unit(gl, 2, GL_TEXTURE_2D, l.transmittance, c.transmittance);
-    bind_unit(gl, 3, GL_TEXTURE_2D, l.ids, c.ids);
-    bind_unit(gl, 4, GL_TEXTURE_2D, l.plain, c.plain);
-    bind_unit(gl, 5, GL_TEXTURE_2D, l.marked, c.marked);
+    bind_layers(c.layers);
     bind_unit(gl, 6, GL_TEXTURE_BUFFER, l.marks_texture, c.marks);
     if (l.mark_set) gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sphere_sets.at(l.mark_set).mark_vbo);
     gl.Uniform1i(c.use_marks, l.mark_set ? 1 : 0);
     gl.Uniform2i(c.origin, vp.x, vp.y);
-    gl.BindVertexArray(l.empty_vao);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.Disable(GL_SCISSOR_TEST);
-    gl.BindVertexArray(0);
-    gl.UseProgram(0);
+    end_full_view();
 }
 
 } // namespace spt::render

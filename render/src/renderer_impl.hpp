@@ -141,6 +141,9 @@ struct Renderer::Impl {
     void remember(const Frame& f, const Camera& cam);
     void marks_seen();
     void composite(const Viewport& vp, GLuint fbo);
+    void begin_full_view(const Viewport& vp, GLuint fbo, bool clip);
+    void bind_layers(const detail::LayerSamplers& s);
+    void end_full_view();
     // Makes the two final pictures of the cached layers (FrameLayers::finals).
     void make_finals();
     // Composite from the two final pictures and the marks.

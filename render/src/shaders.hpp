@@ -40,15 +40,20 @@ struct CircleProgram {
 
 // A view's layers put together: the overlay layer over the base layer, marked spheres in their
 // current colour (shaders_layers.cpp).
+// The six layer textures a full-view pass reads (frame_layers.cpp binds them to units 0-5).
+struct LayerSamplers {
+    GLint base = -1, cover = -1, transmittance = -1, ids = -1, plain = -1, marked = -1;
+};
+
 struct CompositeProgram {
     GLuint id = 0;
-    GLint base = -1, cover = -1, transmittance = -1, ids = -1, plain = -1, marked = -1, marks = -1;
-    GLint use_marks = -1, origin = -1;
+    LayerSamplers layers;
+    GLint marks = -1, use_marks = -1, origin = -1;
 };
 
 struct FinalsProgram {
     GLuint id = 0;
-    GLint base = -1, cover = -1, transmittance = -1, ids = -1, plain = -1, marked = -1;
+    LayerSamplers layers;
 };
 
 struct RecolourProgram {

@@ -84,25 +84,19 @@ void main() {
 
 void build_layer_programs(const GlFunctions& gl, Programs& p) {
     auto loc = [&](GLuint prog, const char* n) { return gl.GetUniformLocation(prog, n); };
+    auto layers = [&](GLuint prog) {
+        return LayerSamplers{loc(prog, "u_base"), loc(prog, "u_cover"), loc(prog, "u_transmittance"),
+                             loc(prog, "u_ids"),  loc(prog, "u_plain"), loc(prog, "u_marked")};
+    };
     CompositeProgram& c = p.composite;
     c.id = link_program(gl, kFullViewVs, kCompositeFs, "composite");
-    c.base = loc(c.id, "u_base");
-    c.cover = loc(c.id, "u_cover");
-    c.transmittance = loc(c.id, "u_transmittance");
-    c.ids = loc(c.id, "u_ids");
-    c.plain = loc(c.id, "u_plain");
-    c.marked = loc(c.id, "u_marked");
+    c.layers = layers(c.id);
     c.marks = loc(c.id, "u_marks");
     c.use_marks = loc(c.id, "u_use_marks");
     c.origin = loc(c.id, "u_origin");
     FinalsProgram& f = p.finals;
     f.id = link_program(gl, kFullViewVs, kFinalsFs, "finals");
-    f.base = loc(f.id, "u_base");
-    f.cover = loc(f.id, "u_cover");
-    f.transmittance = loc(f.id, "u_transmittance");
-    f.ids = loc(f.id, "u_ids");
-    f.plain = loc(f.id, "u_plain");
-    f.marked = loc(f.id, "u_marked");
+    f.layers = layers(f.id);
     RecolourProgram& r = p.recolour;
     r.id = link_program(gl, kFullViewVs, kRecolourFs, "recolour");
     r.unmarked = loc(r.id, "u_unmarked");
