@@ -63,6 +63,16 @@ inline double exit_root(const Eigen::Vector3d& w, double reach, const Eigen::Vec
     return -half_b + std::sqrt(std::max(0.0, half_b * half_b - c));
 }
 
+// Local-frame centre of one side of a recorded pair (SpherePair): sphere k of active node
+// `node`, or at level bounds node k itself, in double.
+inline Eigen::Vector3d pair_centre(const CompactTree& t, bool bounds, uint32_t node, uint32_t k) {
+    if (bounds) {
+        const CompactNode& n = t.nodes()[k];
+        return Eigen::Vector3f(n.center[0], n.center[1], n.center[2]).cast<double>();
+    }
+    return t.sphere_centre(t.nodes()[node], k).cast<double>();
+}
+
 // Keeps pair (root, reach) if it beats or ties the search's best.
 inline void keep_exit(ExitSearch& e, double root, double reach) {
     if (!e.found || root > e.root) e.found = true, e.root = root, e.reach = reach;

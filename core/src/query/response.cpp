@@ -8,14 +8,6 @@
 namespace spt {
 namespace {
 
-Eigen::Vector3d node_centre(const CompactTree& t, uint32_t i) {
-    const CompactNode& n = t.nodes()[i];
-    return {n.center[0], n.center[1], n.center[2]};
-}
-Eigen::Vector3d sphere_centre(const CompactTree& t, uint32_t node, uint32_t k) {
-    return t.sphere_centre(t.nodes()[node], k).cast<double>();
-}
-
 // Steps of 1% of the diagonal taken before giving up (100 diagonals plus the two extents).
 constexpr int kMaxSteps = 10200;
 
@@ -81,12 +73,9 @@ BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, 
             detail::SphereMemo<Eigen::Vector3d>& moved = scratch.buffers().memo_b;
             moved.start(std::max(b.tree().nodes().size(), b.tree().sphere_count()));
             for (const SpherePair& pair : *start_pairs) {
-                const Eigen::Vector3d ca =
-                    bounds ? node_centre(a.tree(), pair.a) : sphere_centre(a.tree(), pair.node_a, pair.a);
+                const Eigen::Vector3d ca = detail::pair_centre(a.tree(), bounds, pair.node_a, pair.a);
                 const Eigen::Vector3d& cb = moved.get(pair.b, [&] {
-                    const Eigen::Vector3d cb0 =
-                        bounds ? node_centre(b.tree(), pair.b) : sphere_centre(b.tree(), pair.node_b, pair.b);
-                    return Eigen::Vector3d(rot * cb0 + t);
+                    return Eigen::Vector3d(rot * detail::pair_centre(b.tree(), bounds, pair.node_b, pair.b) + t);
                 });
                 detail::keep_exit(exit, detail::exit_root(cb - ca, double(pair.reach), back), double(pair.reach));
             }

@@ -55,15 +55,9 @@ void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, 
 }
 
 void QueryRun::keep_exit_root(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, float reach) {
-    const CompactTree &ta = A.tree(), &tb = B.tree();
-    auto centre = [&](const CompactTree& t, uint32_t node, uint32_t k) -> Eigen::Vector3d {
-        if (o.level == QueryLevel::Bounds) {
-            const CompactNode& n = t.nodes()[k];
-            return Eigen::Vector3f(n.center[0], n.center[1], n.center[2]).cast<double>();
-        }
-        return t.sphere_centre(t.nodes()[node], k).cast<double>();
-    };
-    const Eigen::Vector3d w = f.Rd * centre(tb, node_b, b) + f.td - centre(ta, node_a, a);
+    const bool bounds = o.level == QueryLevel::Bounds;
+    const Eigen::Vector3d w = f.Rd * detail::pair_centre(B.tree(), bounds, node_b, b) + f.td -
+                              detail::pair_centre(A.tree(), bounds, node_a, a);
     detail::keep_exit(*exit, detail::exit_root(w, double(reach), exit->back), double(reach));
 }
 
