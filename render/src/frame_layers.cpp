@@ -2,6 +2,8 @@
 // and compositing the layers (with the spheres' current marks) into the target.
 #include "renderer_impl.hpp"
 #include <algorithm>
+#include <initializer_list>
+#include <utility>
 #include <stdexcept>
 
 namespace spt::render {
@@ -20,6 +22,18 @@ GLuint make_texture(const detail::GlFunctions& gl, GLint internal, GLenum format
 
 void attach(const detail::GlFunctions& gl, GLenum attachment, GLuint texture) {
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
+}
+
+// A framebuffer with `attachments` (attachment point, texture); `complete` is cleared unless GL
+// accepts it.
+GLuint make_framebuffer(const detail::GlFunctions& gl, std::initializer_list<std::pair<GLenum, GLuint>> attachments,
+                        bool& complete) {
+    GLuint fbo = 0;
+    gl.GenFramebuffers(1, &fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    for (const auto& [point, texture] : attachments) attach(gl, point, texture);
+    complete = complete && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    return fbo;
 }
 
 void bind_unit(const detail::GlFunctions& gl, int unit, GLenum target, GLuint texture, GLint sampler) {
@@ -57,29 +71,23 @@ void Renderer::Impl::resize_layers(int width, int height) {
     l.depth = make_texture(gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width, height);
     l.cover = make_texture(gl, GL_RGBA16F, GL_RGBA, GL_FLOAT, width, height);
     l.transmittance = make_texture(gl, GL_R16F, GL_RED, GL_FLOAT, width, height);
-    gl.GenFramebuffers(1, &l.base_fbo);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, l.base_fbo);
-    attach(gl, GL_COLOR_ATTACHMENT0, l.base);
-    attach(gl, GL_COLOR_ATTACHMENT1, l.plain);
-    attach(gl, GL_COLOR_ATTACHMENT2, l.marked);
-    attach(gl, GL_COLOR_ATTACHMENT3, l.ids);
-    attach(gl, GL_DEPTH_ATTACHMENT, l.depth);
-    const bool base_ok = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-    gl.GenFramebuffers(1, &l.overlay_fbo);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, l.overlay_fbo);
-    attach(gl, GL_COLOR_ATTACHMENT0, l.cover);
-    attach(gl, GL_COLOR_ATTACHMENT1, l.transmittance);
-    attach(gl, GL_DEPTH_ATTACHMENT, l.depth);
-    const bool overlay_ok = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     l.unmarked_final = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
     l.marked_final = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
-    gl.GenFramebuffers(1, &l.finals_fbo);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, l.finals_fbo);
-    attach(gl, GL_COLOR_ATTACHMENT0, l.unmarked_final);
-    attach(gl, GL_COLOR_ATTACHMENT1, l.marked_final);
-    const bool finals_ok = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    bool complete = true;
+    l.base_fbo = make_framebuffer(gl,
+                                  {{GL_COLOR_ATTACHMENT0, l.base},
+                                   {GL_COLOR_ATTACHMENT1, l.plain},
+                                   {GL_COLOR_ATTACHMENT2, l.marked},
+                                   {GL_COLOR_ATTACHMENT3, l.ids},
+                                   {GL_DEPTH_ATTACHMENT, l.depth}},
+                                  complete);
+    l.overlay_fbo = make_framebuffer(
+        gl, {{GL_COLOR_ATTACHMENT0, l.cover}, {GL_COLOR_ATTACHMENT1, l.transmittance}, {GL_DEPTH_ATTACHMENT, l.depth}},
+        complete);
+    l.finals_fbo = make_framebuffer(
+        gl, {{GL_COLOR_ATTACHMENT0, l.unmarked_final}, {GL_COLOR_ATTACHMENT1, l.marked_final}}, complete);
     check_gl(gl, "Renderer: frame layers");
-    if (!base_ok || !overlay_ok || !finals_ok) throw std::runtime_error("Renderer: frame layers are incomplete");
+    if (!complete) throw std::runtime_error("Renderer: frame layers are incomplete");
 }
 
 Renderer::Impl::Reuse Renderer::Impl::reuse(const Frame& f, const Camera& cam, int width, int height) const {

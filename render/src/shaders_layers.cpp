@@ -1,8 +1,20 @@
 // GLSL 3.30 source of the full-view pass that puts a view's cached layers together.
 #include "shaders.hpp"
+#include <string>
 
 namespace spt::render::detail {
 namespace {
+
+// The layers the composite and the finals read (LayerSamplers; frame_layers.cpp binds them),
+// ahead of either's own source.
+const char* kLayerSamplersFs = R"(#version 330 core
+uniform sampler2D u_base;
+uniform sampler2D u_cover;
+uniform sampler2D u_transmittance;
+uniform usampler2D u_ids;
+uniform sampler2D u_plain;
+uniform sampler2D u_marked;
+)";
 
 // One triangle over the whole viewport; no vertex arrays read.
 const char* kFullViewVs = R"(#version 330 core
@@ -15,13 +27,7 @@ void main() {
 // out = cover + transmittance * base: the see-through passes "over" the base, as blending them one
 // by one onto it would (in half floats, rounded to the target once). A base pixel of a sphere drawn with marks takes
 // the colour the sphere pass stored for its current mark, so a change of marks needs no drawing.
-const char* kCompositeFs = R"(#version 330 core
-uniform sampler2D u_base;
-uniform sampler2D u_cover;
-uniform sampler2D u_transmittance;
-uniform usampler2D u_ids;
-uniform sampler2D u_plain;
-uniform sampler2D u_marked;
+const char* kCompositeFs = R"(
 uniform usamplerBuffer u_marks;
 uniform int u_use_marks;
 uniform ivec2 u_origin;
@@ -44,13 +50,7 @@ void main() {
 // unmarked (location 0) and every sphere marked (location 1), each exactly what the composite
 // above writes for that mark: the same sum, rounded to eight bits as every target here rounds
 // it (Qt's widget framebuffer and the off-screen buffers are RGBA8).
-const char* kFinalsFs = R"(#version 330 core
-uniform sampler2D u_base;
-uniform sampler2D u_cover;
-uniform sampler2D u_transmittance;
-uniform usampler2D u_ids;
-uniform sampler2D u_plain;
-uniform sampler2D u_marked;
+const char* kFinalsFs = R"(
 layout(location = 0) out vec4 unmarked_color;
 layout(location = 1) out vec4 marked_color;
 void main() {
@@ -89,13 +89,15 @@ void build_layer_programs(const GlFunctions& gl, Programs& p) {
                              loc(prog, "u_ids"),  loc(prog, "u_plain"), loc(prog, "u_marked")};
     };
     CompositeProgram& c = p.composite;
-    c.id = link_program(gl, kFullViewVs, kCompositeFs, "composite");
+    const std::string composite = std::string(kLayerSamplersFs) + kCompositeFs;
+    c.id = link_program(gl, kFullViewVs, composite.c_str(), "composite");
     c.layers = layers(c.id);
     c.marks = loc(c.id, "u_marks");
     c.use_marks = loc(c.id, "u_use_marks");
     c.origin = loc(c.id, "u_origin");
     FinalsProgram& f = p.finals;
-    f.id = link_program(gl, kFullViewVs, kFinalsFs, "finals");
+    const std::string finals = std::string(kLayerSamplersFs) + kFinalsFs;
+    f.id = link_program(gl, kFullViewVs, finals.c_str(), "finals");
     f.layers = layers(f.id);
     RecolourProgram& r = p.recolour;
     r.id = link_program(gl, kFullViewVs, kRecolourFs, "recolour");
