@@ -8,18 +8,18 @@ float Renderer::Impl::scene_diameter(const Bounds& b) const {
     return b.empty() ? 1.0f : 2.0f * std::max(b.radius(), 1e-6f);
 }
 
-void Renderer::Impl::draw_collision_spheres(const CollisionOverlay& c) {
-    if (c.pairs.empty()) return;
-    std::vector<GpuSphere> data;
-    data.reserve(c.pairs.size() * 6);
+// The pairs' spheres join the splat after the sampling spheres, in the world frame, with id 0.
+void Renderer::Impl::splat_collision_spheres(const CollisionOverlay& c) {
+    collision_spheres.clear();
     for (const SpherePair& p : c.pairs) {
-        push_impostor(data, to_gpu({p.a, c.color_a}));
-        push_impostor(data, to_gpu({p.b, c.color_b}));
+        collision_spheres.push_back(to_gpu({p.a, c.color_a}));
+        collision_spheres.push_back(to_gpu({p.b, c.color_b}));
     }
-    gl.BindBuffer(GL_ARRAY_BUFFER, scratch_set_vbo);
-    gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(GpuSphere)), data.data(), GL_STREAM_DRAW);
-    begin_spheres(view);
-    draw_sphere_range(scratch_set_vao, 0, uint32_t(data.size() / 3));
+    detail::SplatItem item;
+    item.spheres = collision_spheres.data();
+    item.count = uint32_t(collision_spheres.size());
+    item.model_view = view;
+    splat.add(item);
 }
 
 void Renderer::Impl::draw_collision_marks(const CollisionOverlay& c, const Bounds& b) {

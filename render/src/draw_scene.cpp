@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 
 namespace spt::render {
 namespace {
@@ -86,52 +87,25 @@ void Renderer::Impl::draw_meshes(const Frame& f, bool transparent) {
     }
 }
 
-void Renderer::Impl::begin_spheres(const Eigen::Matrix4f& model_view) {
-    gl.UseProgram(prog.sphere.id);
-    gl.UniformMatrix4fv(prog.sphere.model_view, 1, GL_FALSE, model_view.data());
-    gl.UniformMatrix4fv(prog.sphere.projection, 1, GL_FALSE, proj.data());
-    gl.Uniform1i(prog.sphere.ortho, ortho ? 1 : 0);
-    gl.Uniform1i(prog.sphere.override_color, 0);
-    gl.Uniform1f(prog.sphere.fade, 0.0f);
-    gl.Uniform1i(prog.sphere.use_mark, 0);
-}
-
-// Draws spheres [first, first + count) of the impostor vertices in `vao` (three a sphere); their
-// marks from `mark_vbo` (a byte a vertex) unless it is 0.
-void Renderer::Impl::draw_sphere_range(GLuint vao, uint32_t first, uint32_t count, GLuint mark_vbo) {
-    if (count == 0) return;
-    gl.BindVertexArray(vao);
-    if (mark_vbo) {
-        gl.BindBuffer(GL_ARRAY_BUFFER, mark_vbo);
-        gl.EnableVertexAttribArray(detail::kMark);
-        gl.VertexAttribPointer(detail::kMark, 1, GL_UNSIGNED_BYTE, GL_TRUE, 1, nullptr);
-    } else {
-        gl.DisableVertexAttribArray(detail::kMark);
-        gl.VertexAttrib4f(detail::kMark, 0, 0, 0, 1);
-    }
-    gl.DrawArrays(GL_TRIANGLES, GLint(3 * first), GLsizei(3 * count));
-}
-
-void Renderer::Impl::draw_sphere_items(const Frame& f) {
+void Renderer::Impl::splat_sphere_items(const Frame& f) {
     for (const SphereItem& item : f.spheres) {
         auto it = sphere_sets.find(item.spheres.id);
         if (it == sphere_sets.end()) throw std::invalid_argument("Renderer::draw: unknown sphere-set handle");
         const GpuSphereSet& s = it->second;
         if (item.first >= s.count) continue;
-        const uint32_t count = std::min<uint32_t>(item.count, s.count - item.first);
-        begin_spheres(view * item.pose.matrix());
-        if (item.color) {
-            gl.Uniform1i(prog.sphere.override_color, 1);
-            gl.Uniform4f(prog.sphere.color, item.color->r, item.color->g, item.color->b, item.color->a);
+        detail::SplatItem x;
+        x.first_index = item.first;
+        x.count = std::min<uint32_t>(item.count, s.count - item.first);
+        x.spheres = s.spheres.data() + item.first;
+        x.model_view = view * item.pose.matrix();
+        if (item.color) x.override_color = true, x.color = {item.color->r, item.color->g, item.color->b, item.color->a};
+        x.fade = std::clamp(item.fade, 0.0f, 1.0f);
+        if (item.marked_color && s.mark_vbo) {
+            x.use_mark = true;
+            x.mark_color = {item.marked_color->r, item.marked_color->g, item.marked_color->b, item.marked_color->a};
+            x.marks = s.marks.data();
         }
-        gl.Uniform1f(prog.sphere.fade, std::clamp(item.fade, 0.0f, 1.0f));
-        const bool marks = item.marked_color && s.mark_vbo;
-        if (marks) {
-            gl.Uniform1i(prog.sphere.use_mark, 1);
-            gl.Uniform4f(prog.sphere.mark_color, item.marked_color->r, item.marked_color->g, item.marked_color->b,
-                          item.marked_color->a);
-        }
-        draw_sphere_range(s.vao, item.first, count, marks ? s.mark_vbo : 0);
+        splat.add(x);
     }
 }
 

@@ -47,10 +47,12 @@ void bind_unit(const detail::GlFunctions& gl, int unit, GLenum target, GLuint te
 void Renderer::Impl::free_layers() {
     FrameLayers& l = layers;
     GLuint fbos[] = {l.base_fbo, l.overlay_fbo, l.finals_fbo};
-    GLuint textures[] = {l.base, l.plain, l.marked, l.ids, l.depth, l.cover, l.transmittance, l.unmarked_final, l.marked_final};
+    GLuint textures[] = {l.base,           l.plain,        l.marked,      l.ids,          l.depth,
+                         l.cover,          l.transmittance, l.unmarked_final, l.marked_final, l.splat_depth,
+                         l.splat_plain,    l.splat_marked, l.splat_ids};
     if (l.base_fbo) {
         gl.DeleteFramebuffers(3, fbos);
-        gl.DeleteTextures(9, textures);
+        gl.DeleteTextures(13, textures);
     }
     const GLuint empty_vao = l.empty_vao, marks_texture = l.marks_texture;
     l = FrameLayers{};
@@ -73,6 +75,10 @@ void Renderer::Impl::resize_layers(int width, int height) {
     l.transmittance = make_texture(gl, GL_R16F, GL_RED, GL_FLOAT, width, height);
     l.unmarked_final = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
     l.marked_final = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    l.splat_depth = make_texture(gl, GL_R32F, GL_RED, GL_FLOAT, width, height);
+    l.splat_plain = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    l.splat_marked = make_texture(gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    l.splat_ids = make_texture(gl, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, width, height);
     bool complete = true;
     l.base_fbo = make_framebuffer(gl,
                                   {{GL_COLOR_ATTACHMENT0, l.base},

@@ -86,6 +86,7 @@ namespace spt::render::detail {
     X(PFNGLBINDTEXTUREPROC, BindTexture)                      \
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                  \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                        \
+    X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                  \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                  \
     X(PFNGLTEXBUFFERPROC, TexBuffer)                          \
     X(PFNGLUNIFORM2IPROC, Uniform2i)

@@ -68,7 +68,6 @@ void Renderer::remove_mesh(MeshHandle mesh) {
 
 SphereSetHandle Renderer::add_spheres(const std::vector<SphereInstance>& spheres) {
     Impl::GpuSphereSet s;
-    impl_->make_sphere_vao(s.vao, s.vbo);
     impl_->upload_spheres(s, spheres);
     check_gl(impl_->gl, "Renderer::add_spheres");
     const uint32_t id = impl_->next_id++;

@@ -75,8 +75,10 @@ void Renderer::Impl::draw_layers(const Frame& f, const Camera& cam, int width, i
     draw_meshes(f, false);
     // Spheres write their ids and both mark colours; the collision pairs' spheres write id 0.
     gl.DrawBuffers(4, base_all);
-    draw_sphere_items(f);
-    draw_collision_spheres(f.collision);
+    splat.begin(width, height, proj, ortho);
+    splat_sphere_items(f);
+    splat_collision_spheres(f.collision);
+    draw_splat();
     gl.DrawBuffers(4, base_only);
     draw_trails(f);
 

@@ -3,6 +3,7 @@
 #include "frame_equal.hpp"
 #include "gl_functions.hpp"
 #include "shaders.hpp"
+#include "sphere_splat.hpp"
 #include "spt/render/renderer.hpp"
 #include <cstdint>
 #include <map>
@@ -12,12 +13,8 @@
 namespace spt::render {
 
 struct Renderer::Impl {
-    // One solid-sphere instance as the GPU reads it (20 bytes).
-    struct GpuSphere {
-        float center[3];
-        float radius;
-        uint8_t rgba[4];
-    };
+    // One solid sphere as the GPU reads it (20 bytes), also what the CPU splat reads.
+    using GpuSphere = detail::SplatSphere;
     static_assert(sizeof(GpuSphere) == 20, "GpuSphere layout");
 
     // One line or point vertex (16 bytes).
@@ -33,9 +30,10 @@ struct Renderer::Impl {
         GLsizei index_count = 0, vertex_count = 0;
         Bounds bounds;
     };
-    // An uploaded sphere set: GpuSphere instances.
+    // A sphere set: its spheres kept for the CPU splat (sphere_splat.hpp), its marks also in GL
+    // for the composite.
     struct GpuSphereSet {
-        GLuint vao = 0, vbo = 0;
+        std::vector<GpuSphere> spheres;
         GLuint mark_vbo = 0; // one byte a vertex, three a sphere (255 marked), made with the set
         uint32_t count = 0;
         Bounds bounds; // of the spheres, object frame
@@ -56,6 +54,8 @@ struct Renderer::Impl {
         // The layers put together with every sphere unmarked and every sphere marked, made at
         // the first reuse of a frame with marks: a change of marks then only chooses per pixel.
         GLuint finals_fbo = 0, unmarked_final = 0, marked_final = 0;
+        // The sphere splat's pixels, uploaded for the pass that puts them into the base.
+        GLuint splat_depth = 0, splat_plain = 0, splat_marked = 0, splat_ids = 0;
         bool valid = false;
         bool finals = false; // the two pictures hold the cached layers
         Frame frame;
@@ -72,8 +72,6 @@ struct Renderer::Impl {
 
     // A sphere and its colour as the GPU reads them.
     static GpuSphere to_gpu(const SphereInstance& s);
-    // Appends the three vertices of a sphere's impostor triangle.
-    static void push_impostor(std::vector<GpuSphere>& v, const GpuSphere& s);
     // Appends a line/point vertex at p (frame of the matrix it is drawn with).
     static void push_line_vertex(std::vector<LineVertex>& v, const Eigen::Vector3f& p, const Color& c);
 
@@ -91,7 +89,8 @@ struct Renderer::Impl {
 
     GLuint circle_vbo = 0; // 4 circles as GL_LINES
     GLuint line_vao = 0, line_vbo = 0;     // streamed lines and points
-    GLuint scratch_set_vao = 0, scratch_set_vbo = 0; // streamed solid spheres (collision pairs)
+    detail::SphereSplat splat;             // the sampling spheres of the view being drawn
+    std::vector<GpuSphere> collision_spheres; // the collision pairs' spheres, while they are splatted
     GLuint wire_vao = 0, wire_vbo = 0;     // streamed wire-sphere instances
 
     // Per-draw state.
@@ -104,7 +103,6 @@ struct Renderer::Impl {
     ~Impl();
     void set_sphere_attributes(GLuint divisor);
     void make_instanced_vao(GLuint& vao, GLuint& vbo, GLuint shape_vbo, int components);
-    void make_sphere_vao(GLuint& vao, GLuint& vbo);
     void free_mesh(GpuMesh& m);
     void free_set(GpuSphereSet& s);
     void upload_spheres(GpuSphereSet& s, const std::vector<SphereInstance>& spheres);
@@ -117,13 +115,13 @@ struct Renderer::Impl {
     void draw_grid(const Bounds& b, float ground);
     void draw_mesh_faces(const GpuMesh& m, const MeshItem& item);
     void draw_meshes(const Frame& f, bool transparent);
-    void begin_spheres(const Eigen::Matrix4f& model_view);
-    void draw_sphere_range(GLuint vao, uint32_t first, uint32_t count, GLuint mark_vbo = 0);
-    void draw_sphere_items(const Frame& f);
+    void splat_sphere_items(const Frame& f);
+    // Ray-casts the queued spheres (splat) and writes them into the bound base framebuffer.
+    void draw_splat();
 
     // Marks over the scene: collision pairs, trails, wire spheres, axis gizmo (draw_overlays.cpp).
     float scene_diameter(const Bounds& b) const;
-    void draw_collision_spheres(const CollisionOverlay& c);
+    void splat_collision_spheres(const CollisionOverlay& c);
     void draw_collision_marks(const CollisionOverlay& c, const Bounds& b);
     void draw_trails(const Frame& f);
     void draw_wire_spheres(const Frame& f, bool outlines);

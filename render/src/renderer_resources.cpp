@@ -55,8 +55,6 @@ Renderer::Impl::Impl(const ProcLoader& load) {
     gl.VertexAttribPointer(detail::kColor, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LineVertex),
                            reinterpret_cast<void*>(offsetof(LineVertex, rgba)));
 
-    make_sphere_vao(scratch_set_vao, scratch_set_vbo);
-
     make_instanced_vao(wire_vao, wire_vbo, circle_vbo, 3);
     check_gl(gl, "renderer set-up");
 }
@@ -67,15 +65,14 @@ Renderer::Impl::~Impl() {
     gl.DeleteTextures(1, &layers.marks_texture);
     for (auto& [id, m] : meshes) free_mesh(m);
     for (auto& [id, s] : sphere_sets) free_set(s);
-    GLuint vaos[] = {line_vao, scratch_set_vao, wire_vao};
-    GLuint bufs[] = {circle_vbo, line_vbo, scratch_set_vbo, wire_vbo};
-    gl.DeleteVertexArrays(3, vaos);
-    gl.DeleteBuffers(4, bufs);
+    GLuint vaos[] = {line_vao, wire_vao};
+    GLuint bufs[] = {circle_vbo, line_vbo, wire_vbo};
+    gl.DeleteVertexArrays(2, vaos);
+    gl.DeleteBuffers(3, bufs);
     detail::delete_programs(gl, prog);
 }
 
-// Centre/radius and colour from the bound GL_ARRAY_BUFFER of GpuSphere: per instance
-// (divisor 1) or per vertex (divisor 0).
+// Centre/radius and colour from the bound GL_ARRAY_BUFFER of GpuSphere, per instance (divisor 1).
 void Renderer::Impl::set_sphere_attributes(GLuint divisor) {
     gl.EnableVertexAttribArray(detail::kSphere);
     gl.VertexAttribPointer(detail::kSphere, 4, GL_FLOAT, GL_FALSE, sizeof(GpuSphere), nullptr);
@@ -101,22 +98,6 @@ void Renderer::Impl::make_instanced_vao(GLuint& vao, GLuint& vbo, GLuint shape_v
     gl.BindVertexArray(0);
 }
 
-// Sampling spheres: a screen-facing impostor triangle per sphere, its three vertices each a
-// copy of the GpuSphere (the shader takes the corner from gl_VertexID). Not instanced:
-// llvmpipe runs its whole vertex pipeline once per instance, about a microsecond each.
-void Renderer::Impl::make_sphere_vao(GLuint& vao, GLuint& vbo) {
-    gl.GenVertexArrays(1, &vao);
-    gl.GenBuffers(1, &vbo);
-    gl.BindVertexArray(vao);
-    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
-    set_sphere_attributes(0);
-    gl.BindVertexArray(0);
-}
-
-void Renderer::Impl::push_impostor(std::vector<GpuSphere>& v, const GpuSphere& s) {
-    v.insert(v.end(), 3, s);
-}
-
 void Renderer::Impl::free_mesh(GpuMesh& m) {
     gl.DeleteVertexArrays(1, &m.vao);
     GLuint b[] = {m.vbo, m.ebo};
@@ -124,21 +105,17 @@ void Renderer::Impl::free_mesh(GpuMesh& m) {
 }
 
 void Renderer::Impl::free_set(GpuSphereSet& s) {
-    gl.DeleteVertexArrays(1, &s.vao);
-    gl.DeleteBuffers(1, &s.vbo);
     if (s.mark_vbo) gl.DeleteBuffers(1, &s.mark_vbo);
 }
 
 void Renderer::Impl::upload_spheres(GpuSphereSet& s, const std::vector<SphereInstance>& spheres) {
-    std::vector<GpuSphere> data;
-    data.reserve(3 * spheres.size());
+    s.spheres.clear();
+    s.spheres.reserve(spheres.size());
     s.bounds = Bounds{};
     for (const auto& x : spheres) {
-        push_impostor(data, to_gpu(x));
+        s.spheres.push_back(to_gpu(x));
         s.bounds.add_sphere(x.sphere.center, x.sphere.radius);
     }
-    gl.BindBuffer(GL_ARRAY_BUFFER, s.vbo);
-    gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(GpuSphere)), data.data(), GL_STATIC_DRAW);
     s.count = uint32_t(spheres.size());
     s.revision = next_revision++;
     set_marks(s, {});

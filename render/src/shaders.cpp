@@ -1,4 +1,4 @@
-// GLSL 3.30 sources of the renderer's programs (meshes, lines, sphere impostors, wire circles), linked.
+// GLSL 3.30 sources of the renderer's programs (meshes, lines, wire circles), linked.
 #include "shaders.hpp"
 #include <stdexcept>
 #include <string>
@@ -76,103 +76,6 @@ void main() {
     }
     frag_color = v_color;
     frag_cover = vec4(0.0, 0.0, 0.0, v_color.a);
-}
-)";
-
-// Impostor: a triangle that covers the sphere's projection; the fragment shader casts the
-// view ray at the sphere and writes the hit's depth, so spheres intersect exactly.
-const char* kSphereVs = R"(#version 330 core
-layout(location = 2) in vec4 a_color;
-layout(location = 3) in vec4 a_sphere;
-layout(location = 4) in float a_mark;
-uniform mat4 u_model_view;
-uniform mat4 u_projection;
-uniform int u_ortho;
-uniform int u_override_color;
-uniform vec4 u_color;
-uniform float u_fade;
-uniform int u_use_mark;
-uniform vec4 u_mark_color;
-out vec3 v_quad;
-flat out vec3 v_center;
-flat out float v_radius;
-flat out vec4 v_plain;   // colour when not marked
-flat out vec4 v_marked;  // colour when marked
-flat out uint v_marked_now; // 1: draw v_marked
-flat out uint v_id;      // sphere index in its set + 1 when marks are used, else 0
-// The impostor triangle around the unit disc; vertex k of a sphere takes corner k.
-const vec2 kCorners[3] = vec2[3](vec2(0.0, 2.0), vec2(-1.7320508, -1.0), vec2(1.7320508, -1.0));
-void main() {
-    vec2 a_corner = kCorners[gl_VertexID % 3];
-    vec3 c = (u_model_view * vec4(a_sphere.xyz, 1.0)).xyz;
-    float r = a_sphere.w;
-    v_center = c;
-    v_radius = r;
-    // Both colours a mark can give, so that a cached frame can be recoloured without drawing again.
-    v_plain = u_override_color == 1 ? u_color : a_color;
-    v_plain.rgb = mix(v_plain.rgb, vec3(0.84, 0.85, 0.87), u_fade); // dimmed: towards a light grey
-    v_marked = u_use_mark == 1 ? u_mark_color : v_plain;
-    v_marked.rgb = u_use_mark == 1 ? mix(v_marked.rgb, vec3(0.84, 0.85, 0.87), u_fade) : v_plain.rgb;
-    v_marked_now = (u_use_mark == 1 && a_mark > 0.5) ? 1u : 0u;
-    v_id = u_use_mark == 1 ? uint(gl_VertexID / 3 + 1) : 0u;
-    vec3 q;
-    if (u_ortho == 1) {
-        q = c + vec3(a_corner * r, 0.0);
-    } else {
-        float d = length(c);
-        if (d <= r * 1.001) {  // eye inside the sphere: nothing sensible to draw
-            gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
-            v_quad = vec3(0.0);
-            return;
-        }
-        vec3 w = c / d;
-        vec3 helper = abs(w.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-        vec3 u = normalize(cross(helper, w));
-        vec3 v = cross(w, u);
-        // Half-width of the tangent cone where it crosses the plane through the centre.
-        float s = r * d / sqrt(d * d - r * r);
-        q = c + (a_corner.x * u + a_corner.y * v) * s;
-    }
-    v_quad = q;
-    gl_Position = u_projection * vec4(q, 1.0);
-}
-)";
-
-const char* kSphereFs = "#version 330 core\n" SPT_GLSL_SHADE R"(
-in vec3 v_quad;
-flat in vec3 v_center;
-flat in float v_radius;
-flat in vec4 v_plain;
-flat in vec4 v_marked;
-flat in uint v_marked_now;
-flat in uint v_id;
-uniform mat4 u_projection;
-uniform int u_ortho;
-layout(location = 0) out vec4 frag_color;
-layout(location = 1) out vec4 frag_plain;  // the pixel if the sphere were not marked
-layout(location = 2) out vec4 frag_marked; // the pixel if it were marked
-layout(location = 3) out uint frag_id;     // v_id
-void main() {
-    vec3 o = u_ortho == 1 ? v_quad : vec3(0.0);
-    vec3 dir = u_ortho == 1 ? vec3(0.0, 0.0, -1.0) : normalize(v_quad);
-    vec3 oc = o - v_center;
-    float b = dot(dir, oc);
-    float disc = b * b - (dot(oc, oc) - v_radius * v_radius);
-    if (disc < 0.0) discard;
-    float t = -b - sqrt(disc);
-    vec3 hit = o + t * dir;
-    vec3 n = (hit - v_center) / v_radius;
-    vec4 clip = u_projection * vec4(hit, 1.0);
-    float depth = 0.5 * (clip.z / clip.w) + 0.5;
-    if (depth < 0.0 || depth > 1.0) discard;
-    gl_FragDepth = depth;
-    // Darker rim separates touching spheres of the same colour.
-    float facing = clamp(dot(n, -dir), 0.0, 1.0);
-    float rim_shade = mix(0.55, 1.0, smoothstep(0.0, 0.45, facing));
-    frag_plain = vec4(shade(v_plain.rgb, n) * rim_shade, v_plain.a);
-    frag_marked = vec4(shade(v_marked.rgb, n) * rim_shade, v_marked.a);
-    frag_color = v_marked_now == 1u ? frag_marked : frag_plain;
-    frag_id = v_id;
 }
 )";
 
@@ -279,15 +182,6 @@ Programs build_programs(const GlFunctions& gl) {
     p.line.mvp = loc(p.line.id, "u_mvp");
     p.line.point_size = loc(p.line.id, "u_point_size");
     p.line.round_points = loc(p.line.id, "u_round_points");
-    p.sphere.id = link_program(gl, kSphereVs, kSphereFs, "sphere");
-    p.sphere.model_view = loc(p.sphere.id, "u_model_view");
-    p.sphere.projection = loc(p.sphere.id, "u_projection");
-    p.sphere.ortho = loc(p.sphere.id, "u_ortho");
-    p.sphere.override_color = loc(p.sphere.id, "u_override_color");
-    p.sphere.fade = loc(p.sphere.id, "u_fade");
-    p.sphere.color = loc(p.sphere.id, "u_color");
-    p.sphere.use_mark = loc(p.sphere.id, "u_use_mark");
-    p.sphere.mark_color = loc(p.sphere.id, "u_mark_color");
     p.circle.id = link_program(gl, kCircleVs, kCircleFs, "circle");
     p.circle.view = loc(p.circle.id, "u_view");
     p.circle.projection = loc(p.circle.id, "u_projection");
@@ -298,7 +192,7 @@ Programs build_programs(const GlFunctions& gl) {
 }
 
 void delete_programs(const GlFunctions& gl, Programs& p) {
-    for (GLuint* id : {&p.mesh.id, &p.line.id, &p.sphere.id, &p.circle.id, &p.composite.id, &p.finals.id, &p.recolour.id})
+    for (GLuint* id : {&p.mesh.id, &p.line.id, &p.circle.id, &p.splat.id, &p.composite.id, &p.finals.id, &p.recolour.id})
         if (*id) gl.DeleteProgram(*id), *id = 0;
 }
 

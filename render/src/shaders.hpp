@@ -25,11 +25,10 @@ struct LineProgram {
     GLint mvp = -1, point_size = -1, round_points = -1;
 };
 
-// Ray-cast sphere impostors, one triangle per instance.
-struct SphereProgram {
+// The CPU-splatted spheres (sphere_splat.hpp) written into the base layer with their depth.
+struct SplatProgram {
     GLuint id = 0;
-    GLint model_view = -1, projection = -1, ortho = -1, override_color = -1, color = -1, fade = -1;
-    GLint use_mark = -1, mark_color = -1;
+    GLint depth = -1, plain = -1, marked = -1, ids = -1;
 };
 
 // Wire circles of bounding spheres, instanced.
@@ -64,7 +63,7 @@ struct RecolourProgram {
 struct Programs {
     MeshProgram mesh;
     LineProgram line;
-    SphereProgram sphere;
+    SplatProgram splat;
     CircleProgram circle;
     CompositeProgram composite;
     FinalsProgram finals;     // the layers put together as all unmarked and all marked
@@ -73,7 +72,7 @@ struct Programs {
 
 // Compiles and links a program from GLSL sources; throws std::runtime_error naming it with the log.
 GLuint link_program(const GlFunctions& gl, const char* vs, const char* fs, const char* name);
-// Links the composite, finals and recolour programs into `p` (shaders_layers.cpp).
+// Links the splat, composite, finals and recolour programs into `p` (shaders_layers.cpp).
 void build_layer_programs(const GlFunctions& gl, Programs& p);
 
 // Compiles and links every program; throws std::runtime_error with the compiler log.

@@ -1,4 +1,4 @@
-// GLSL 3.30 source of the full-view pass that puts a view's cached layers together.
+// GLSL 3.30 sources of the full-view passes: the splatted spheres into the base, and the cached layers put together.
 #include "shaders.hpp"
 #include <string>
 
@@ -21,6 +21,31 @@ const char* kFullViewVs = R"(#version 330 core
 void main() {
     vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
     gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+
+// The spheres the CPU ray-cast (sphere_splat.hpp) into the base: what the GL impostor shader wrote
+// for each sphere pixel (colour, both mark colours, id) and its depth, so the passes after it are
+// depth-tested against the spheres as before. Pixels no sphere covers hold a depth of 2.
+const char* kSplatFs = R"(#version 330 core
+uniform sampler2D u_depth;
+uniform sampler2D u_plain;
+uniform sampler2D u_marked;
+uniform usampler2D u_ids;
+layout(location = 0) out vec4 frag_color;
+layout(location = 1) out vec4 frag_plain;
+layout(location = 2) out vec4 frag_marked;
+layout(location = 3) out uint frag_id;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(u_depth, p, 0).r;
+    if (depth > 1.0) discard;
+    gl_FragDepth = depth;
+    uint id = texelFetch(u_ids, p, 0).r;
+    frag_plain = texelFetch(u_plain, p, 0);
+    frag_marked = texelFetch(u_marked, p, 0);
+    frag_color = (id & 0x80000000u) != 0u ? frag_marked : frag_plain;
+    frag_id = id & 0x7fffffffu;
 }
 )";
 
@@ -88,6 +113,12 @@ void build_layer_programs(const GlFunctions& gl, Programs& p) {
         return LayerSamplers{loc(prog, "u_base"), loc(prog, "u_cover"), loc(prog, "u_transmittance"),
                              loc(prog, "u_ids"),  loc(prog, "u_plain"), loc(prog, "u_marked")};
     };
+    SplatProgram& s = p.splat;
+    s.id = link_program(gl, kFullViewVs, kSplatFs, "splat");
+    s.depth = loc(s.id, "u_depth");
+    s.plain = loc(s.id, "u_plain");
+    s.marked = loc(s.id, "u_marked");
+    s.ids = loc(s.id, "u_ids");
     CompositeProgram& c = p.composite;
     const std::string composite = std::string(kLayerSamplersFs) + kCompositeFs;
     c.id = link_program(gl, kFullViewVs, composite.c_str(), "composite");
