@@ -60,7 +60,7 @@ void SphereSplat::begin(int width, int height, const Eigen::Matrix4f& projection
     const size_t pixels = size_t(width_) * size_t(height_);
     depth_.assign(pixels, kEmpty);
     steps_.assign(pixels, UINT32_MAX);
-    plain_.resize(pixels), marked_.resize(pixels), ids_.resize(pixels);
+    plain_.resize(pixels), marked_.resize(pixels), ids_.resize(pixels), winner_.resize(pixels);
     x0_ = y0_ = x1_ = y1_ = 0;
     // Under each pixel centre: orthographic, the view-frame x and y of its ray; perspective, the
     // x and y of its direction where z = -1.
@@ -102,6 +102,10 @@ SphereSplat::Placed SphereSplat::place(uint32_t item, uint32_t sphere) const {
     // the centre: a square around it, a little wider, projects over every pixel the sphere covers.
     const float d = c.norm();
     if (d <= r * 1.001f) return p; // the eye inside the sphere: the GL shader drew nothing
+    // Wholly nearer than the near plane or beyond the far one: every hit is outside the depth
+    // range. Skipped here, so that spheres behind the eye never cost a whole view below.
+    const float near = projection_(2, 3) / (projection_(2, 2) - 1), far = projection_(2, 3) / (projection_(2, 2) + 1);
+    if (c.z() - r > -near || c.z() + r < -far) return p;
     const Eigen::Vector3f w = c / d;
     const Eigen::Vector3f helper = std::abs(w.y()) < 0.99f ? Eigen::Vector3f::UnitY() : Eigen::Vector3f::UnitX();
     const Eigen::Vector3f u = helper.cross(w).normalized(), v = w.cross(u);
@@ -128,9 +132,43 @@ SphereSplat::Placed SphereSplat::clip_box(Placed p, float xmin, float xmax, floa
     return p;
 }
 
-// The queued spheres over rows [row0, row1); (x0, x1, y0, y1) grows to the pixels covered. Per
-// pixel, the sums of the GL impostor shader: the view ray's first hit, its window depth, the
-// lighting of shade() and the darker rim.
+namespace {
+
+// Where the ray under a pixel first meets a sphere: the hit and the ray's direction in the view
+// frame, and the hit's window depth.
+struct Hit {
+    float x, y, z, dx, dy, dz, depth;
+};
+
+// The sums of the GL impostor shader for the ray under the pixel whose ray has x `rx` and y
+// `ry` (SphereSplat::begin); false if it misses. The same inputs give the same bits, so both
+// passes of SphereSplat::rows find the same hit.
+template <bool kOrtho>
+inline bool ray_hit(float cx, float cy, float cz, float rr, float rx, float ry, const Eigen::Matrix4f& P, Hit& h) {
+    if (kOrtho) {
+        const float disc = (rr - (ry - cy) * (ry - cy)) - (rx - cx) * (rx - cx);
+        if (!(disc >= 0)) return false;
+        h = {rx, ry, cz + std::sqrt(disc), 0, 0, -1, 0};
+        h.depth = 0.5f * (P(2, 2) * h.z + P(2, 3)) + 0.5f; // w = 1
+    } else {
+        const float inv = 1.0f / std::sqrt(rx * rx + ry * ry + 1.0f);
+        const float dx = rx * inv, dy = ry * inv, dz = -inv;
+        // r^2 less the squared distance of the centre from the ray, taken from the perpendicular
+        // itself: b^2 - |c|^2 + r^2 would cancel away most digits of a small sphere far from the eye.
+        const float b = -(dx * cx + dy * cy + dz * cz);
+        const float qx = cx + b * dx, qy = cy + b * dy, qz = cz + b * dz;
+        const float disc = rr - (qx * qx + qy * qy + qz * qz);
+        if (!(disc >= 0)) return false;
+        const float t = -b - std::sqrt(disc);
+        h = {t * dx, t * dy, t * dz, dx, dy, dz, 0};
+        h.depth = 0.5f * ((P(2, 2) * h.z + P(2, 3)) / (P(3, 2) * h.z + P(3, 3))) + 0.5f;
+    }
+    return h.depth >= 0 && h.depth <= 1;
+}
+
+} // namespace
+
+// The queued spheres over rows [row0, row1); (x0, x1, y0, y1) grows to the pixels covered.
 void SphereSplat::rows(int row0, int row1, int& x0, int& x1, int& y0, int& y1) {
     if (ortho_)
         rows_of<true>(row0, row1, x0, x1, y0, y1);
@@ -138,72 +176,66 @@ void SphereSplat::rows(int row0, int row1, int& x0, int& x1, int& y0, int& y1) {
         rows_of<false>(row0, row1, x0, x1, y0, y1);
 }
 
+// Two passes: the nearest sphere at each pixel, then the colours of that one only (the spheres of
+// a surface overlap many times over, and most of their hits are hidden).
 template <bool kOrtho>
 void SphereSplat::rows_of(int row0, int row1, int& x0, int& x1, int& y0, int& y1) {
     const Eigen::Matrix4f& P = projection_;
-    const float p22 = P(2, 2), p23 = P(2, 3), p32 = P(3, 2), p33 = P(3, 3);
     // Orthographic columns are evenly spaced: a row's hits lie in a span found from the circle.
     const float x_step = width_ > 1 ? column_[1] - column_[0] : 1.0f;
     const float* column = column_.data();
     uint32_t* steps = steps_.data();
-    float* depth_out = depth_.data();
-    uint32_t *plain = plain_.data(), *marked = marked_.data(), *ids = ids_.data();
-    for (const Placed& s : placed_) {
+    uint32_t* winner = winner_.data();
+    for (uint32_t k = 0; k < placed_.size(); ++k) {
+        const Placed& s = placed_[k];
         const int ya = std::max(s.py0, row0), yb = std::min(s.py1, row1 - 1);
         if (ya > yb || s.px0 > s.px1) continue;
-        const Colours col = colours_of(items_[s.item], s.sphere);
-        const float cx = s.c[0], cy = s.c[1], cz = s.c[2], r = s.r, rr = r * r, inv_r = 1.0f / r;
+        const float cx = s.c[0], cy = s.c[1], cz = s.c[2], rr = s.r * s.r;
         for (int y = ya; y <= yb; ++y) {
             const float ry = row_[size_t(y)];
             int xa = s.px0, xb = s.px1;
-            float rem = 0;
             if (kOrtho) {
-                rem = rr - (ry - cy) * (ry - cy);
+                const float rem = rr - (ry - cy) * (ry - cy);
                 if (!(rem >= 0)) continue;
                 const float reach = std::sqrt(rem) / std::abs(x_step);
                 const float mid = (cx - column[0]) / x_step;
-                xa = std::max(xa, int(std::floor(mid - reach)) - 1), xb = std::min(xb, int(std::ceil(mid + reach)) + 1);
+                // Widened by a thousandth of a pixel for the rounding of the columns' x.
+                xa = std::max(xa, int(std::ceil(mid - reach - 1e-3f))), xb = std::min(xb, int(std::floor(mid + reach + 1e-3f)));
             }
             const size_t row = size_t(y) * size_t(width_);
             for (int x = xa; x <= xb; ++x) {
-                const float rx = column[x];
-                float dx = 0, dy = 0, dz = -1, hx, hy, hz, window_depth;
-                if (kOrtho) {
-                    const float disc = rem - (rx - cx) * (rx - cx);
-                    if (!(disc >= 0)) continue;
-                    hx = rx, hy = ry, hz = cz + std::sqrt(disc);
-                    window_depth = 0.5f * (p22 * hz + p23) + 0.5f; // w = 1
-                } else {
-                    const float inv = 1.0f / std::sqrt(rx * rx + ry * ry + 1.0f);
-                    dx = rx * inv, dy = ry * inv, dz = -inv;
-                    // r^2 less the squared distance of the centre from the ray, taken from the
-                    // perpendicular itself: b^2 - |c|^2 + r^2 would cancel away most digits of a
-                    // small sphere far from the eye.
-                    const float b = -(dx * cx + dy * cy + dz * cz);
-                    const float qx = cx + b * dx, qy = cy + b * dy, qz = cz + b * dz;
-                    const float disc = rr - (qx * qx + qy * qy + qz * qz);
-                    if (!(disc >= 0)) continue;
-                    const float t = -b - std::sqrt(disc);
-                    hx = t * dx, hy = t * dy, hz = t * dz;
-                    window_depth = 0.5f * ((p22 * hz + p23) / (p32 * hz + p33)) + 0.5f;
-                }
-                if (!(window_depth >= 0 && window_depth <= 1)) continue;
+                Hit h;
+                if (!ray_hit<kOrtho>(cx, cy, cz, rr, column[x], ry, P, h)) continue;
                 // Compared in the 24-bit depth buffer's steps, so that two spheres crossing are
                 // told apart as GL told them apart (a tie goes to the later sphere).
-                const uint32_t step = uint32_t(window_depth * kDepthSteps + 0.5f);
+                const uint32_t step = uint32_t(h.depth * kDepthSteps + 0.5f);
                 const size_t i = row + size_t(x);
                 if (step > steps[i]) continue;
-                const float nx = (hx - cx) * inv_r, ny = (hy - cy) * inv_r, nz = (hz - cz) * inv_r;
-                const float light = 0.30f + 0.58f * std::abs(nx * -0.3333f + ny * 0.6667f + nz * 0.6667f) + 0.12f * std::abs(nz);
-                const float facing = std::clamp(-(nx * dx + ny * dy + nz * dz), 0.0f, 1.0f);
-                const float k = light * (0.55f + 0.45f * smoothstep(0.0f, 0.45f, facing));
                 steps[i] = step;
-                depth_out[i] = float(step) / kDepthSteps;
-                plain[i] = to_rgba8(col.plain[0] * k, col.plain[1] * k, col.plain[2] * k, col.plain[3]);
-                marked[i] = to_rgba8(col.marked[0] * k, col.marked[1] * k, col.marked[2] * k, col.marked[3]);
-                ids[i] = col.id;
-                x0 = std::min(x0, x), x1 = std::max(x1, x + 1), y0 = std::min(y0, y), y1 = std::max(y1, y + 1);
+                winner[i] = k;
             }
+        }
+    }
+    for (int y = row0; y < row1; ++y) {
+        const size_t row = size_t(y) * size_t(width_);
+        for (int x = 0; x < width_; ++x) {
+            const size_t i = row + size_t(x);
+            if (steps[i] == UINT32_MAX) continue;
+            const Placed& s = placed_[winner[i]];
+            Hit h;
+            ray_hit<kOrtho>(s.c[0], s.c[1], s.c[2], s.r * s.r, column[x], row_[size_t(y)], P, h);
+            const float inv_r = 1.0f / s.r;
+            const float nx = (h.x - s.c[0]) * inv_r, ny = (h.y - s.c[1]) * inv_r, nz = (h.z - s.c[2]) * inv_r;
+            // shade() of the GL shaders (a headlight up and to the left, two-sided) and the darker rim.
+            const float light = 0.30f + 0.58f * std::abs(nx * -0.3333f + ny * 0.6667f + nz * 0.6667f) + 0.12f * std::abs(nz);
+            const float facing = std::clamp(-(nx * h.dx + ny * h.dy + nz * h.dz), 0.0f, 1.0f);
+            const float k = light * (0.55f + 0.45f * smoothstep(0.0f, 0.45f, facing));
+            const Colours col = colours_of(items_[s.item], s.sphere);
+            depth_[i] = float(steps[i]) / kDepthSteps;
+            plain_[i] = to_rgba8(col.plain[0] * k, col.plain[1] * k, col.plain[2] * k, col.plain[3]);
+            marked_[i] = to_rgba8(col.marked[0] * k, col.marked[1] * k, col.marked[2] * k, col.marked[3]);
+            ids_[i] = col.id;
+            x0 = std::min(x0, x), x1 = std::max(x1, x + 1), y0 = std::min(y0, y), y1 = std::max(y1, y + 1);
         }
     }
 }

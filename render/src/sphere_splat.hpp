@@ -86,7 +86,8 @@ private:
     std::vector<SplatItem> items_;
     std::vector<Placed> placed_;
     std::vector<float> depth_;
-    std::vector<uint32_t> steps_; // depth_ in the 24-bit depth buffer's steps; UINT32_MAX where empty
+    std::vector<uint32_t> steps_;  // depth_ in the 24-bit depth buffer's steps; UINT32_MAX where empty
+    std::vector<uint32_t> winner_; // where steps_ is set: the index in placed_ of the sphere there
     std::vector<uint32_t> plain_, marked_, ids_;
     int x0_ = 0, y0_ = 0, x1_ = 0, y1_ = 0;
 };
