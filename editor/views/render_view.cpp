@@ -26,7 +26,12 @@ RenderView::RenderView(render::View view, QWidget* parent) : QOpenGLWidget(paren
     setObjectName(QString("view_") + render::view_name(view));
 }
 
-RenderView::~RenderView() { release_gl(); }
+RenderView::~RenderView() {
+    // ~QOpenGLWidget destroys the context after this part of the object is gone: its
+    // aboutToBeDestroyed must not reach release_gl then (UBSan: a call through a dead RenderView).
+    if (QOpenGLContext* ctx = context()) disconnect(ctx, nullptr, this, nullptr);
+    release_gl();
+}
 
 void RenderView::release_gl() {
     if (!renderer_) return;
