@@ -72,7 +72,8 @@ Renderer::Impl::~Impl() {
     detail::delete_programs(gl, prog);
 }
 
-// Centre/radius and colour from the bound GL_ARRAY_BUFFER of GpuSphere, per instance (divisor 1).
+// Centre/radius and colour from the bound GL_ARRAY_BUFFER of GpuSphere, per instance (divisor 1:
+// the wire spheres).
 void Renderer::Impl::set_sphere_attributes(GLuint divisor) {
     gl.EnableVertexAttribArray(detail::kSphere);
     gl.VertexAttribPointer(detail::kSphere, 4, GL_FLOAT, GL_FALSE, sizeof(GpuSphere), nullptr);

@@ -6,11 +6,10 @@ namespace spt::render::detail {
 
 // Attribute locations shared by every program and vertex array.
 enum Attrib : GLuint {
-    kPosition = 0, // vec3 (mesh, lines) or vec2 corner (impostor triangle) or vec3 circle point
+    kPosition = 0, // vec3 (mesh, lines) or vec3 circle point
     kNormal = 1,   // vec3 mesh normal
     kColor = 2,    // vec4 per-vertex or per-instance colour
     kSphere = 3,   // vec4 per-instance centre (xyz) and radius (w)
-    kMark = 4,     // float per-instance mark (1 marked, 0 not; 0 when the array is off)
 };
 
 // Lit triangles.

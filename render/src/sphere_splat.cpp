@@ -222,7 +222,7 @@ void SphereSplat::rows_of(int row0, int row1, int& x0, int& x1, int& y0, int& y1
             const size_t i = row + size_t(x);
             if (steps[i] == UINT32_MAX) continue;
             const Placed& s = placed_[winner[i]];
-            Hit h;
+            Hit h{};
             ray_hit<kOrtho>(s.c[0], s.c[1], s.c[2], s.r * s.r, column[x], row_[size_t(y)], P, h);
             const float inv_r = 1.0f / s.r;
             const float nx = (h.x - s.c[0]) * inv_r, ny = (h.y - s.c[1]) * inv_r, nz = (h.z - s.c[2]) * inv_r;
