@@ -43,13 +43,16 @@ public:
     /// Starts a view of width x height pixels with projection `projection` (view frame to clip), a
     /// Camera's: no skew or shift; std::invalid_argument for another.
     void begin(int width, int height, const Eigen::Matrix4f& projection, bool ortho);
-    /// Queues spheres, drawn after those queued before (a later sphere wins a tie in depth).
+    /// Queues spheres, drawn after those queued before (a later sphere wins a tie in depth); the
+    /// item's arrays must live until run().
     void add(const SplatItem& item);
     /// Ray-casts every queued sphere at each pixel centre it may cover, on up to `threads`
     /// threads (the result does not depend on the number), and empties the queue.
     void run(int threads);
 
+    /// Pixels across, as begun.
     int width() const { return width_; }
+    /// Pixels down, as begun.
     int height() const { return height_; }
     /// Window depth of the nearest sphere, or kEmpty.
     const std::vector<float>& depth() const { return depth_; }
@@ -59,10 +62,14 @@ public:
     const std::vector<uint32_t>& marked() const { return marked_; }
     /// Sphere index in its set + 1 for items with marks, else 0; kMarkedNow when drawn marked.
     const std::vector<uint32_t>& ids() const { return ids_; }
-    /// Smallest rectangle [x0, x1) x [y0, y1) holding every covered pixel; empty if x0 >= x1.
+    /// Smallest rectangle [x0, x1) x [y0, y1) holding every covered pixel (all 0 if none): its
+    /// left column.
     int x0() const { return x0_; }
+    /// Its bottom row.
     int y0() const { return y0_; }
+    /// One past its right column.
     int x1() const { return x1_; }
+    /// One past its top row.
     int y1() const { return y1_; }
 
 private:
