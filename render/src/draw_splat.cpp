@@ -16,12 +16,6 @@ void upload(const detail::GlFunctions& gl, GLuint texture, GLenum format, GLenum
     gl.TexSubImage2D(GL_TEXTURE_2D, 0, x0, y0, x1 - x0, y1 - y0, format, type, pixels);
 }
 
-void bind_unit(const detail::GlFunctions& gl, int unit, GLuint texture, GLint sampler) {
-    gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    gl.BindTexture(GL_TEXTURE_2D, texture);
-    gl.Uniform1i(sampler, unit);
-}
-
 } // namespace
 
 void Renderer::Impl::draw_splat() {
@@ -42,16 +36,14 @@ void Renderer::Impl::draw_splat() {
 
     const detail::SplatProgram& p = prog.splat;
     gl.UseProgram(p.id);
-    bind_unit(gl, 0, l.splat_depth, p.depth);
-    bind_unit(gl, 1, l.splat_plain, p.plain);
-    bind_unit(gl, 2, l.splat_marked, p.marked);
-    bind_unit(gl, 3, l.splat_ids, p.ids);
+    bind_unit(0, GL_TEXTURE_2D, l.splat_depth, p.depth);
+    bind_unit(1, GL_TEXTURE_2D, l.splat_plain, p.plain);
+    bind_unit(2, GL_TEXTURE_2D, l.splat_marked, p.marked);
+    bind_unit(3, GL_TEXTURE_2D, l.splat_ids, p.ids);
+    // Into the bound base framebuffer with its depth test, over the covered pixels only.
     gl.Enable(GL_SCISSOR_TEST);
     gl.Scissor(x0, y0, x1 - x0, y1 - y0);
-    gl.BindVertexArray(l.empty_vao);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.Disable(GL_SCISSOR_TEST);
-    gl.ActiveTexture(GL_TEXTURE0);
+    end_full_view();
 }
 
 } // namespace spt::render

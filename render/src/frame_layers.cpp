@@ -36,13 +36,13 @@ GLuint make_framebuffer(const detail::GlFunctions& gl, std::initializer_list<std
     return fbo;
 }
 
-void bind_unit(const detail::GlFunctions& gl, int unit, GLenum target, GLuint texture, GLint sampler) {
+} // namespace
+
+void Renderer::Impl::bind_unit(int unit, GLenum target, GLuint texture, GLint sampler) {
     gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
     gl.BindTexture(target, texture);
     gl.Uniform1i(sampler, unit);
 }
-
-} // namespace
 
 void Renderer::Impl::free_layers() {
     FrameLayers& l = layers;
@@ -163,12 +163,12 @@ void Renderer::Impl::begin_full_view(const Viewport& vp, GLuint fbo, bool clip) 
 // The cached layers on texture units 0-5, for a program's samplers.
 void Renderer::Impl::bind_layers(const detail::LayerSamplers& s) {
     const FrameLayers& l = layers;
-    bind_unit(gl, 0, GL_TEXTURE_2D, l.base, s.base);
-    bind_unit(gl, 1, GL_TEXTURE_2D, l.cover, s.cover);
-    bind_unit(gl, 2, GL_TEXTURE_2D, l.transmittance, s.transmittance);
-    bind_unit(gl, 3, GL_TEXTURE_2D, l.ids, s.ids);
-    bind_unit(gl, 4, GL_TEXTURE_2D, l.plain, s.plain);
-    bind_unit(gl, 5, GL_TEXTURE_2D, l.marked, s.marked);
+    bind_unit(0, GL_TEXTURE_2D, l.base, s.base);
+    bind_unit(1, GL_TEXTURE_2D, l.cover, s.cover);
+    bind_unit(2, GL_TEXTURE_2D, l.transmittance, s.transmittance);
+    bind_unit(3, GL_TEXTURE_2D, l.ids, s.ids);
+    bind_unit(4, GL_TEXTURE_2D, l.plain, s.plain);
+    bind_unit(5, GL_TEXTURE_2D, l.marked, s.marked);
 }
 
 // The one triangle over the viewport, then the state left as the other passes expect it.
@@ -198,10 +198,10 @@ void Renderer::Impl::recolour(const Viewport& vp, GLuint fbo) {
     begin_full_view(vp, fbo, true);
     const detail::RecolourProgram& r = prog.recolour;
     gl.UseProgram(r.id);
-    bind_unit(gl, 0, GL_TEXTURE_2D, l.unmarked_final, r.unmarked);
-    bind_unit(gl, 1, GL_TEXTURE_2D, l.marked_final, r.marked);
-    bind_unit(gl, 2, GL_TEXTURE_2D, l.ids, r.ids);
-    bind_unit(gl, 3, GL_TEXTURE_BUFFER, l.marks_texture, r.marks);
+    bind_unit(0, GL_TEXTURE_2D, l.unmarked_final, r.unmarked);
+    bind_unit(1, GL_TEXTURE_2D, l.marked_final, r.marked);
+    bind_unit(2, GL_TEXTURE_2D, l.ids, r.ids);
+    bind_unit(3, GL_TEXTURE_BUFFER, l.marks_texture, r.marks);
     gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sphere_sets.at(l.mark_set).mark_vbo);
     gl.Uniform2i(r.origin, vp.x, vp.y);
     end_full_view();
@@ -213,7 +213,7 @@ void Renderer::Impl::composite(const Viewport& vp, GLuint fbo) {
     const detail::CompositeProgram& c = prog.composite;
     gl.UseProgram(c.id);
     bind_layers(c.layers);
-    bind_unit(gl, 6, GL_TEXTURE_BUFFER, l.marks_texture, c.marks);
+    bind_unit(6, GL_TEXTURE_BUFFER, l.marks_texture, c.marks);
     if (l.mark_set) gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sphere_sets.at(l.mark_set).mark_vbo);
     gl.Uniform1i(c.use_marks, l.mark_set ? 1 : 0);
     gl.Uniform2i(c.origin, vp.x, vp.y);

@@ -139,6 +139,8 @@ struct Renderer::Impl {
     void remember(const Frame& f, const Camera& cam);
     void marks_seen();
     void composite(const Viewport& vp, GLuint fbo);
+    // Binds `texture` (GL_TEXTURE_2D or GL_TEXTURE_BUFFER) to texture unit `unit` for `sampler`.
+    void bind_unit(int unit, GLenum target, GLuint texture, GLint sampler);
     void begin_full_view(const Viewport& vp, GLuint fbo, bool clip);
     void bind_layers(const detail::LayerSamplers& s);
     void end_full_view();
