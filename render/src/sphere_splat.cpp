@@ -1,12 +1,11 @@
 // Sampling spheres ray-cast on the CPU: the sums of the GL impostor shader they replace, per pixel.
 #include "sphere_splat.hpp"
+#include "base/parallel.hpp"
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <system_error>
-#include <thread>
 
 namespace spt::render::detail {
 namespace {
@@ -135,24 +134,6 @@ SphereSplat::Placed SphereSplat::clip_box(Placed p, float xmin, float xmax, floa
 
 namespace {
 
-// Runs part(k) for k in [0, parts), part 0 on this thread and the others on threads of their own;
-// a part whose thread cannot be started (a process limit) runs here, after part 0: a draw never
-// fails for want of a thread.
-template <class Part>
-void run_parts(int parts, const Part& part) {
-    std::vector<std::thread> pool;
-    std::vector<int> here{0};
-    for (int k = 1; k < parts; ++k) {
-        try {
-            pool.emplace_back(part, k);
-        } catch (const std::system_error&) {
-            here.push_back(k);
-        }
-    }
-    for (int k : here) part(k);
-    for (std::thread& t : pool) t.join();
-}
-
 // Where the ray under a pixel first meets a sphere: the hit and the ray's direction in the view
 // frame, and the hit's window depth.
 struct Hit {
@@ -273,7 +254,7 @@ void SphereSplat::run(int threads) {
             i += n;
         }
     };
-    run_parts(parts, place_part);
+    spt::detail::parallel_for(size_t(parts), parts, [&](size_t k, int) { place_part(int(k)); });
     // Bands of rows, each drawn by one thread in queue order: every pixel sees the spheres in
     // the same order whatever the number of bands.
     const int bands = placed_.size() < 2048 ? 1 : std::clamp(threads, 1, std::max(1, height_ / 16));
@@ -285,7 +266,7 @@ void SphereSplat::run(int threads) {
         Box& b = boxes[size_t(k)];
         rows(int(int64_t(height_) * k / bands), int(int64_t(height_) * (k + 1) / bands), b.x0, b.x1, b.y0, b.y1);
     };
-    run_parts(bands, band);
+    spt::detail::parallel_for(size_t(bands), bands, [&](size_t k, int) { band(int(k)); });
     x0_ = width_, x1_ = 0, y0_ = height_, y1_ = 0;
     for (const Box& b : boxes)
         x0_ = std::min(x0_, b.x0), x1_ = std::max(x1_, b.x1), y0_ = std::min(y0_, b.y0), y1_ = std::max(y1_, b.y1);

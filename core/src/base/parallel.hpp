@@ -3,6 +3,7 @@
 // per i so that the outcome does not depend on which worker ran which i.
 #include <algorithm>
 #include <atomic>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -20,7 +21,15 @@ void parallel_for(size_t n, int threads, F&& f) {
     };
     std::vector<std::thread> pool;
     const int count = int(std::min<size_t>(size_t(threads), n));
-    for (int w = 1; w < count; ++w) pool.emplace_back(work, w);
+    // A thread that cannot be started (a process limit) leaves its share to the others: the work
+    // is taken item by item, so it all gets done, on this thread if need be.
+    for (int w = 1; w < count; ++w) {
+        try {
+            pool.emplace_back(work, w);
+        } catch (const std::system_error&) {
+            break;
+        }
+    }
     work(0);
     for (std::thread& t : pool) t.join();
 }
