@@ -136,6 +136,39 @@ TEST(Validate, FindsBrokenStructure) {
     EXPECT_NE(SamplingTree("t", nodes).validate(2).find("finite"), std::string::npos);
 }
 
+// The parent and child checks walk the nodes in id order (no look-up per node): every way a
+// node's parent or a child can be missing or wrong is still named.
+TEST(Validate, NamesAMissingChildParentOrAnActiveParent) {
+    auto node = [](NodeId id, bool active, std::vector<uint32_t> samples) {
+        TreeNode n;
+        n.id = id, n.active = active, n.samples = std::move(samples), n.ss_radius = 1;
+        return n;
+    };
+    // Root 1 split into 2 and 3; 3 split into 6 and 7.
+    const std::vector<TreeNode> good = {node(1, false, {}), node(2, true, {0}), node(3, false, {}),
+                                        node(6, true, {1}), node(7, true, {2})};
+    EXPECT_EQ(SamplingTree("t", good).validate(3), "");
+    auto without = [&](NodeId id) {
+        std::vector<TreeNode> v;
+        for (const TreeNode& n : good)
+            if (n.id != id) v.push_back(n);
+        return v;
+    };
+    auto why = [](std::vector<TreeNode> v, uint32_t count) { return SamplingTree("t", std::move(v)).validate(count); };
+    EXPECT_EQ(why(without(7), 3), "node 3: inactive node lacks a child"); // no right child
+    EXPECT_EQ(why(without(6), 3), "node 3: inactive node lacks a child"); // no left child
+    EXPECT_EQ(why(without(2), 3), "node 1: inactive node lacks a child");
+    EXPECT_EQ(why(without(3), 3), "node 1: inactive node lacks a child");
+    std::vector<TreeNode> orphan = good;
+    orphan.push_back(node(5, true, {}));  // parent 2 is active
+    EXPECT_EQ(why(orphan, 3), "node 5: parent 2 is active");
+    orphan.back() = node(10, true, {}); // parent 5 is missing
+    EXPECT_EQ(why(orphan, 3), "node 10: parent 5 is missing");
+    orphan.back() = node(15, true, {}); // parent 7 is active, found past other nodes' parents
+    EXPECT_EQ(why(orphan, 3), "node 15: parent 7 is active");
+    EXPECT_EQ(why({node(2, true, {0})}, 1), "tree has no root node");
+}
+
 TEST(Radius, DefaultIsMedianSpacingTimesScaleAndFixedOverrides) {
     SampleSet s;
     for (int i = 0; i < 5; ++i) s.add({float(i), 0, 0}, {0, 0, 1}, uint32_t(i), float(i + 1)); // spacing 1..5

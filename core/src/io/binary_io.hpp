@@ -2,6 +2,7 @@
 // Little-endian writing and bounds-checked reading of the .spt byte stream.
 #include "spt/error.hpp"
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -12,15 +13,32 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the .spt codec assumes
 
 class Writer {
 public:
-    template <class T> void put(const T& v) {
-        const auto* p = reinterpret_cast<const uint8_t*>(&v);
-        bytes.insert(bytes.end(), p, p + sizeof(T));
-    }
+    template <class T> void put(const T& v) { put_bytes(&v, sizeof(T)); }
     void put_string(const std::string& s) {
         put(uint32_t(s.size()));
-        bytes.insert(bytes.end(), s.begin(), s.end());
+        put_bytes(s.data(), s.size());
     }
-    std::vector<uint8_t> bytes;
+    void put_bytes(const void* p, size_t n) {
+        // A size of its own over storage grown in doubling steps: a 1M-sample file is 10M
+        // puts, and a vector's range insert each was a tenth of saving it.
+        if (buf_.size() - size_ < n) buf_.resize(std::max(2 * buf_.size(), size_ + n));
+        if (n) std::memcpy(buf_.data() + size_, p, n);
+        size_ += n;
+    }
+    /// Room for `n` bytes in all, so that writing that much copies nothing.
+    void reserve(size_t n) {
+        if (n > buf_.size()) buf_.resize(n);
+    }
+    /// The bytes written; the writer is empty afterwards.
+    std::vector<uint8_t> take() {
+        buf_.resize(size_);
+        size_ = 0;
+        return std::move(buf_);
+    }
+
+private:
+    std::vector<uint8_t> buf_;
+    size_t size_ = 0;
 };
 
 /// Reads from a byte buffer; every read is checked against what remains, and

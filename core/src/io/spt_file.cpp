@@ -63,7 +63,14 @@ uint32_t spt_version_for(const SptDocument& doc) {
 std::vector<uint8_t> encode_spt(const SptDocument& doc) {
     const uint32_t version = spt_version_for(doc);
     detail::Writer w;
-    w.bytes.resize(kHeaderSize);
+    // The whole file but recipes and strings' slack, reserved: no copies of a growing buffer.
+    constexpr size_t kSampleBytes = 3 * 4 + 4 + 4 + 2 + 2, kNodeBytes = 8 + 3 * 4 + 4 + 4 + 4;
+    size_t expected = kHeaderSize + 256 + doc.mesh.name.size() + doc.samples.size() * kSampleBytes;
+    for (const auto& t : doc.trees)
+        expected += 64 + t.name().size() + t.node_count() * kNodeBytes + doc.samples.size() * 4;
+    w.reserve(expected);
+    const uint8_t header[kHeaderSize] = {}; // filled in below
+    w.put_bytes(header, kHeaderSize);
     w.put_string(doc.mesh.name);
     w.put(doc.mesh.vertex_count);
     w.put(doc.mesh.triangle_count);
@@ -97,7 +104,7 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc) {
             for (uint32_t idx : n->samples) w.put(idx);
         if (version >= 3) detail::put_recipe(w, tree.recipe());
     }
-    std::vector<uint8_t>& b = w.bytes;
+    std::vector<uint8_t> b = w.take();
     std::memcpy(b.data(), kMagic, 8);
     const uint32_t flags = 0;
     const uint64_t length = b.size();

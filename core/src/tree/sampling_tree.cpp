@@ -362,13 +362,20 @@ std::string SamplingTree::validate(uint32_t sample_count) const {
     auto where = [](NodeId id) { return "node " + std::to_string(id) + ": "; };
     if (!find(root_id())) return "tree has no root node";
     std::vector<uint8_t> seen(sample_count, 0);
+    // Parents' and children's ids grow with a node's id, so two cursors walking the nodes in id
+    // order find them (a look-up each made this a tenth of saving a 1M-sample tree).
+    auto parent = nodes_.begin(), child = nodes_.begin();
+    auto seek = [&](std::map<NodeId, TreeNode>::const_iterator& c, NodeId want) {
+        while (c != nodes_.end() && c->first < want) ++c;
+        return c != nodes_.end() && c->first == want ? &c->second : nullptr;
+    };
     for (const auto& [id, n] : nodes_) {
         if (id == 0 || id != n.id) return where(id) + "invalid id";
         if (node_depth(id) > kMaxNodeDepth) return where(id) + "deeper than " + std::to_string(kMaxNodeDepth) + " levels";
         if (id != root_id()) {
-            const TreeNode* parent = find(parent_of(id));
-            if (!parent) return where(id) + "parent " + std::to_string(parent_of(id)) + " is missing";
-            if (parent->active) return where(id) + "parent " + std::to_string(parent_of(id)) + " is active";
+            const TreeNode* p = seek(parent, parent_of(id));
+            if (!p) return where(id) + "parent " + std::to_string(parent_of(id)) + " is missing";
+            if (p->active) return where(id) + "parent " + std::to_string(parent_of(id)) + " is active";
         }
         if (!n.center.allFinite() || !std::isfinite(n.bv_radius) || n.bv_radius < 0)
             return where(id) + "bounding sphere is not finite and non-negative";
@@ -386,7 +393,10 @@ std::string SamplingTree::validate(uint32_t sample_count) const {
             }
         } else {
             if (!n.samples.empty()) return where(id) + "inactive node holds samples";
-            if (!find(left_child(id)) || !find(right_child(id))) return where(id) + "inactive node lacks a child";
+            // The right child's id follows the left's: one cursor finds both.
+            const bool left = seek(child, left_child(id)) != nullptr;
+            if (!left || std::next(child) == nodes_.end() || std::next(child)->first != right_child(id))
+                return where(id) + "inactive node lacks a child";
         }
     }
     for (uint32_t s = 0; s < sample_count; ++s)
