@@ -10,11 +10,14 @@
 #include "spt/render/tree_overlay.hpp"
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <set>
+#include <sys/resource.h>
 
 namespace spt::cli {
 namespace {
@@ -144,8 +147,47 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
     return 0;
 }
 
+// The "Key:" field of a /proc file, in bytes (its kB times 1024); 0 when it cannot be read.
+uint64_t proc_kib_field(const char* file, const std::string& key) {
+    std::ifstream in(file);
+    std::string word;
+    uint64_t kib = 0;
+    while (in >> word) {
+        if (word == key && in >> kib) return kib * 1024;
+        in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    }
+    return 0;
+}
+
+// What this process may still take: the memory the kernel says is available, and no more than
+// an address-space limit (ulimit -v) leaves above what is mapped now. 0: unknown.
+uint64_t available_memory_bytes() {
+    uint64_t have = proc_kib_field("/proc/meminfo", "MemAvailable:");
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+        const uint64_t mapped = proc_kib_field("/proc/self/status", "VmSize:");
+        const uint64_t left = uint64_t(limit.rlim_cur) > mapped ? uint64_t(limit.rlim_cur) - mapped : 1;
+        have = have ? std::min(have, left) : left;
+    }
+    return have;
+}
+
+// Linux grants a render's allocations and kills the process when it touches more than there
+// is: a size that cannot fit is refused before any work, with what it needs.
+void check_render_fits(const std::string& size, int width, int height) {
+    const uint64_t need = offscreen_render_bytes(width, height), have = available_memory_bytes();
+    if (have == 0 || need <= have) return;
+    const double gib = 1024.0 * 1024.0 * 1024.0;
+    char msg[256];
+    std::snprintf(msg, sizeof msg,
+                  "--size %s needs about %.2f GiB of memory to render and %.2f GiB are available: choose a smaller size",
+                  size.c_str(), double(need) / gib, double(have) / gib);
+    throw Error(ErrorKind::Usage, msg);
+}
+
 int run_render(const RenderArgs& a) {
     const auto [width, height] = parse_size(a.size);
+    check_render_fits(a.size, width, height);
     const std::vector<int> frames = parse_frames(a);
     if (frames.size() > 1 && a.output.find("{frame}") == std::string::npos)
         throw Error(ErrorKind::Usage, "-o " + a.output + ": with --frames, the output name needs {frame}");

@@ -20,7 +20,9 @@ void check_gl(const GlFunctions& gl, const char* what) {
     if (e == GL_NO_ERROR) return;
     char code[16];
     std::snprintf(code, sizeof code, "0x%04X", unsigned(e));
-    throw std::runtime_error(std::string(what) + ": GL error " + code);
+    // Out of memory is the one a user can act on (a smaller image): say so in words.
+    const char* name = e == GL_OUT_OF_MEMORY ? " (out of memory)" : "";
+    throw std::runtime_error(std::string(what) + ": GL error " + code + name);
 }
 
 } // namespace spt::render::detail

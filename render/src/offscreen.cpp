@@ -3,6 +3,7 @@
 #include "gl_functions.hpp"
 #include "offscreen_backends.hpp"
 #include "spt/error.hpp"
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -108,6 +109,12 @@ std::vector<std::string> offscreen_backends() {
     names.push_back("egl");
 #endif
     return names;
+}
+
+uint64_t offscreen_render_bytes(int width, int height) {
+    // Framebuffer colour and depth 8, layers 38, splat and its upload 40, read back twice 8.
+    constexpr uint64_t kBytesPerPixel = 96;
+    return uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)) * kBytesPerPixel;
 }
 
 std::unique_ptr<OffscreenContext> make_offscreen_context(const std::string& backend, int width, int height) {

@@ -118,6 +118,23 @@ TEST_F(RenderCli, bad_arguments_exit_1) {
     }
 }
 
+// Linux would grant the allocations of a render larger than the memory there is and kill the
+// process when it touched them: such a size is refused up front. An address-space limit
+// (ulimit -v, counted like available memory) makes the case the same on every machine.
+TEST_F(RenderCli, size_beyond_the_memory_there_is_exits_1_before_any_work) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space and cannot run under ulimit -v";
+#endif
+    const std::string limit = "ulimit -v 2500000 &&"; // about 2.4 GiB; 8192x8192 needs about 6
+    const CliRun big = spt("render figure.obj --size 8192x8192 -o x.png", limit);
+    EXPECT_EQ(big.code, 1) << big.err;
+    EXPECT_NE(big.err.find("--size 8192x8192 needs about 6.00 GiB"), std::string::npos) << big.err;
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+    const CliRun small = spt("render figure.obj --size 64x64 -o y.png", limit);
+    EXPECT_EQ(small.code, 0) << small.err;
+    EXPECT_TRUE(fs::exists(dir / "y.png"));
+}
+
 TEST_F(RenderCli, broken_input_exits_2_naming_the_file) {
     std::ofstream(dir / "junk.obj") << "this is not a mesh\n";
     std::ofstream(dir / "junk.spt") << "SPTREE and then nothing useful";

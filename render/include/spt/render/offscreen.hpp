@@ -62,6 +62,11 @@ private:
 /// Backends compiled into this build, default first ("osmesa", "egl").
 std::vector<std::string> offscreen_backends();
 
+/// Bytes an off-screen render of width x height pixels holds at its peak: the context's
+/// framebuffer, the renderer's layers and sphere splat, and the pixels read back (96 a pixel,
+/// the measured peak of `spt render` at 2048 to 8192 pixels a side, rounded up).
+uint64_t offscreen_render_bytes(int width, int height);
+
 /// Creates and makes current an off-screen context of `backend` with a width x height
 /// framebuffer (pixels, 1 to 16384 a side and at most the driver's limit). Throws
 /// Error(Usage) for an unknown or unavailable backend or a size out of range, naming
