@@ -1,5 +1,6 @@
 // spt convert IN... [-o OUT.spt | --out-dir DIR] [options]
 #include "commands.hpp"
+#include "number_checks.hpp"
 #include "process_pool.hpp"
 #include "spt/convert.hpp"
 #include "spt/recipe.hpp"
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <thread>
@@ -140,18 +142,6 @@ std::string output_for(const std::string& in, const ConvertArgs& a, bool keep_ex
 }
 
 // A finite, positive length (CLI11's PositiveNumber lets NaN through).
-const CLI::Validator kPositiveLength(
-    [](std::string& v) -> std::string {
-        try {
-            size_t used = 0;
-            const double d = std::stod(v, &used);
-            if (used == v.size() && std::isfinite(d) && d > 0) return {};
-        } catch (const std::exception&) {
-        }
-        return "must be a finite positive number, not '" + v + "'";
-    },
-    "POSITIVE");
-
 void draw_progress(size_t done, size_t total, size_t failed) {
     const int width = 30;
     const int filled = total ? int(width * done / total) : width;
@@ -249,11 +239,11 @@ Action add_convert_command(CLI::App& app) {
     c->add_option("--leaf-size", a->leaf_size, "Split until an active node holds at most N samples")
         ->check(CLI::Range(1u, 1u << 20));
     c->add_option("--radius", a->radius, "Sampling-sphere radius for every node, model units (default: from spacing)")
-        ->check(kPositiveLength);
+        ->check(finite_positive());
     c->add_option("--radius-scale", a->radius_scale, "Default radius = scale x median sample spacing of the node")
-        ->check(kPositiveLength);
+        ->check(finite_positive());
     c->add_option("--tolerance", a->tolerance, "Add face samples so no surface gap is deeper than EPS (model units)")
-        ->check(kPositiveLength);
+        ->check(finite_positive());
     c->add_flag("--vertices-only", a->vertices_only,
                 "Sample vertices only (the paper), even where that leaves holes; otherwise faces are sampled "
                 "automatically when vertex gaps exceed 0.5% of the diagonal");
@@ -268,7 +258,7 @@ Action add_convert_command(CLI::App& app) {
         ->check(CLI::ExistingFile);
     c->add_option("-j,--jobs", a->jobs, "Files converted at once (default: all cores)")->check(CLI::Range(1, 1024));
     c->add_option("--timeout", a->timeout, "Give up on one file after this many seconds (0: never)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(finite_in(0, std::numeric_limits<double>::max(), "of seconds, 0 or more"));
     c->add_flag("-f,--force", a->force, "Overwrite existing outputs (with --append: replace a same-named tree)");
     c->add_flag("--append", a->append,
                 "Add a tree (--tree-name) over the samples of an existing OUT.spt made from the same mesh");

@@ -1,5 +1,6 @@
 // spt query A B --poses FILE [--level bounds|spheres|exact] [--mode any|all|deepest] [--repeat K] [-o OUT.csv]
 #include "commands.hpp"
+#include "number_checks.hpp"
 #include "spt/pose_file.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
@@ -123,7 +124,7 @@ Action add_query_command(CLI::App& app) {
     c->add_flag("--culling", a->culling, "Normal culling (docs/queries.md)");
     c->add_flag("--surfaces", a->surfaces,
                 "Surfaces only: an object wholly inside another's closed part does not collide (FCL's answer)");
-    c->add_option("--cull-angle", a->cull_angle, "Culling cone half-angle in degrees (default 60)")->check(CLI::Range(0.0, 90.0));
+    c->add_option("--cull-angle", a->cull_angle, "Culling cone half-angle in degrees (default 60)")->check(finite_in(0, 90, "of degrees from 0 to 90"));
     c->add_option("--backtrack", a->backtrack, "exact | paper (move back by the deepest depth)")
         ->check(CLI::IsMember({"exact", "paper"}));
     return [a] { return run_query(*a); };

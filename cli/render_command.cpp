@@ -1,6 +1,7 @@
 // spt render INPUT [--tree FILE.spt] [--view V] [--size WxH] [--frame N | --frames A:B]
 //            [--backend B] [--overlay LIST] -o OUT.png
 #include "commands.hpp"
+#include "number_checks.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
@@ -333,7 +334,7 @@ Action add_render_command(CLI::App& app) {
     c->add_option("--shading", a->shading, "Mesh faces: smooth (default), flat or none")
         ->check(CLI::IsMember({"smooth", "flat", "none"}));
     c->add_option("--mesh-opacity", a->mesh_opacity, "Mesh opacity 0-1 (default 1; 0.3 with spheres or node)")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(finite_in(0, 1, "from 0 to 1"));
     c->add_option("--color-by", a->color_by, "Sampling-sphere colours: level (tree depth) or node")
         ->check(CLI::IsMember({"level", "node"}));
     c->add_option("--node", a->node, "Paper id of the node for the bounds and node overlays (default 1, the root)")

@@ -29,8 +29,9 @@ int main(int argc, char** argv) {
     }
     bool ok = true;
     if (parser.isSet("autosave")) options.autosave_seconds = parser.value("autosave").toInt(&ok);
-    if (!ok || (parser.isSet("autosave") && options.autosave_seconds < 0)) {
-        std::fprintf(stderr, "spt-editor: --autosave %s: expected a whole number of seconds >= 0\n",
+    // At most a day, as the preferences allow: the timer counts milliseconds in an int.
+    if (!ok || (parser.isSet("autosave") && (options.autosave_seconds < 0 || options.autosave_seconds > 86400))) {
+        std::fprintf(stderr, "spt-editor: --autosave %s: expected a whole number of seconds from 0 to 86400\n",
                      qPrintable(parser.value("autosave")));
         return 2;
     }

@@ -145,6 +145,7 @@ TEST(ConvertCli, UsageErrorsExitOne) {
     for (const std::string& args : std::vector<std::string>{std::string("convert"), "convert " + torus + " --bogus", "convert " + torus + " --leaf-size 0",
           "convert " + torus + " --bounds round", "convert " + torus + " --radius -1",
           "convert " + torus + " --tolerance nan", "convert " + torus + " --radius inf",
+          "convert " + torus + " --timeout nan", "convert " + torus + " --timeout inf", "convert " + torus + " --timeout -1",
           "convert " + torus + " --append --tolerance 0.1 -o " + q(out.file("y.spt")), "convert " + torus + " " + torus + " -o " + q(out.file("x.spt")),
           "convert " + torus + " -o " + q(out.path().string()), "convert " + torus + " -o " + q(out.file("new/")),
           std::string("frobnicate")}) {

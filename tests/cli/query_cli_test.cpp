@@ -83,6 +83,17 @@ TEST_F(CliQuery, UnknownFlagIsExitOne) {
     EXPECT_EQ(run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --level cubes").code, 1);
 }
 
+// CLI11's own range check lets NaN through (every comparison with it is false).
+TEST_F(CliQuery, NanOrInfiniteCullAngleIsExitOneNamingTheOption) {
+    const auto poses = write("p.txt", "0 0 0 1 0 0 0\n");
+    for (const char* angle : {"nan", "inf", "-inf", "91", "1e999"}) {
+        const auto r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --culling --cull-angle " + angle);
+        EXPECT_EQ(r.code, 1) << angle << "\n" << r.err;
+        EXPECT_NE(r.err.find("--cull-angle: must be a finite number of degrees from 0 to 90"), std::string::npos) << r.err;
+    }
+    EXPECT_EQ(run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --culling --cull-angle 45").code, 0);
+}
+
 TEST_F(CliQuery, ExactLevelOnSptFilesWithoutMeshesExplainsWhy) {
     const auto poses = write("p.txt", "0 0 0 1 0 0 0\n");
     const std::string spt = (dir_ / "t.spt").string();

@@ -110,7 +110,8 @@ TEST_F(RenderCli, bad_arguments_exit_1) {
           "render figure.obj --frame 1 --frames 1:2 -o x{frame}.png", "render figure.obj --frames 1:3 -o x.png",
           "render figure.obj --overlay spheres,bogus -o x.png", "render figure.obj --overlay none,grid -o x.png",
           "render figure.obj --backend vulkan -o x.png", "render figure.obj --overlay bounds --node 99999 -o x.png",
-          "render figure.obj --mesh-opacity 2 -o x.png"}) {
+          "render figure.obj --mesh-opacity 2 -o x.png", "render figure.obj --mesh-opacity nan -o x.png",
+          "render figure.obj --mesh-opacity inf -o x.png"}) {
         const CliRun r = spt(args);
         EXPECT_EQ(r.code, 1) << args << "\n" << r.err;
         EXPECT_FALSE(r.err.empty()) << args;
