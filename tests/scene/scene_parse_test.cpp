@@ -3,6 +3,7 @@
 #include "scene_fixture.hpp"
 #include "spt/error.hpp"
 #include "spt/scene.hpp"
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -142,6 +143,24 @@ TEST(SceneParse, MissingModelIsRefusedWithItsPath) {
         EXPECT_EQ(e.kind(), ErrorKind::BadInput);
         EXPECT_NE(m.find("missing.json: at /objects/1/model"), std::string::npos) << m;
         EXPECT_NE(m.find("nowhere.obj"), std::string::npos) << m;
+    }
+}
+
+// Import bounds a mesh as read (1e-15 across to 1e16 from the origin); a scale must keep it there.
+TEST(SceneParse, AScaleThatTakesAMeshOutOfRangeIsRefusedWithItsPath) {
+    const spt::test::SceneDir dir;
+    for (const char* scale : {"1e-300", "1e-18", "1e20", "1e300"}) {
+        const std::string path = dir.write("scaled.json", std::string(R"({"spt_scene": 1, "objects": [
+            {"name": "a", "model": "box.obj"}, {"name": "b", "model": "ball.obj", "scale": )") + scale + "}]}");
+        try {
+            load_scene(path);
+            ADD_FAILURE() << "scale " << scale << " was accepted";
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+            EXPECT_NE(m.find("scaled.json: at /objects/1/model: 'scale'"), std::string::npos) << m;
+            EXPECT_NE(m.find(std::atof(scale) < 1 ? "smaller than 1e-15 across" : "beyond 1e16"), std::string::npos) << m;
+        }
     }
 }
 

@@ -3,11 +3,13 @@
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include "spt/scene.hpp"
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <tuple>
 
 namespace spt {
@@ -75,6 +77,17 @@ Cached load_one(const SceneObject& o, const std::string& where) {
     }
     ImportedMesh im = import_mesh(o.model_path);
     for (Eigen::Vector3d& p : im.mesh.positions) p *= o.scale;
+    // Import checked the mesh's size as read; scaled, it must still fit what import accepts.
+    double far = 0;
+    for (const Eigen::Vector3d& p : im.mesh.positions) far = std::max(far, p.cwiseAbs().maxCoeff());
+    const double diagonal = im.mesh.diagonal();
+    if (!(far <= kMaxMeshCoordinate) || !(diagonal >= kMinMeshDiagonal)) {
+        std::ostringstream why;
+        why << where << ": 'scale' " << o.scale << " makes " << o.model_path << " "
+            << (far <= kMaxMeshCoordinate ? "smaller than 1e-15 across" : "reach beyond 1e16 from the origin")
+            << " (its diagonal would be " << diagonal << ")";
+        throw Error(ErrorKind::BadInput, why.str());
+    }
     const SptDocument doc = make_document(im.mesh);
     if (!o.tree.empty() && !doc.tree(o.tree))
         throw Error(ErrorKind::BadInput, where + ": a mesh converted with default options has one tree, 'default', not '" +
