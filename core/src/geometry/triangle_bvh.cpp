@@ -52,12 +52,14 @@ uint64_t spread_bits(uint64_t v) {
     return v;
 }
 
-// The next float above a finite f (libm's nextafterf is a call, and boxes take millions).
-float float_above(float f) {
-    if (f == 0) return FLT_TRUE_MIN;
+// f moved one float away from zero if `outward` (towards -inf when its sign bit is set, +inf
+// otherwise), else f. Without a branch: whether the nearest float lies past v is a coin toss,
+// and the tree's build rounds 24 values a node.
+float step_if(float f, bool outward, bool towards_negative) {
     uint32_t bits;
     std::memcpy(&bits, &f, 4);
-    bits += f > 0 ? 1 : -1;
+    const uint32_t away = (bits >> 31) == uint32_t(towards_negative); // |f| grows, or it shrinks
+    bits += uint32_t(outward) * (away ? 1u : ~0u);
     std::memcpy(&f, &bits, 4);
     return f;
 }
@@ -65,17 +67,18 @@ float float_above(float f) {
 // The float at or below v (at or above for the next one), clamped to the float range without
 // overflow: a float box rounded outwards contains the double one. (Exact, unlike
 // detail::round_up of base/float_round.hpp, which grows a positive radius by 1e-6 relative.)
+// A tiny v rounds to a zero of its own sign, which steps to the smallest float of that sign.
 float float_at_or_below(double v) {
     if (!(v > -double(FLT_MAX))) return -INFINITY; // NaN too: a box that contains everything
     if (v > double(FLT_MAX)) return FLT_MAX;
     const float f = float(v);
-    return double(f) > v ? -float_above(-f) : f;
+    return step_if(f, double(f) > v, true);
 }
 float float_at_or_above(double v) {
     if (!(v < double(FLT_MAX))) return INFINITY;
     if (v < -double(FLT_MAX)) return -FLT_MAX;
     const float f = float(v);
-    return double(f) < v ? float_above(f) : f;
+    return step_if(f, double(f) < v, false);
 }
 
 // Where a range [b, e) of sorted records (more than a leaf) is cut: within its middle half,
@@ -89,15 +92,16 @@ uint32_t split_point(const std::vector<uint64_t>& key, uint32_t b, uint32_t e) {
     const uint64_t diff = key[first - 1] ^ key[last];
     if (!diff) return b + len / 2;
     const uint64_t bit = uint64_t(1) << (63 - __builtin_clzll(diff));
-    uint32_t lo = first, hi = last;
-    while (lo < hi) {
-        const uint32_t m = lo + (hi - lo) / 2;
-        if (key[m] & bit)
-            hi = m;
-        else
-            lo = m + 1;
+    // Branch-free halving (the bit's value at the middle is a coin toss): the first record in
+    // [first, last] with the bit set, which `last` has.
+    const uint64_t* base = key.data() + first;
+    uint32_t n = last - first + 1;
+    while (n > 1) {
+        const uint32_t half = n / 2;
+        base = (base[half - 1] & bit) ? base : base + half;
+        n -= half;
     }
-    return lo;
+    return uint32_t(base - key.data());
 }
 
 bool has_vertex(const Triangle& t, uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
@@ -114,7 +118,7 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) : mesh_(mesh) {
     extent_ = std::max((vbox.max() - origin_).cwiseAbs().maxCoeff(), (vbox.min() - origin_).cwiseAbs().maxCoeff());
     // Triangles in the Morton order of their centroids, then cut where that order jumps
     // furthest near the middle. A record is the code's top 32 bits over the triangle's index:
-    // three radix passes of 11 bits over eight-byte records sort them (a stable sort, so the
+    // two radix passes of 16 bits over eight-byte records sort them (a stable sort, so the
     // records end fully sorted and equal codes keep the mesh's order).
     std::vector<uint64_t> record(n), spare(n);
     {
@@ -134,13 +138,14 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) : mesh_(mesh) {
             record[i] = (code >> 31) << 32 | i; // the code has 63 bits
         }
     }
-    for (int shift = 32; shift < 64; shift += 11) {
-        std::array<uint32_t, 2048> count{};
-        for (uint64_t r : record) ++count[(r >> shift) & 2047];
-        if (count[(record[0] >> shift) & 2047] == n) continue; // every record has this digit
+    std::vector<uint32_t> count(65536);
+    for (int shift = 32; shift < 64; shift += 16) {
+        std::fill(count.begin(), count.end(), 0u);
+        for (uint64_t r : record) ++count[(r >> shift) & 65535];
+        if (count[(record[0] >> shift) & 65535] == n) continue; // every record has this digit
         uint32_t sum = 0;
         for (uint32_t& c : count) sum += std::exchange(c, sum);
-        for (uint64_t r : record) spare[count[(r >> shift) & 2047]++] = r;
+        for (uint64_t r : record) spare[count[(r >> shift) & 65535]++] = r;
         record.swap(spare);
     }
     spare = {};
