@@ -141,7 +141,6 @@ std::string output_for(const std::string& in, const ConvertArgs& a, bool keep_ex
     return (dir / name).string() + ".spt";
 }
 
-// A finite, positive length (CLI11's PositiveNumber lets NaN through).
 void draw_progress(size_t done, size_t total, size_t failed) {
     const int width = 30;
     const int filled = total ? int(width * done / total) : width;

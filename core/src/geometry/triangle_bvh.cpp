@@ -52,14 +52,14 @@ uint64_t spread_bits(uint64_t v) {
     return v;
 }
 
-// f moved one float away from zero if `outward` (towards -inf when its sign bit is set, +inf
-// otherwise), else f. Without a branch: whether the nearest float lies past v is a coin toss,
-// and the tree's build rounds 24 values a node.
-float step_if(float f, bool outward, bool towards_negative) {
+// f moved to the next float towards -inf (`towards_negative`) or +inf if `step`, else f; not for
+// +0 towards -inf or -0 towards +inf. Without a branch: whether the nearest float lies past a
+// value is a coin toss, and the tree's build rounds 24 values a node.
+float step_if(float f, bool step, bool towards_negative) {
     uint32_t bits;
     std::memcpy(&bits, &f, 4);
     const uint32_t away = (bits >> 31) == uint32_t(towards_negative); // |f| grows, or it shrinks
-    bits += uint32_t(outward) * (away ? 1u : ~0u);
+    bits += uint32_t(step) * (away ? 1u : ~0u);
     std::memcpy(&f, &bits, 4);
     return f;
 }
@@ -67,7 +67,8 @@ float step_if(float f, bool outward, bool towards_negative) {
 // The float at or below v (at or above for the next one), clamped to the float range without
 // overflow: a float box rounded outwards contains the double one. (Exact, unlike
 // detail::round_up of base/float_round.hpp, which grows a positive radius by 1e-6 relative.)
-// A tiny v rounds to a zero of its own sign, which steps to the smallest float of that sign.
+// A tiny v rounds to a zero of its own sign, which steps to the smallest float of that sign
+// (the zeros step_if does not take never arise: +0 is never above a v, nor -0 below one).
 float float_at_or_below(double v) {
     if (!(v > -double(FLT_MAX))) return -INFINITY; // NaN too: a box that contains everything
     if (v > double(FLT_MAX)) return FLT_MAX;

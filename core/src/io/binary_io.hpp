@@ -1,8 +1,8 @@
 #pragma once
 // Little-endian writing and bounds-checked reading of the .spt byte stream.
 #include "spt/error.hpp"
-#include <cstdint>
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
