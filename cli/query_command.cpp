@@ -10,8 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -25,12 +23,6 @@ struct QueryArgs {
     bool culling = false, surfaces = false;
     double cull_angle = 60;
 };
-
-bool is_spt_file(const std::string& path) {
-    char magic[6] = {};
-    std::ifstream(path, std::ios::binary).read(magic, 6);
-    return std::memcmp(magic, "SPTREE", 6) == 0;
-}
 
 // A document and, when one is known, its mesh; the model is built over both.
 struct Loaded {

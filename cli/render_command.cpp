@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -55,12 +54,6 @@ private:
 const std::vector<std::string> kOverlays = {"spheres", "bounds", "node",   "wire",  "points", "grid",  "axes",
                                             "none",    "contacts", "normals", "pairs", "ghost",  "trails", "broad"};
 const std::set<std::string> kSceneOnly = {"contacts", "normals", "pairs", "ghost", "trails", "broad"};
-
-bool is_spt_file(const std::string& path) {
-    char magic[6] = {};
-    std::ifstream(path, std::ios::binary).read(magic, 6);
-    return std::memcmp(magic, "SPTREE", 6) == 0;
-}
 
 std::pair<int, int> parse_size(const std::string& s) {
     const size_t x = s.find('x');

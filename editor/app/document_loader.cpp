@@ -9,11 +9,7 @@
 
 namespace spt::editor {
 
-bool is_spt_file(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) return false;
-    return f.read(6) == QByteArray("SPTREE");
-}
+bool is_spt_file(const QString& path) { return spt::is_spt_file(QFile::encodeName(path).toStdString()); }
 
 LoadResult load_document(const QString& path, const QString& mesh_path, const std::atomic<bool>* cancel,
                          const std::function<void(const std::string&)>& on_stage) {

@@ -9,7 +9,7 @@
 namespace spt {
 namespace {
 
-const QueryLevel kLevels[] = {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact};
+using hard::kLevels;
 
 // A hollow shell: a box with a box-shaped cavity (the inner surface faces into the cavity).
 TriangleMesh hollow_box(double outer, double inner) {

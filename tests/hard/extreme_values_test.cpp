@@ -15,7 +15,7 @@ namespace spt {
 namespace {
 
 constexpr double kMax = std::numeric_limits<double>::max();
-const QueryLevel kLevels[] = {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact};
+using hard::kLevels;
 const QueryMode kModes[] = {QueryMode::Any, QueryMode::All, QueryMode::Deepest};
 
 const hard::Object& torus() {

@@ -11,6 +11,9 @@
 
 namespace spt::hard {
 
+/// Every query level, coarsest first.
+inline constexpr QueryLevel kLevels[] = {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact};
+
 /// A mesh, its document (default conversion) and its model with the exact level.
 struct Object {
     TriangleMesh mesh;

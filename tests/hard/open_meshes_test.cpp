@@ -11,13 +11,13 @@ namespace {
 
 using V = Eigen::Vector3d;
 
-struct Subject {
+struct OpenSubject {
     const char* name;
     TriangleMesh mesh;
     bool crossing_sheets; // against itself, single sheets cross each other along lines
 };
 
-std::vector<Subject> open_meshes() {
+std::vector<OpenSubject> open_meshes() {
     return {{"open sheet", make_sheet(1.5, 6), true},
             {"open box", make_open_box({0.5, 0.5, 0.5}, 3), false},
             {"open tube (thin rod)", make_open_tube(0.03, 1.5, 12), false},
@@ -30,7 +30,7 @@ std::vector<Subject> open_meshes() {
 // at most the protrusion allowance, so the model is a shell within the allowance of the surface
 // on both sides, and holds no volume.
 TEST(OpenMeshes, EverySphereOfAnOpenPartIsCentredOnTheSurfaceWithinTheAllowance) {
-    for (const Subject& subject : open_meshes()) {
+    for (const OpenSubject& subject : open_meshes()) {
         for (uint8_t open : subject.mesh.on_open_part) ASSERT_EQ(open, 1) << subject.name;
         const auto o = hard::make_object(subject.mesh);
         const double cap = kDefaultProtrusion * subject.mesh.diagonal();
@@ -78,14 +78,14 @@ double random_pose_agreement(const hard::Object& a, const hard::Object& b, const
 
 TEST(OpenMeshes, DefaultSpheresAgreeWithExactAtRandomPosesAgainstAClosedBody) {
     const auto box = hard::make_object(make_box({0.4, 0.3, 0.2}, 3));
-    for (const Subject& subject : open_meshes()) {
+    for (const OpenSubject& subject : open_meshes()) {
         const auto o = hard::make_object(subject.mesh);
         EXPECT_GE(random_pose_agreement(*o, *box, subject.name, "a closed box"), 0.99) << subject.name;
     }
 }
 
 TEST(OpenMeshes, DefaultSpheresAgreeWithExactAtRandomPosesOfOpenShellsAgainstThemselves) {
-    for (const Subject& subject : open_meshes()) {
+    for (const OpenSubject& subject : open_meshes()) {
         if (subject.crossing_sheets) continue;
         const auto o = hard::make_object(subject.mesh);
         EXPECT_GE(random_pose_agreement(*o, *o, subject.name, "itself"), 0.99) << subject.name;
@@ -95,7 +95,7 @@ TEST(OpenMeshes, DefaultSpheresAgreeWithExactAtRandomPosesOfOpenShellsAgainstThe
 // Two open surfaces that cross share a point, which lies inside a sphere of each (two-sided
 // spheres hold every point of their faces), so those spheres overlap: no crossing is missed.
 TEST(OpenMeshes, OpenSurfacesThatCrossAlwaysCollideAtTheSphereLevel) {
-    for (const Subject& subject : open_meshes()) {
+    for (const OpenSubject& subject : open_meshes()) {
         if (!subject.crossing_sheets) continue;
         const auto o = hard::make_object(subject.mesh);
         int false_negatives = -1;
@@ -109,7 +109,7 @@ TEST(OpenMeshes, OpenSurfacesThatCrossAlwaysCollideAtTheSphereLevel) {
 // sphere level tests a two-sided sphere as its disc and, with the mesh, as the face the disc
 // lies on (docs/hard-cases.md): measured before that, sheet 99.5%, fan 98.25%, soup 88.5%.
 TEST(OpenMeshes, DefaultSpheresAgreeWithExactWhereOpenSheetsCrossEachOther) {
-    for (const Subject& subject : open_meshes()) {
+    for (const OpenSubject& subject : open_meshes()) {
         if (!subject.crossing_sheets) continue;
         const auto o = hard::make_object(subject.mesh);
         EXPECT_GE(random_pose_agreement(*o, *o, subject.name, "itself"), 0.99) << subject.name;

@@ -14,8 +14,8 @@ using hard::NearContact;
 // origin or near it and far out, the smallest as far out as the largest.
 const std::pair<double, double> kPlaces[] = {{1e-4, 0},   {1e-4, 1e6}, {1e-2, 1e3}, {1.0, 1e3},
                                              {1.0, 1e6},  {1e2, 0},    {1e2, 1e6},  {1e4, 1e3}, {1e4, 1e6}};
-const Eigen::Vector3d kAway = Eigen::Vector3d(-0.3, 0.8, 0.5).normalized();
-const QueryLevel kLevels[] = {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact};
+const Eigen::Vector3d kShiftDirection = Eigen::Vector3d(-0.3, 0.8, 0.5).normalized();
+using hard::kLevels;
 // Sample spacings and radius limits are stored in bfloat16 (the .spt format, 8-bit mantissa):
 // a radius rounds to a different fraction of itself at another scale, by up to 2^-8.
 const double kScaleRounding = 1.0 / 256;
@@ -27,12 +27,12 @@ double largest_radius(const CollisionModel& m) {
     return r;
 }
 
-struct Subject {
+struct UnitSubject {
     const char* name;
     TriangleMesh mesh; // at unit size (about 1 across), centred near the origin
 };
 
-std::vector<Subject> subjects() {
+std::vector<UnitSubject> unit_subjects() {
     return {{"bracket", scale_to_unit_cube(make_bracket())}, {"torus", make_torus(0.5, 0.18, 32, 16)}};
 }
 
@@ -45,7 +45,7 @@ std::string where(const char* name, double scale, double offset) {
 // Every level answers as at unit size for the same relative poses (distances scaled), and the
 // walk costs about the same: conversion, pruning margins and predicates are all relative.
 TEST(Scale, MeshesFromTenToTheMinusFourToTenToTheFourAnswerAsAtUnitSizeFarFromTheOrigin) {
-    for (const Subject& subject : subjects()) {
+    for (const UnitSubject& subject : unit_subjects()) {
         const auto unit = hard::make_object(subject.mesh);
         const double diag = subject.mesh.diagonal();
         const Eigen::Vector3d c0 = centre_of(subject.mesh);
@@ -71,7 +71,7 @@ TEST(Scale, MeshesFromTenToTheMinusFourToTenToTheFourAnswerAsAtUnitSizeFarFromTh
                 }
         }
         for (const auto& [scale, offset] : kPlaces) {
-            const Eigen::Vector3d shift = offset * kAway;
+            const Eigen::Vector3d shift = offset * kShiftDirection;
             const auto o = hard::make_object(hard::transformed(subject.mesh, scale, shift));
             const std::string at = where(subject.name, scale, offset);
             EXPECT_NEAR(o->mesh.diagonal(), scale * diag, 1e-6 * scale * diag) << at;
@@ -108,7 +108,7 @@ TEST(Scale, MeshesFromTenToTheMinusFourToTenToTheFourAnswerAsAtUnitSizeFarFromTh
 // of impact scale with the mesh, for meshes converted far out and the pair placed far out in
 // the world (the world-pose API composes in double).
 TEST(Scale, DepthBacktrackAndFirstContactScaleWithTheMeshFarFromTheOrigin) {
-    const Subject subject = subjects()[0];
+    const UnitSubject subject = unit_subjects()[0];
     const auto unit = hard::make_object(subject.mesh);
     const double diag = subject.mesh.diagonal();
     const Eigen::Vector3d c0 = centre_of(subject.mesh);
@@ -142,13 +142,13 @@ TEST(Scale, DepthBacktrackAndFirstContactScaleWithTheMeshFarFromTheOrigin) {
     const double radius_rounding = 2 * kScaleRounding * largest_radius(unit->model) + 1e-5 * diag;
     for (const auto& [scale, offset] : kPlaces) {
         if (offset == 0) continue;
-        const Eigen::Vector3d shift = offset * kAway;
+        const Eigen::Vector3d shift = offset * kShiftDirection;
         const auto o = hard::make_object(hard::transformed(subject.mesh, scale, shift));
         const std::string at = where(subject.name, scale, offset);
         const Eigen::Vector3d cs = scale * c0 + shift;
         const double sd = scale * diag;
         // Placed in the world as far out again, turned, with the world-pose API.
-        const Pose place = Pose::from(-2 * shift, Eigen::Quaterniond(Eigen::AngleAxisd(1.1, kAway.unitOrthogonal())));
+        const Pose place = Pose::from(-2 * shift, Eigen::Quaterniond(Eigen::AngleAxisd(1.1, kShiftDirection.unitOrthogonal())));
         for (size_t i = 0; i < contacts.size(); ++i) {
             const NearContact& c = contacts[i];
             const Pose p = hard::pose_at(c, scale * (c.contact - in * diag), cs);

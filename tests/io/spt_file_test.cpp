@@ -117,6 +117,22 @@ TEST(SptFile, SaveIsAtomicAndLoadReadsItBack) {
         EXPECT_EQ(e.path().filename(), "a.spt") << "temporary file left behind";
 }
 
+TEST(SptFile, IsSptFileTellsByTheFirstBytesAndNeverThrows) {
+    TempDir dir("magic");
+    save_spt(small_document(), dir.file("a.spt"));
+    EXPECT_TRUE(is_spt_file(dir.file("a.spt")));
+    std::ofstream(dir.file("mesh.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_FALSE(is_spt_file(dir.file("mesh.obj")));
+    std::ofstream(dir.file("short")) << "SPT";
+    EXPECT_FALSE(is_spt_file(dir.file("short")));
+    // Damaged after the name: still an .spt file, for load_spt to name the damage.
+    std::ofstream(dir.file("damaged.spt")) << "SPTREE??";
+    EXPECT_TRUE(is_spt_file(dir.file("damaged.spt")));
+    EXPECT_THROW(load_spt(dir.file("damaged.spt")), Error);
+    EXPECT_FALSE(is_spt_file(dir.file("missing.spt")));
+    EXPECT_FALSE(is_spt_file(dir.path()));
+}
+
 TEST(SptFile, FailedSaveLeavesTheOldFileIntact) {
     TempDir dir("atomic");
     const SptDocument doc = small_document();

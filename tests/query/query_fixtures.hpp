@@ -31,6 +31,12 @@ inline std::unique_ptr<Object> make_object(TriangleMesh mesh, const ConvertOptio
     return o;
 }
 
+/// The torus most query tests pose against itself (ring 1, tube 0.35, 20 x 10), made once.
+inline const Object& torus() {
+    static const auto o = make_object(make_torus(1.0, 0.35, 20, 10));
+    return *o;
+}
+
 inline Eigen::Quaterniond random_rotation(std::mt19937& rng) {
     std::normal_distribution<double> n;
     Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));

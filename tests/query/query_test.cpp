@@ -16,10 +16,7 @@ namespace {
 using test::make_object;
 using test::random_pose;
 
-const test::Object& torus() {
-    static auto o = make_object(make_torus(1.0, 0.35, 20, 10));
-    return *o;
-}
+using test::torus;
 const test::Object& box() {
     static auto o = make_object(make_box({0.8, 0.5, 0.3}, 3));
     return *o;

@@ -7,10 +7,7 @@
 namespace spt {
 namespace {
 
-const test::Object& torus() {
-    static auto o = test::make_object(make_torus(1.0, 0.35, 20, 10));
-    return *o;
-}
+using test::torus;
 
 Pose moved(const Pose& p, const Eigen::Vector3d& by) { return Pose::from(p.translation + by, p.rotation); }
 

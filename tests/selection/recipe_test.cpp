@@ -13,7 +13,7 @@ using namespace spt;
 namespace {
 
 // Orthographic view down -Z: object x, y in [-2, 2] fill a 400x400 framebuffer, window x = (x + 2) * 100.
-ViewProjection front_view() {
+ViewProjection wide_front_view() {
     ViewProjection v;
     v.view(2, 3) = -10;
     v.projection = Eigen::Matrix4f::Identity();
@@ -25,7 +25,7 @@ ViewProjection front_view() {
 
 // A stroke selecting object x in [x0, x1] (all y).
 RecipeStroke band(float x0, float x1, SelectionMode mode = SelectionMode::Replace) {
-    return {front_view(), {(x0 + 2) * 100, 0, (x1 + 2) * 100, 400}, mode, false};
+    return {wide_front_view(), {(x0 + 2) * 100, 0, (x1 + 2) * 100, 400}, mode, false};
 }
 
 struct Authored {

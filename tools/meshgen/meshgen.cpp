@@ -10,8 +10,6 @@
 namespace spt::meshgen {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 std::FILE* open_or_throw(const std::string& path, const char* mode) {
     std::FILE* f = std::fopen(path.c_str(), mode);
     if (!f) throw Error(ErrorKind::CannotWrite, path + ": cannot open for writing");

@@ -44,6 +44,8 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc);
 SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& path = "");
 /// Writes atomically (temporary file, then rename). Throws Error(CannotWrite).
 void save_spt(const SptDocument& doc, const std::string& path);
+/// True when the file at `path` starts as an .spt file does; false for any other file or none.
+bool is_spt_file(const std::string& path);
 /// Reads and validates a file. Throws Error(BadInput) naming the file and byte offset.
 SptDocument load_spt(const std::string& path);
 

@@ -5,8 +5,6 @@
 #include "sampling/surface_samples.hpp"
 #include <chrono>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 
 namespace spt {
 namespace {
@@ -159,9 +157,7 @@ SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& option
 }
 
 SptDocument load_or_convert(const std::string& path, const ConvertOptions& options) {
-    char magic[6] = {};
-    std::ifstream(path, std::ios::binary).read(magic, 6);
-    if (std::memcmp(magic, "SPTREE", 6) == 0) return load_spt(path);
+    if (is_spt_file(path)) return load_spt(path);
     const ImportedMesh m = import_mesh(path);
     return make_document(m.mesh, options);
 }

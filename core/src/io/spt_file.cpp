@@ -276,6 +276,14 @@ void save_spt(const SptDocument& doc, const std::string& path) {
     }
 }
 
+bool is_spt_file(const std::string& path) {
+    // The first six bytes only: a file that starts like one but is damaged after them is an
+    // .spt file that load_spt then names the damage of, not a mesh for the importer.
+    char magic[6] = {};
+    std::ifstream(path, std::ios::binary).read(magic, sizeof magic);
+    return std::memcmp(magic, kMagic, sizeof magic) == 0;
+}
+
 SptDocument load_spt(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw_bad_input(path, "no such file");

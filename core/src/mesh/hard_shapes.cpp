@@ -7,8 +7,6 @@
 namespace spt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Raw triangles gathered from several parts, prepared (welded, wound) at the end.
 struct Parts {
     std::vector<Eigen::Vector3d> p;

@@ -5,8 +5,6 @@
 namespace spt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 TriangleMesh finish(const char* name, std::vector<Eigen::Vector3d> p, std::vector<Triangle> t) {
     return prepare_mesh(name, std::move(p), std::move(t)).mesh;
 }

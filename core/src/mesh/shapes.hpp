@@ -5,6 +5,9 @@
 
 namespace spt {
 
+/// π, for the angles of the shapes made in code.
+inline constexpr double kPi = 3.14159265358979323846;
+
 /// Torus around the z axis: ring radius `ring`, tube radius `tube`, 2*nu*nv triangles.
 TriangleMesh make_torus(double ring, double tube, int nu, int nv);
 /// Axis-aligned box of the given half extents, each face an n x n grid (12 n^2 triangles).

@@ -4,9 +4,7 @@
 #include "spt/error.hpp"
 #include "spt/scene.hpp"
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -35,12 +33,6 @@ struct Cached {
 
 std::mutex cache_mutex;
 std::map<CacheKey, Cached> cache;
-
-bool is_spt_file(const std::string& path) {
-    char magic[6] = {};
-    std::ifstream(path, std::ios::binary).read(magic, 6);
-    return std::memcmp(magic, "SPTREE", 6) == 0;
-}
 
 // A sphere around the model's root bounding-sphere centre holding every sampling sphere
 // and every mesh vertex, so it bounds whatever any query level can report.
