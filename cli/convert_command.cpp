@@ -28,7 +28,7 @@ struct ConvertArgs {
     std::string output, out_dir, bounds = "tight", strategy = "volume", tree_name = "default", recipe;
     uint32_t leaf_size = 8;
     double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
-    int jobs = 0;
+    int jobs = 0, threads = 0; // threads: per file; 0 until run_convert settles it
     bool force = false, quiet = false, append = false, vertices_only = false;
 };
 
@@ -77,6 +77,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     opt.build.radius.fixed = float(a.radius);
     opt.build.radius.scale = float(a.radius_scale);
     if (a.tolerance > 0) opt.tolerance = a.tolerance;
+    opt.threads = a.threads;
     opt.auto_tolerance = !a.vertices_only;
     ConvertStats st;
     SptDocument doc;
@@ -179,7 +180,11 @@ int run_convert(const ConvertArgs& a) {
             throw Error(ErrorKind::Usage, in + " and " + claimed[key] + " would both be written to " + outputs.back());
         claimed[key] = in;
     }
-    const int jobs = a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = a.jobs > 0 ? a.jobs : cores;
+    // A file converts on the cores the other files at once leave it (one file: all of them).
+    ConvertArgs args = a;
+    if (args.threads == 0) args.threads = std::max(1, cores / int(std::min<size_t>(size_t(jobs), a.inputs.size())));
     const bool tty = ::isatty(2) && !a.quiet;
     const auto t0 = std::chrono::steady_clock::now();
     size_t converted = 0, failed = 0;
@@ -199,7 +204,7 @@ int run_convert(const ConvertArgs& a) {
             return 3;
         }
         try {
-            return convert_one(a.inputs[i], out, a);
+            return convert_one(a.inputs[i], out, args);
         } catch (const Error& e) {
             std::cerr << e.what() << "\n";
             return int(e.kind());
@@ -256,6 +261,10 @@ Action add_convert_command(CLI::App& app) {
                   "its trees replace the automatic one")
         ->check(CLI::ExistingFile);
     c->add_option("-j,--jobs", a->jobs, "Files converted at once (default: all cores)")->check(CLI::Range(1, 1024));
+    c->add_option("--threads", a->threads,
+                  "Threads sampling each file (default: the cores the --jobs at once leave it; the output is the "
+                  "same for any count)")
+        ->check(CLI::Range(1, 1024));
     c->add_option("--timeout", a->timeout, "Give up on one file after this many seconds (0: never)")
         ->check(finite_in(0, std::numeric_limits<double>::max(), "of seconds, 0 or more"));
     c->add_flag("-f,--force", a->force, "Overwrite existing outputs (with --append: replace a same-named tree)");

@@ -47,6 +47,8 @@ struct SampleSet {
     Eigen::Vector3f sphere_centre(size_t i, float r) const {
         return is_two_sided(i) ? points[i] : Eigen::Vector3f(points[i] - r * normals[i]);
     }
+    /// Appends every sample of `other`, whose origin must be this set's.
+    void append(const SampleSet& other);
     /// Appends one sample at local point p; normal, spacing and max_radius are snapped to the
     /// stored precision.
     void add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t source, float spacing,

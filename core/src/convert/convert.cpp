@@ -1,6 +1,7 @@
 // Mesh to document: vertex samples, tolerance-driven face samples, one built tree.
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
+#include "base/parallel.hpp"
 #include "sampling/radius_class.hpp"
 #include "sampling/surface_samples.hpp"
 #include <chrono>
@@ -87,7 +88,8 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     stage(options, mesh, "sampling vertices");
     auto t0 = Clock::now();
     const RadiusLimiter limiter(mesh, protrusion, two_sided_radius);
-    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius);
+    const int threads = options.threads > 0 ? options.threads : detail::machine_threads();
+    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius, threads);
     if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
     st.vertex_samples = vertex_samples.size();
     const RadiusRule& rule = options.build.radius;
@@ -124,10 +126,8 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     const double eps = *options.tolerance / 2;
     SampleSet s = vertex_samples;
     stage(options, mesh, "sampling faces");
-    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-        if ((f & 4095u) == 4095u) stage(options, mesh, nullptr);
-        add_face_samples(s, limiter, f, eps, rule, 1.0f / kRadiusClassRatio);
-    }
+    s.append(face_samples(limiter, s.origin, eps, rule, 1.0f / kRadiusClassRatio, threads, options.cancel));
+    stage(options, mesh, nullptr); // a cancel during face sampling left it unfinished
     st.sample_seconds = seconds_since(t0);
     stage(options, mesh, "building the tree");
     t0 = Clock::now();

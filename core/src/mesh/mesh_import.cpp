@@ -60,6 +60,10 @@ ImportedMesh import_mesh(const std::string& path, const ImportOptions& options) 
     }
     std::vector<Eigen::Vector3d> positions;
     std::vector<Triangle> triangles;
+    size_t vertex_count = 0, face_count = 0; // every mesh once, as if each node held it once
+    for (unsigned i = 0; i < scene->mNumMeshes; ++i)
+        vertex_count += scene->mMeshes[i]->mNumVertices, face_count += scene->mMeshes[i]->mNumFaces;
+    positions.reserve(vertex_count), triangles.reserve(face_count);
     size_t skipped = 0;
     gather(scene, scene->mRootNode, aiMatrix4x4(), positions, triangles, skipped, 0);
     if (triangles.empty()) throw_bad_input(path, "contains no triangles");

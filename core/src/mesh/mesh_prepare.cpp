@@ -252,12 +252,14 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     // faces is used by exactly two of them: a closed body that a flap or fin touches along a
     // non-manifold edge stays a solid, and only the flap is open.
     DisjointFaces parts(m.triangles.size());
+    std::vector<size_t> unpaired; // where the runs of edges used other than twice start
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
         while (j < edges.size() && edges[j].key == edges[i].key) ++j;
         const size_t uses = j - i;
         if (uses == 1) ++r.boundary_edges;
         if (uses >= 3) ++r.nonmanifold_edges;
+        if (uses != 2) unpaired.push_back(i);
         for (size_t k = i + 1; k < j; ++k) components.join(edges[k].face, edges[i].face);
         if (uses == 2) {
             parts.join(edges[i].face, edges[i + 1].face);
@@ -269,17 +271,18 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
     r.components = components.count();
     r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
+    // A part using an edge other than twice is open. An edge used twice joined its two faces
+    // into one part, which uses it twice: only the other runs can open a part.
     std::vector<uint8_t> part_open(m.triangles.size(), 0); // by part root
-    for (size_t i = 0; i < edges.size();) {
+    for (const size_t i : unpaired) {
         size_t j = i;
         while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-        for (size_t k = i; k < j; ++k) { // a part using this edge other than twice is open
+        for (size_t k = i; k < j; ++k) {
             const uint32_t part = parts.find(edges[k].face);
             size_t own = 0;
             for (size_t l = i; l < j; ++l) own += parts.find(edges[l].face) == part;
             if (own != 2) part_open[part] = 1;
         }
-        i = j;
     }
     m.on_open_part.assign(m.triangles.size(), 0);
     for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[parts.find(f)];

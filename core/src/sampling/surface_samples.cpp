@@ -1,6 +1,7 @@
 // Vertex samples and tolerance-driven face samples of a mesh.
 #include "sampling/surface_samples.hpp"
 #include "sampling/encoding.hpp"
+#include "base/parallel.hpp"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,7 +30,38 @@ float search_radius(const RadiusRule& rule, float spacing, bool two_sided) {
     return two_sided ? want : kRadiusSearchHeadroom * want;
 }
 
-SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule) {
+namespace {
+
+// Vertices or faces are sampled in runs of this many, each run into a set of its own on one
+// thread, and the sets joined in run order: the samples do not depend on the thread count.
+constexpr size_t kSampleRun = 8192;
+
+// fill(first, last, out) samples items [first, last) into `out` (its origin set); on `threads`.
+template <class Fill>
+SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, Fill&& fill) {
+    const size_t runs = (n + kSampleRun - 1) / kSampleRun;
+    std::vector<SampleSet> parts(runs);
+    detail::parallel_for(runs, threads, [&](size_t k, int) {
+        parts[k].origin = origin;
+        fill(k * kSampleRun, std::min(n, (k + 1) * kSampleRun), parts[k]);
+    });
+    SampleSet s;
+    s.origin = origin;
+    size_t total = 0;
+    for (const SampleSet& part : parts) total += part.size();
+    for (auto* v : {&s.spacing, &s.max_radius}) v->reserve(total);
+    s.points.reserve(total), s.normals.reserve(total), s.sources.reserve(total);
+    for (SampleSet& part : parts) {
+        s.append(part);
+        part = SampleSet{}; // the copy is made: free the run's memory now
+    }
+    return s;
+}
+
+} // namespace
+
+SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule,
+                          int threads) {
     const size_t n = mesh.positions.size();
     std::vector<double> edge_sum(n, 0);
     std::vector<uint32_t> edge_count(n, 0);
@@ -41,22 +73,19 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
             edge_sum[a] += len, edge_sum[b] += len;
             ++edge_count[a], ++edge_count[b];
         }
-    SampleSet s;
-    s.origin = local_origin(mesh);
-    for (auto* v : {&s.spacing, &s.max_radius}) v->reserve(n);
-    s.points.reserve(n), s.normals.reserve(n), s.sources.reserve(n);
-    for (uint32_t v = 0; v < n; ++v) {
-        if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
-        const float spacing = float(edge_sum[v] / edge_count[v]);
-        // The radius is limited at the exact vertex: the stored float point may lie a rounding
-        // off the surface, and a segment from there to the centre can graze the faces at the vertex.
-        const Eigen::Vector3d& p = mesh.positions[v];
-        const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
-        const bool two_sided = limiter.on_open_part(v);
-        s.add((p - s.origin).cast<float>(), nrm, v | (two_sided ? kTwoSidedBit : 0), spacing,
-              limiter.limit(p, nrm, search_radius(rule, spacing, two_sided), two_sided, v));
-    }
-    return s;
+    return sample_in_runs(n, local_origin(mesh), threads, [&](size_t first, size_t last, SampleSet& s) {
+        for (auto v = uint32_t(first); v < last; ++v) {
+            if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
+            const float spacing = float(edge_sum[v] / edge_count[v]);
+            // The radius is limited at the exact vertex: the stored float point may lie a rounding
+            // off the surface, and a segment from there to the centre can graze the faces at the vertex.
+            const Eigen::Vector3d& p = mesh.positions[v];
+            const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
+            const bool two_sided = limiter.on_open_part(v);
+            s.add((p - s.origin).cast<float>(), nrm, v | (two_sided ? kTwoSidedBit : 0), spacing,
+                  limiter.limit(p, nrm, search_radius(rule, spacing, two_sided), two_sided, v));
+        }
+    });
 }
 
 double max_face_sample_gap(double radius, double eps) {
@@ -160,6 +189,15 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
                    spacing, rule, radius_factor, eps, {}};
     const int64_t g = FaceSampler::kGrid;
     fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
+}
+
+SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
+                       float radius_factor, int threads, const std::atomic<bool>* cancel) {
+    const size_t faces = limiter.mesh().triangles.size();
+    return sample_in_runs(faces, origin, threads, [&](size_t first, size_t last, SampleSet& s) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return;
+        for (auto f = uint32_t(first); f < last; ++f) add_face_samples(s, limiter, f, eps, rule, radius_factor);
+    });
 }
 
 } // namespace spt

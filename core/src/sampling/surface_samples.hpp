@@ -2,6 +2,7 @@
 // Vertex samples and tolerance-driven face samples of a mesh.
 #include "spt/samples.hpp"
 #include "sampling/radius_limiter.hpp"
+#include <atomic>
 
 namespace spt {
 
@@ -20,7 +21,9 @@ float search_radius(const RadiusRule& rule, float spacing, bool two_sided);
 
 /// One sample per vertex with a valid normal, relative to local_origin(mesh); spacing = mean length of its edges,
 /// max_radius from `limiter` (search_radius); vertices of open parts are two-sided.
-SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {});
+/// On up to `threads` threads, with the same samples as on one.
+SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {},
+                          int threads = 1);
 
 /// Two-sided spheres (open parts) must hold every point of their face, not merely come within
 /// a tolerance of it, so that two open surfaces that cross always have overlapping spheres:
@@ -36,6 +39,12 @@ constexpr double kTwoSidedCoverage = 0.9;
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
                       const RadiusRule& rule, float radius_factor);
 
+/// The face samples of every triangle of the limiter's mesh, in triangle order, relative to
+/// `origin` (add_face_samples of each), on up to `threads` threads with the same samples as on
+/// one. Once `cancel` (may be null) is set, the faces not yet begun are skipped: the caller
+/// checks it after the call and discards the set.
+SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
+                       float radius_factor, int threads, const std::atomic<bool>* cancel = nullptr);
 /// Largest in-plane distance between face samples that keeps the uncovered depth
 /// under spheres of radius r within eps: sqrt(h^2 + r^2) - r <= eps.
 double max_face_sample_gap(double radius, double eps);

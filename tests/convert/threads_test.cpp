@@ -1,0 +1,63 @@
+// A conversion samples on several threads (ConvertOptions::threads): the file must not show it.
+#include "meshgen.hpp"
+#include "mesh/hard_shapes.hpp"
+#include "sampling/surface_samples.hpp"
+#include "spt/convert.hpp"
+#include "test_support.hpp"
+#include <gtest/gtest.h>
+
+using namespace spt;
+
+namespace {
+
+std::vector<uint8_t> converted(const TriangleMesh& mesh, int threads, std::optional<double> tolerance = {}) {
+    ConvertOptions o;
+    o.threads = threads;
+    o.tolerance = tolerance;
+    return encode_spt(make_document(mesh, o));
+}
+
+void expect_same_bytes_on_every_thread_count(const TriangleMesh& mesh, std::optional<double> tolerance = {}) {
+    const std::vector<uint8_t> one = converted(mesh, 1, tolerance);
+    for (int threads : {2, 5}) EXPECT_EQ(converted(mesh, threads, tolerance), one) << mesh.name << ", " << threads;
+}
+
+// More vertices than one run of samples (8,192), so that several threads each take some.
+TEST(ConvertThreads, ManyRunsOfVertexSamplesGiveTheSameFileOnEveryThreadCount) {
+    const TriangleMesh torus = meshgen::prepare(meshgen::torus(1, 0.35, 160, 80), "torus").mesh;
+    ASSERT_GT(torus.positions.size(), 8192u * 1.5);
+    expect_same_bytes_on_every_thread_count(torus);
+}
+
+// More faces than one run, each sampled to a tolerance: face samples in many runs.
+TEST(ConvertThreads, ManyRunsOfFaceSamplesGiveTheSameFileOnEveryThreadCount) {
+    const TriangleMesh torus = meshgen::prepare(meshgen::torus(1, 0.35, 120, 80), "torus").mesh;
+    ASSERT_GT(torus.triangles.size(), 8192u * 2);
+    expect_same_bytes_on_every_thread_count(torus, 0.005 * torus.diagonal());
+}
+
+// The automatic tolerance (large flat faces) and the two-sided samples of open parts.
+TEST(ConvertThreads, AutomaticToleranceAndOpenPartsGiveTheSameFileOnEveryThreadCount) {
+    expect_same_bytes_on_every_thread_count(import_mesh(test::project_meshes() + "/cad_part.stl").mesh);
+    TriangleMesh box = make_open_box(Eigen::Vector3d(1, 0.5, 0.7), 12);
+    box.name = "open box";
+    expect_same_bytes_on_every_thread_count(box);
+}
+
+TEST(ConvertThreads, FaceSamplesOfEveryFaceComeInFaceOrderWhateverTheThreads) {
+    const TriangleMesh mesh = meshgen::prepare(meshgen::torus(1, 0.35, 100, 50), "torus").mesh;
+    const RadiusLimiter limiter(mesh, 0.0025 * mesh.diagonal());
+    const Eigen::Vector3d origin = local_origin(mesh);
+    SampleSet one_by_one;
+    one_by_one.origin = origin;
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+        add_face_samples(one_by_one, limiter, f, 0.001 * mesh.diagonal(), {}, 0.5f);
+    for (int threads : {1, 2, 5}) {
+        const SampleSet s = face_samples(limiter, origin, 0.001 * mesh.diagonal(), {}, 0.5f, threads);
+        EXPECT_EQ(s.sources, one_by_one.sources) << threads;
+        EXPECT_EQ(s.points, one_by_one.points) << threads;
+        EXPECT_EQ(s.max_radius, one_by_one.max_radius) << threads;
+    }
+}
+
+} // namespace
