@@ -80,6 +80,13 @@ std::vector<HalfEdge> collect_edges(const std::vector<Triangle>& tris, size_t ve
     return edges;
 }
 
+// End of the run of half-edges that share edges[i]'s key (edges sorted by key).
+size_t run_end(const std::vector<HalfEdge>& edges, size_t i) {
+    size_t j = i;
+    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+    return j;
+}
+
 double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) {
     // Relative to the first vertex, so far-from-origin parts keep precision.
     const Eigen::Vector3d o = m.positions[m.triangles[faces[0]][0]];
@@ -127,10 +134,12 @@ void compute_normals(TriangleMesh& m, ImportReport& report, double area_eps, con
         const double len = fn.norm();
         if (!(len > area_eps)) continue; // degenerate: no direction to contribute
         const Eigen::Vector3d unit = fn / len;
-        const Eigen::Vector3d* p[3] = {&p0, &p1, &p2};
+        // Edge k runs from corner k to corner k + 1; corner k's other edge is edge k + 2 reversed
+        // (a - b is exactly -(b - a), and so are its length and direction).
+        const Eigen::Vector3d edge[3] = {(p1 - p0).normalized(), (p2 - p1).normalized(), (p0 - p2).normalized()};
         for (int k = 0; k < 3; ++k) {
-            const Eigen::Vector3d e1 = (*p[(k + 1) % 3] - *p[k]).normalized();
-            const Eigen::Vector3d e2 = (*p[(k + 2) % 3] - *p[k]).normalized();
+            const Eigen::Vector3d e1 = edge[k];
+            const Eigen::Vector3d e2 = -edge[(k + 2) % 3];
             const double angle = std::acos(std::clamp(e1.dot(e2), -1.0, 1.0));
             m.normals[t[k]] += angle * unit;
         }
@@ -238,45 +247,36 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
 
     // Topology from sorted half-edges.
     const auto edges = collect_edges(m.triangles, m.positions.size());
-    // Per face, its neighbours across manifold edges (face, same_direction): at most one an edge.
-    struct Neighbours {
-        std::array<std::pair<uint32_t, bool>, 3> face;
-        uint8_t count = 0;
-        void push_back(std::pair<uint32_t, bool> g) { face[count++] = g; }
-        const std::pair<uint32_t, bool>* begin() const { return face.data(); }
-        const std::pair<uint32_t, bool>* end() const { return face.data() + count; }
-    };
-    std::vector<Neighbours> manifold_nbrs(m.triangles.size());
-    DisjointFaces components(m.triangles.size()); // joined across every shared edge
     // Parts: faces connected across manifold edges only. A part is closed when each edge of its
     // faces is used by exactly two of them: a closed body that a flap or fin touches along a
     // non-manifold edge stays a solid, and only the flap is open.
     DisjointFaces parts(m.triangles.size());
     std::vector<size_t> unpaired; // where the runs of edges used other than twice start
+    size_t inconsistent = 0;      // manifold edges whose two faces walk it the same way
     for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        const size_t j = run_end(edges, i);
         const size_t uses = j - i;
         if (uses == 1) ++r.boundary_edges;
         if (uses >= 3) ++r.nonmanifold_edges;
         if (uses != 2) unpaired.push_back(i);
-        for (size_t k = i + 1; k < j; ++k) components.join(edges[k].face, edges[i].face);
         if (uses == 2) {
             parts.join(edges[i].face, edges[i + 1].face);
-            const bool same = edges[i].forward == edges[i + 1].forward; // same direction: inconsistent
-            manifold_nbrs[edges[i].face].push_back({edges[i + 1].face, same});
-            manifold_nbrs[edges[i + 1].face].push_back({edges[i].face, same});
+            inconsistent += edges[i].forward == edges[i + 1].forward;
         }
         i = j;
     }
+    // Components join faces across every shared edge: the parts, and across non-manifold edges.
+    DisjointFaces components = parts;
+    for (const size_t i : unpaired)
+        for (size_t k = i + 1, j = run_end(edges, i); k < j; ++k)
+            components.join(edges[k].face, edges[i].face);
     r.components = components.count();
     r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
     // A part using an edge other than twice is open. An edge used twice joined its two faces
     // into one part, which uses it twice: only the other runs can open a part.
     std::vector<uint8_t> part_open(m.triangles.size(), 0); // by part root
     for (const size_t i : unpaired) {
-        size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        const size_t j = run_end(edges, i);
         for (size_t k = i; k < j; ++k) {
             const uint32_t part = parts.find(edges[k].face);
             size_t own = 0;
@@ -287,9 +287,28 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     m.on_open_part.assign(m.triangles.size(), 0);
     for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[parts.find(f)];
 
-    if (options.fix_orientation) {
+    if (options.fix_orientation && inconsistent > 0) {
+        // Per face, its neighbours across manifold edges (face, same_direction): at most one an edge.
+        struct Neighbours {
+            std::array<std::pair<uint32_t, bool>, 3> face;
+            uint8_t count = 0;
+            void push_back(std::pair<uint32_t, bool> g) { face[count++] = g; }
+            const std::pair<uint32_t, bool>* begin() const { return face.data(); }
+            const std::pair<uint32_t, bool>* end() const { return face.data() + count; }
+        };
+        std::vector<Neighbours> manifold_nbrs(m.triangles.size());
+        for (size_t i = 0; i < edges.size();) {
+            const size_t j = run_end(edges, i);
+            if (j - i == 2) {
+                const bool same = edges[i].forward == edges[i + 1].forward; // same direction: inconsistent
+                manifold_nbrs[edges[i].face].push_back({edges[i + 1].face, same});
+                manifold_nbrs[edges[i + 1].face].push_back({edges[i].face, same});
+            }
+            i = j;
+        }
         // Breadth-first over manifold edges: a neighbour walking the shared edge the same
         // way is wound the other way round. Keep whichever orientation flips fewer faces.
+        // (Without an inconsistent edge every face keeps its winding: no walk is needed.)
         std::vector<int8_t> flip(m.triangles.size(), -1);
         size_t non_orientable = 0;
         for (uint32_t seed = 0; seed < m.triangles.size(); ++seed) {
@@ -325,6 +344,8 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         if (non_orientable)
             r.warnings.push_back("surface is not orientable (" + std::to_string(non_orientable / 2) +
                                  " edges disagree after re-winding)");
+    }
+    if (options.fix_orientation) {
         // A closed part faces out of the solid: positive volume, unless it is the inner wall
         // of a hollow (inside an odd number of other closed parts), which faces the cavity.
         const std::vector<std::vector<uint32_t>> part_faces = parts.groups();
