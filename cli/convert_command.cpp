@@ -15,6 +15,7 @@
 #include <map>
 #include <sstream>
 #include <thread>
+#include <malloc.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -68,6 +69,12 @@ void replay_trees(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions
 // Converts one file; runs in a worker process. Prints one summary line and the report.
 int convert_one(const std::string& in, const std::string& out, const ConvertArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
+    // The worker converts one file and exits. By default glibc maps each large array afresh and
+    // unmaps it when freed, so every array costs a page fault a page; kept on the heap, a freed
+    // array's pages serve the next ones (at 1M vertices about 0.3 s less system time, for 20 MB
+    // more peak memory).
+    ::mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
     ImportedMesh m = import_mesh(in);
     ConvertOptions opt;
     opt.tree_name = a.tree_name;
