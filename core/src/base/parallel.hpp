@@ -3,12 +3,18 @@
 // per i so that the outcome does not depend on which worker ran which i.
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <system_error>
 #include <thread>
 #include <vector>
 
 namespace spt::detail {
 
+/// Runs f(i, worker) for every i in [0, n) on up to `threads` threads. An exception thrown by f
+/// on any thread (out of memory, a refused input) stops the items not yet begun and is thrown
+/// again on the calling thread once every worker has stopped, as on one thread (an exception
+/// leaving a std::thread would end the process).
 template <class F>
 void parallel_for(size_t n, int threads, F&& f) {
     if (threads <= 1 || n < 2) {
@@ -16,11 +22,20 @@ void parallel_for(size_t n, int threads, F&& f) {
         return;
     }
     std::atomic<size_t> next{0};
+    std::exception_ptr error;
+    std::mutex error_mutex;
     auto work = [&](int w) {
-        for (size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) f(i, w);
+        try {
+            for (size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) f(i, w);
+        } catch (...) {
+            next.store(n); // the others take nothing more
+            const std::lock_guard<std::mutex> lock(error_mutex);
+            if (!error) error = std::current_exception();
+        }
     };
-    std::vector<std::thread> pool;
     const int count = int(std::min<size_t>(size_t(threads), n));
+    std::vector<std::thread> pool;
+    pool.reserve(size_t(count)); // no allocation between starting a thread and joining it
     // A thread that cannot be started (a process limit) leaves its share to the others: the work
     // is taken item by item, so it all gets done, on this thread if need be.
     for (int w = 1; w < count; ++w) {
@@ -32,6 +47,7 @@ void parallel_for(size_t n, int threads, F&& f) {
     }
     work(0);
     for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
 }
 
 // A thread count that tests pin (PinnedThreads) to show that an answer does not depend on it; 0: none.
