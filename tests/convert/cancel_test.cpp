@@ -20,25 +20,28 @@ TEST(ConvertCancel, FlagSetBeforeTheCallStopsItBeforeAnyWork) {
     EXPECT_EQ(stages, 0);
 }
 
-TEST(ConvertCancel, FlagSetWhileSamplingFacesStopsItThere) {
+TEST(ConvertCancel, FlagSetWhileSamplingFacesStopsItThereOnOneThreadOrMore) {
     // A CAD part whose large faces make the automatic tolerance sample them.
     const TriangleMesh mesh = import_mesh(test::project_meshes() + "/cad_part.stl").mesh;
-    std::atomic<bool> cancel{false};
-    ConvertOptions o;
-    o.cancel = &cancel;
-    std::vector<std::string> seen;
-    o.on_stage = [&](const std::string& s) {
-        seen.push_back(s);
-        if (s == "sampling faces") cancel = true;
-    };
-    try {
-        make_document(mesh, o);
-        FAIL() << "the conversion ran to its end";
-    } catch (const Cancelled& e) {
-        EXPECT_NE(std::string(e.what()).find("cancelled"), std::string::npos) << e.what();
+    for (int threads : {1, 2}) {
+        std::atomic<bool> cancel{false};
+        ConvertOptions o;
+        o.cancel = &cancel;
+        o.threads = threads;
+        std::vector<std::string> seen;
+        o.on_stage = [&](const std::string& s) {
+            seen.push_back(s);
+            if (s == "sampling faces") cancel = true;
+        };
+        try {
+            make_document(mesh, o);
+            FAIL() << "the conversion ran to its end on " << threads << " thread(s)";
+        } catch (const Cancelled& e) {
+            EXPECT_NE(std::string(e.what()).find("cancelled"), std::string::npos) << e.what();
+        }
+        ASSERT_FALSE(seen.empty());
+        EXPECT_EQ(seen.back(), "sampling faces") << "no stage may start after the flag is set";
     }
-    ASSERT_FALSE(seen.empty());
-    EXPECT_EQ(seen.back(), "sampling faces") << "no stage may start after the flag is set";
 }
 
 TEST(ConvertCancel, StagesOfAnUncancelledConversionAreNamedInOrder) {

@@ -40,6 +40,12 @@ constexpr size_t kSampleRun = 8192;
 template <class Fill>
 SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, Fill&& fill) {
     const size_t runs = (n + kSampleRun - 1) / kSampleRun;
+    if (threads <= 1 || runs <= 1) { // the same samples, without copying them from the runs
+        SampleSet s;
+        s.origin = origin;
+        fill(0, n, s);
+        return s;
+    }
     std::vector<SampleSet> parts(runs);
     detail::parallel_for(runs, threads, [&](size_t k, int) {
         parts[k].origin = origin;
@@ -195,8 +201,10 @@ SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& orig
                        float radius_factor, int threads, const std::atomic<bool>* cancel) {
     const size_t faces = limiter.mesh().triangles.size();
     return sample_in_runs(faces, origin, threads, [&](size_t first, size_t last, SampleSet& s) {
-        if (cancel && cancel->load(std::memory_order_relaxed)) return;
-        for (auto f = uint32_t(first); f < last; ++f) add_face_samples(s, limiter, f, eps, rule, radius_factor);
+        for (auto f = uint32_t(first); f < last; ++f) {
+            if ((f & 4095u) == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
+            add_face_samples(s, limiter, f, eps, rule, radius_factor);
+        }
     });
 }
 

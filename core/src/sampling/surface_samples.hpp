@@ -41,8 +41,8 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
 
 /// The face samples of every triangle of the limiter's mesh, in triangle order, relative to
 /// `origin` (add_face_samples of each), on up to `threads` threads with the same samples as on
-/// one. Once `cancel` (may be null) is set, the faces not yet begun are skipped: the caller
-/// checks it after the call and discards the set.
+/// one. Once `cancel` (may be null) is set, the faces not yet begun are skipped (it is looked at
+/// every 4,096 faces): the caller checks it after the call and discards the set.
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
                        float radius_factor, int threads, const std::atomic<bool>* cancel = nullptr);
 /// Largest in-plane distance between face samples that keeps the uncovered depth
