@@ -30,7 +30,7 @@ struct ConvertArgs {
     uint32_t leaf_size = 8;
     double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
     int jobs = 0, threads = 0; // threads: per file; 0 until run_convert settles it
-    bool force = false, quiet = false, append = false, vertices_only = false;
+    bool force = false, quiet = false, append = false, vertices_only = false, times = false;
 };
 
 std::string fmt(double v, int prec = 2) {
@@ -76,6 +76,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     ::mallopt(M_MMAP_THRESHOLD, 1 << 30);
     ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
     ImportedMesh m = import_mesh(in);
+    const double import_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ConvertOptions opt;
     opt.tree_name = a.tree_name;
     opt.build.leaf_size = a.leaf_size;
@@ -107,7 +108,9 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
         doc = make_document(m.mesh, opt, &st);
     }
     if (!a.recipe.empty()) replay_trees(doc, m.mesh, opt.build, a.recipe, in);
+    const auto t_save = std::chrono::steady_clock::now();
     save_spt(doc, out);
+    const double save_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_save).count();
     const SamplingTree& t = doc.trees.back();
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const auto& r = m.report;
@@ -120,6 +123,10 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
               << " duplicates); " << r.components << " component"
               << (r.components == 1 ? "" : "s") << ", " << (r.closed ? "closed" : "not closed") << "; "
               << r.boundary_edges << " boundary, " << r.nonmanifold_edges << " non-manifold edges\n";
+    if (a.times)
+        std::cerr << "  time: import " << fmt(import_secs) << " s, sampling " << fmt(st.sample_seconds) << " s, tree "
+                  << fmt(st.build_seconds) << " s, save " << fmt(save_secs) << " s (" << a.threads << " thread"
+                  << (a.threads > 1 ? "s" : "") << ")\n";
     for (const auto& f : r.fixes) std::cerr << "  fixed: " << f << "\n";
     for (const auto& w : r.warnings) std::cerr << "  warning: " << w << "\n";
     const double diag = m.mesh.diagonal();
@@ -278,6 +285,8 @@ Action add_convert_command(CLI::App& app) {
     c->add_flag("--append", a->append,
                 "Add a tree (--tree-name) over the samples of an existing OUT.spt made from the same mesh");
     c->add_flag("-q,--quiet", a->quiet, "Print only failures and the summary");
+    c->add_flag("--times", a->times,
+                "Print each file's stage times: import, sampling (with radius limiting), tree, save");
     return [a] { return run_convert(*a); };
 }
 

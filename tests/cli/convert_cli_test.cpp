@@ -91,6 +91,23 @@ TEST(ConvertCli, ParallelOutputIsByteIdenticalToSerial) {
             << e.path().filename();
 }
 
+TEST(ConvertCli, ThreadCountChangesNoByteAndTimesNameEveryStage) {
+    TempDir out("threads");
+    const std::string in = q(project_meshes() + "/cad_part.stl"); // vertex and face samples
+    const auto one = run_command(spt_binary() + " convert " + in + " --threads 1 --times -o " + q(out.file("1.spt")));
+    const auto three = run_command(spt_binary() + " convert " + in + " --threads 3 -o " + q(out.file("3.spt")));
+    ASSERT_EQ(one.exit_code, 0) << one.output;
+    ASSERT_EQ(three.exit_code, 0) << three.output;
+    EXPECT_EQ(read_bytes(out.file("1.spt")), read_bytes(out.file("3.spt")));
+    const size_t at = one.output.find("  time: import ");
+    ASSERT_NE(at, std::string::npos) << one.output;
+    const std::string line = one.output.substr(at, one.output.find('\n', at) - at);
+    for (const char* stage : {" s, sampling ", " s, tree ", " s, save ", " s (1 thread)"})
+        EXPECT_NE(line.find(stage), std::string::npos) << line;
+    EXPECT_EQ(three.output.find("time:"), std::string::npos) << "times only when asked for";
+    EXPECT_NE(run_command(spt_binary() + " convert " + in + " --threads 0 -o " + q(out.file("0.spt"))).exit_code, 0);
+}
+
 TEST(ConvertCli, OptionsReachTheFile) {
     TempDir out("options");
     const auto r = run_command(spt_binary() + " convert " + q(project_meshes() + "/cad_part.stl") + " -o " +
@@ -170,6 +187,7 @@ TEST(ConvertCli, UnwritableOutputExitsThree) {
 TEST(ConvertCli, HelpListsEveryOption) {
     const auto r = run_command(spt_binary() + " convert --help");
     EXPECT_EQ(r.exit_code, 0);
-    for (const char* opt : {"--out-dir", "--leaf-size", "--radius", "--tolerance", "--bounds", "--jobs", "--force"})
+    for (const char* opt :
+         {"--out-dir", "--leaf-size", "--radius", "--tolerance", "--bounds", "--jobs", "--threads", "--times", "--force"})
         EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
