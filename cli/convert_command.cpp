@@ -39,6 +39,10 @@ std::string fmt(double v, int prec = 2) {
     return s.str();
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
 // Peak resident memory of this process so far; a worker converts one file, so it is that file's.
 long peak_mib() {
     rusage u{};
@@ -76,7 +80,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     ::mallopt(M_MMAP_THRESHOLD, 1 << 30);
     ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
     ImportedMesh m = import_mesh(in);
-    const double import_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double import_secs = seconds_since(t0);
     ConvertOptions opt;
     opt.tree_name = a.tree_name;
     opt.build.leaf_size = a.leaf_size;
@@ -110,9 +114,9 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     if (!a.recipe.empty()) replay_trees(doc, m.mesh, opt.build, a.recipe, in);
     const auto t_save = std::chrono::steady_clock::now();
     save_spt(doc, out);
-    const double save_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_save).count();
+    const double save_secs = seconds_since(t_save);
     const SamplingTree& t = doc.trees.back();
-    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double secs = seconds_since(t0);
     const auto& r = m.report;
     std::cerr << in << " -> " << out << ": " << r.vertices << " vertices, " << r.faces << " faces; " << doc.samples.size()
               << " samples (" << st.vertex_samples << " vertex, " << st.face_samples << " face); tree '" << t.name()
@@ -240,7 +244,7 @@ int run_convert(const ConvertArgs& a) {
     if (tty) draw_progress(0, a.inputs.size(), 0);
     run_in_processes(a.inputs.size(), jobs, a.timeout, limit, work, done);
     if (tty) std::cerr << "\n";
-    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double secs = seconds_since(t0);
     std::cerr << "converted " << converted << ", failed " << failed << ", " << fmt(secs) << " s (" << jobs
               << " job" << (jobs > 1 ? "s" : "") << ")\n";
     return worst;

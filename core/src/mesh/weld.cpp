@@ -30,10 +30,7 @@ public:
     explicit CellTable(size_t expected) {
         size_t cap = 1024;
         while (cap < 2 * expected) cap *= 2;
-        slots_.assign(cap, Slot{});
-        mask_ = cap - 1;
-        filled_.assign(cap * kFilterBitsPerSlot / 64, 0);
-        filter_mask_ = cap * kFilterBitsPerSlot - 1;
+        allocate(cap);
     }
     /// Starts loading what head(c, h) reads first, and with `slot` what push(c, h) reads.
     void prefetch(uint64_t h, bool slot) const {
@@ -41,7 +38,7 @@ public:
         if (slot) __builtin_prefetch(&slots_[h & mask_]);
     }
     int32_t head(const Cell& c, uint64_t h, const std::vector<Cell>& cell_of) const {
-        if (!(filled_[(h & filter_mask_) >> 6] >> (h & 63) & 1)) return -1; // no cell with this hash
+        if (!(filled_[(h & filter_mask_) >> 6] >> (h & 63) & 1)) return -1; // no cell with this hash was marked
         const auto tag = uint32_t(h >> 32);
         for (size_t i = h & mask_;; i = (i + 1) & mask_) {
             const Slot s = slots_[i];
@@ -53,7 +50,7 @@ public:
     // cell_of[v] must already be c.
     int32_t push(const Cell& c, uint64_t h, int32_t v, const std::vector<Cell>& cell_of) {
         if (2 * (used_ + 1) > slots_.size()) rehash(slots_.size() * 2, cell_of);
-        filled_[(h & filter_mask_) >> 6] |= uint64_t(1) << (h & 63);
+        mark(h);
         const auto tag = uint32_t(h >> 32);
         for (size_t i = h & mask_;; i = (i + 1) & mask_) {
             if (slots_[i].head < 0) {
@@ -70,24 +67,28 @@ private:
         int32_t head = -1;
         uint32_t tag = 0; // the top 32 bits of the cell's hash
     };
-    void rehash(size_t cap, const std::vector<Cell>& cell_of) {
-        std::vector<Slot> old = std::move(slots_);
+    // Empty slots and filter for `cap` slots (a power of two).
+    void allocate(size_t cap) {
         slots_.assign(cap, Slot{});
         mask_ = cap - 1;
         filled_.assign(cap * kFilterBitsPerSlot / 64, 0);
         filter_mask_ = cap * kFilterBitsPerSlot - 1;
-        for (const Slot& s : old)
-            if (s.head >= 0) {
-                const uint64_t h = hash_cell(cell_of[size_t(s.head)]);
-                filled_[(h & filter_mask_) >> 6] |= uint64_t(1) << (h & 63);
-            }
-        for (const Slot& s : old)
-            if (s.head >= 0)
-                for (size_t i = hash_cell(cell_of[size_t(s.head)]) & mask_;; i = (i + 1) & mask_)
-                    if (slots_[i].head < 0) {
-                        slots_[i] = s;
-                        break;
-                    }
+    }
+    // Records in the filter that a cell with hash h is in the table.
+    void mark(uint64_t h) { filled_[(h & filter_mask_) >> 6] |= uint64_t(1) << (h & 63); }
+    void rehash(size_t cap, const std::vector<Cell>& cell_of) {
+        std::vector<Slot> old = std::move(slots_);
+        allocate(cap);
+        for (const Slot& s : old) {
+            if (s.head < 0) continue;
+            const uint64_t h = hash_cell(cell_of[size_t(s.head)]);
+            mark(h);
+            for (size_t i = h & mask_;; i = (i + 1) & mask_)
+                if (slots_[i].head < 0) {
+                    slots_[i] = s;
+                    break;
+                }
+        }
     }
     // One bit per hash value modulo four times the slots, set for every cell put in: a probe
     // of a cell that holds nothing (nearly every probe of a mesh without copies) reads this
