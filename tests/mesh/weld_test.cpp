@@ -92,3 +92,35 @@ TEST(Weld, PairsJustInsideTheToleranceMergeAndJustOutsideDoNot) {
         }
     }
 }
+
+TEST(Weld, ExactCopiesOfKeptVerticesMapToThemAmongNearCopiesAtCellBoundaries) {
+    // A soup as STL gives it (every corner repeated), mixed with near copies, on a lattice of
+    // the weld's cell size so that many points sit on cell boundaries. Checked by brute force:
+    // each point maps to a kept vertex within the tolerance, an exact copy of a kept vertex to
+    // that vertex, and kept vertices are more than the tolerance apart.
+    std::mt19937 rng(12);
+    std::uniform_int_distribution<int> lattice(0, 12);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double tolerance = 0.25;
+    for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(-2e5, 1e5, 3e4)}) {
+        std::vector<Eigen::Vector3d> p;
+        for (int i = 0; i < 3000; ++i) {
+            const Eigen::Vector3d base = offset + Eigen::Vector3d(lattice(rng), lattice(rng), lattice(rng));
+            const Eigen::Vector3d jitter(u(rng), u(rng), u(rng));
+            p.push_back(rng() % 2 ? base : base + 0.2 * tolerance * jitter);
+            if (rng() % 3 == 0) p.push_back(p[size_t(rng() % p.size())]); // an exact copy of any earlier point
+        }
+        std::vector<Eigen::Vector3d> welded;
+        const std::vector<uint32_t> map = detail::weld_positions(p, tolerance, welded);
+        for (size_t i = 0; i < welded.size(); ++i)
+            for (size_t j = i + 1; j < welded.size(); ++j)
+                ASSERT_GT((welded[i] - welded[j]).squaredNorm(), tolerance * tolerance) << i << ", " << j;
+        for (size_t i = 0; i < p.size(); ++i) {
+            ASSERT_LE((welded[map[i]] - p[i]).squaredNorm(), tolerance * tolerance) << "point " << i;
+            for (size_t k = 0; k < welded.size(); ++k)
+                if (welded[k] == p[i]) {
+                    ASSERT_EQ(map[i], k) << "point " << i;
+                }
+        }
+    }
+}

@@ -1,5 +1,6 @@
 // Welds vertices closer than a tolerance through a hash grid.
 #include "mesh/weld.hpp"
+#include "base/huge_pages.hpp"
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -77,7 +78,7 @@ private:
     // Records in the filter that a cell with hash h is in the table.
     void mark(uint64_t h) { filled_[(h & filter_mask_) >> 6] |= uint64_t(1) << (h & 63); }
     void rehash(size_t cap, const std::vector<Cell>& cell_of) {
-        std::vector<Slot> old = std::move(slots_);
+        auto old = std::move(slots_);
         allocate(cap);
         for (const Slot& s : old) {
             if (s.head < 0) continue;
@@ -94,8 +95,8 @@ private:
     // of a cell that holds nothing (nearly every probe of a mesh without copies) reads this
     // bitset, an eighth of the table's size and mostly in cache, instead of missing in the table.
     static constexpr size_t kFilterBitsPerSlot = 4;
-    std::vector<Slot> slots_;
-    std::vector<uint64_t> filled_;
+    std::vector<Slot, HugePageAllocator<Slot>> slots_;
+    std::vector<uint64_t, HugePageAllocator<uint64_t>> filled_;
     size_t mask_ = 0, used_ = 0, filter_mask_ = 0;
 };
 
@@ -151,6 +152,13 @@ std::vector<uint32_t> weld_positions(const std::vector<Eigen::Vector3d>& positio
         const CellSpan span(p, cell, tolerance);
         const int *lo = span.lo, *hi = span.hi;
         int64_t found = -1;
+        // An exact copy of a kept vertex (an STL corner, a vertex split at a seam) is matched
+        // in its own cell alone. That is the answer of the search below too: kept vertices lie
+        // farther than the tolerance apart, so no other lies within the tolerance of this one.
+        const Cell own = span.at(0, 0, 0);
+        const uint64_t own_hash = hash_cell(own);
+        for (int32_t w = table.head(own, own_hash, cell_of); w >= 0 && found < 0; w = next[size_t(w)])
+            if (welded[size_t(w)] == p) found = w;
         for (int dx = lo[0]; dx <= hi[0] && found < 0; ++dx)
             for (int dy = lo[1]; dy <= hi[1] && found < 0; ++dy)
                 for (int dz = lo[2]; dz <= hi[2] && found < 0; ++dz) {
@@ -164,9 +172,8 @@ std::vector<uint32_t> weld_positions(const std::vector<Eigen::Vector3d>& positio
         if (found < 0) {
             found = int64_t(welded.size());
             welded.push_back(p);
-            const Cell c = span.at(0, 0, 0);
-            cell_of.push_back(c);
-            next.push_back(table.push(c, hash_cell(c), int32_t(found), cell_of));
+            cell_of.push_back(own);
+            next.push_back(table.push(own, own_hash, int32_t(found), cell_of));
         }
         map[i] = uint32_t(found);
     }
