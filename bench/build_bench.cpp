@@ -1,5 +1,5 @@
-// Tree building after import, for meshes of 10k, 100k and 1M vertices (tori), one core.
-// Prints a Markdown table; docs/benchmarks.md quotes it with this command.
+// Tree building after import, for meshes of 10k, 100k and 1M vertices (tori), on one core or
+// `--threads N`. Prints a Markdown table; docs/benchmarks.md quotes it with this command.
 #include "meshgen.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
@@ -29,6 +29,8 @@ template <class F> double best_seconds(int reps, F&& f) {
 
 int main(int argc, char** argv) {
     std::vector<int> sides = {100, 316, 1000}; // nu = nv: 10k, ~100k, 1M vertices
+    int threads = 1; // sampling and building; `--threads N` last on the line
+    if (argc > 2 && std::strcmp(argv[argc - 2], "--threads") == 0) threads = std::max(1, std::atoi(argv[argc - 1])), argc -= 2;
     if (argc > 1 && std::strcmp(argv[1], "--quick") == 0) sides = {100, 316};
     if (argc > 2 && std::strcmp(argv[1], "--sample-only") == 0) {
         // One run of the sample stage on a torus of SIDE x SIDE vertices: a target for
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
         std::printf("sample, %zu vertices: %.3f s\n", m.mesh.positions.size(), t);
         return 0;
     }
+    std::printf("Sampling and building on %d thread%s.\n\n", threads, threads == 1 ? "" : "s");
     std::printf("| vertices | samples | strategy | sample (s) | build tree (s) | query layout (s) | "
                 "layout B/sample | .spt B/sample | depth | save: validate + encode (s) |\n");
     std::printf("|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -52,10 +55,11 @@ int main(int argc, char** argv) {
             spt::SampleSet samples;
             const double t_sample = best_seconds(3, [&] {
                 const spt::RadiusLimiter limiter(m.mesh, spt::kDefaultProtrusion * m.mesh.diagonal());
-                samples = spt::sample_vertices(m.mesh, limiter);
+                samples = spt::sample_vertices(m.mesh, limiter, {}, threads);
             });
             spt::BuildOptions opt;
             opt.strategy = strategy;
+            opt.threads = threads;
             spt::SamplingTree tree("t", 0u);
             const double t_build = best_seconds(3, [&] { tree = spt::build_tree("t", samples, opt); });
             spt::CompactTree compact;

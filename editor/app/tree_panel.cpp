@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTreeWidget>
+#include <QThread>
 #include <QTreeWidgetItemIterator>
 #include <QVBoxLayout>
 #include <map>
@@ -92,6 +93,7 @@ BuildOptions TreePanel::build_options() const {
     BuildOptions o;
     o.leaf_size = uint32_t(leaf_size_->value());
     o.strategy = strategy_->currentIndex() == 1 ? SplitStrategy::Median : SplitStrategy::Volume;
+    o.threads = QThread::idealThreadCount(); // the same subtree on any count; sooner on more
     return o;
 }
 

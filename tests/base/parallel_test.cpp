@@ -1,4 +1,5 @@
-// detail::parallel_for: every item once, on any number of threads, and exceptions that reach the caller.
+// detail::parallel_for: every item once, on any number of threads, and exceptions that reach the caller;
+// detail::parallel_levels: how deep a recursion hands subtrees to threads.
 #include "base/parallel.hpp"
 #include <atomic>
 #include <gtest/gtest.h>
@@ -38,3 +39,12 @@ TEST(ParallelFor, AnExceptionOnAWorkerReachesTheCallerWithItsTypeAndMessage) {
 }
 
 } // namespace
+
+TEST(ParallelLevels, NoneOnOneThreadAndOneMoreThanTheDoublingsAbove) {
+    EXPECT_EQ(spt::detail::parallel_levels(0), 0);
+    EXPECT_EQ(spt::detail::parallel_levels(1), 0);
+    EXPECT_EQ(spt::detail::parallel_levels(2), 2); // four subtrees on two threads
+    EXPECT_EQ(spt::detail::parallel_levels(3), 3);
+    EXPECT_EQ(spt::detail::parallel_levels(4), 3);
+    EXPECT_EQ(spt::detail::parallel_levels(8), 4);
+}

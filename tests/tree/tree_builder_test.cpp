@@ -48,6 +48,33 @@ TEST(BuildTree, IsDeterministic) {
     }
 }
 
+TEST(BuildTree, SameTreeOnAnyThreadCountWhereSubtreesAreBuiltAndBoundedAtOnce) {
+    // 160k samples: the subtrees of the top two levels are large enough to go to threads.
+    const ImportedMesh m = meshgen::prepare(meshgen::torus(1, 0.3, 400, 400), "torus");
+    const SampleSet s = test::vertex_samples(m.mesh);
+    for (auto strategy : {SplitStrategy::Volume, SplitStrategy::Median})
+        for (auto bounds : {BoundsMethod::Tight, BoundsMethod::Paper}) {
+            BuildOptions o;
+            o.strategy = strategy;
+            o.bounds = bounds;
+            const SamplingTree one = build_tree("t", s, o);
+            for (int threads : {2, 3, 8}) {
+                o.threads = threads;
+                const SamplingTree many = build_tree("t", s, o);
+                ASSERT_EQ(many.node_count(), one.node_count());
+                const auto a = one.nodes(), b = many.nodes();
+                for (size_t i = 0; i < a.size(); ++i) {
+                    ASSERT_EQ(a[i]->id, b[i]->id);
+                    ASSERT_EQ(a[i]->active, b[i]->active);
+                    ASSERT_EQ(a[i]->samples, b[i]->samples);
+                    ASSERT_EQ(a[i]->center, b[i]->center) << "node " << a[i]->id << ", " << threads << " threads";
+                    ASSERT_EQ(a[i]->bv_radius, b[i]->bv_radius);
+                    ASSERT_EQ(a[i]->ss_radius, b[i]->ss_radius);
+                }
+            }
+        }
+}
+
 TEST(BuildTree, IdenticalPointsStillSplitToLeafSize) {
     SampleSet s;
     for (uint32_t i = 0; i < 100; ++i) s.add({1, 1, 1}, {0, 1, 0}, i, 0.1f);

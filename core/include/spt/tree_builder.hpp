@@ -19,6 +19,8 @@ struct BuildOptions {
     /// Keep each active node's samples within one radius class (kRadiusClassRatio), so the
     /// node radius is at least 1/ratio of every member's own: what tolerance sampling assumes.
     bool radius_coherent = false;
+    /// Threads the builder may use (1: the calling thread only); the tree is the same on any count.
+    int threads = 1;
 };
 
 /// Builds a tree over all samples; deterministic for equal input. Active nodes hold at most

@@ -50,6 +50,14 @@ void parallel_for(size_t n, int threads, F&& f) {
     if (error) std::rethrow_exception(error);
 }
 
+// How many levels of a binary recursion hand their second subtree to another thread so that
+// `threads` threads stay busy: two subtrees a thread (an uneven split still keeps all busy).
+inline int parallel_levels(int threads) {
+    int levels = 0;
+    for (int t = 1; t < threads; t *= 2) ++levels;
+    return levels > 0 ? levels + 1 : 0;
+}
+
 // A thread count that tests pin (PinnedThreads) to show that an answer does not depend on it; 0: none.
 inline int pinned_threads = 0;
 

@@ -101,7 +101,9 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
         st.sample_seconds = seconds_since(t0);
         stage(options, mesh, "building the tree");
         t0 = Clock::now();
-        doc.trees.push_back(build_tree(options.tree_name, doc.samples, options.build));
+        BuildOptions build = options.build;
+        build.threads = threads;
+        doc.trees.push_back(build_tree(options.tree_name, doc.samples, build));
         st.build_seconds = seconds_since(t0);
         const VertexOnlyGaps gaps = vertex_only_gaps(limiter, doc.samples, radius_in_use(doc.trees[0], doc.samples.size()));
         st.worst_predicted_gap = std::max(0.0, gaps.worst);
@@ -133,6 +135,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     t0 = Clock::now();
     BuildOptions coherent = options.build;
     coherent.radius_coherent = true;
+    coherent.threads = threads;
     SamplingTree tree = build_tree(options.tree_name, s, coherent);
     st.build_seconds = seconds_since(t0);
     // Check the assumption against the radii the tree gave.

@@ -30,7 +30,8 @@ struct NodeArray {
 void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& rule);
 
 /// Sets every node's bounding sphere, leaves first (SamplingTree::compute_bounds's rule).
-void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method);
+/// Threads: up to this many subtrees are bounded at once; the result is the same on any count.
+void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method, int threads = 1);
 
 namespace detail {
 

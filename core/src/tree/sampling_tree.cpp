@@ -1,6 +1,7 @@
 // SamplingTree: the paper's split and merge, radii, bounds and validation.
 #include "spt/sampling_tree.hpp"
 #include "tree/bounds.hpp"
+#include "base/parallel.hpp"
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -105,7 +106,8 @@ void append_spheres(const TreeNode& n, const SampleSet& samples, std::vector<Eig
 float radius_at(const NodeArray& tree, uint32_t i) { return i == NodeArray::kNone ? 0.0f : tree.node[i]->ss_radius; }
 
 // Bounds every node of a NodeArray, children before parents. The samples are laid out leaf by
-// leaf so that every node covers one contiguous run.
+// leaf so that every node covers one contiguous run; the runs are placed before the pass, so
+// subtrees near the root are bounded on threads of their own with the same result.
 struct BoundsPass {
     NodeArray& tree;
     const SampleSet& samples;
@@ -114,39 +116,80 @@ struct BoundsPass {
     std::vector<float> r;
     std::vector<uint32_t> begin, end; // per node: its run of spheres
     std::vector<uint8_t> equal;       // per node: every radius of its run is the first
+    int parallel_depth = 0;           // nodes this shallow bound their two subtrees at once
+
+    // Subtrees of at least this many spheres may be bounded on a thread of their own.
+    static constexpr uint32_t kParallelRun = 1 << 15;
 
     struct Result {
         detail::Ball ball;
         Eigen::AlignedBox3f box; // of the sphere centres below
     };
 
-    Result visit(uint32_t i) {
+    // Places every node's run (children follow their parent: backwards, children come first).
+    void place_runs() {
+        const size_t n = tree.node.size();
+        std::vector<uint32_t> count(n);
+        for (size_t i = n; i-- > 0;) {
+            const TreeNode& t = *tree.node[i];
+            if (t.active) {
+                count[i] = uint32_t(t.samples.size());
+                continue;
+            }
+            count[i] = 0;
+            for (uint32_t child : {tree.left[i], tree.right[i]})
+                if (child != NodeArray::kNone) count[i] += count[child];
+        }
+        begin[0] = 0, end[0] = count[0];
+        for (size_t i = 0; i < n; ++i) { // parents before children
+            uint32_t at = begin[i];
+            if (tree.node[i]->active) continue;
+            for (uint32_t child : {tree.left[i], tree.right[i]})
+                if (child != NodeArray::kNone) begin[child] = at, end[child] = at += count[child];
+        }
+        c.resize(count[0]), r.resize(count[0]);
+        if (method == BoundsMethod::Paper) p.resize(count[0]);
+    }
+
+    Result visit(uint32_t i, int depth) {
         TreeNode& n = *tree.node[i];
-        const size_t first = c.size();
+        const uint32_t first = begin[i], last = end[i];
         Result out;
         detail::Ball hint;
         detail::RunFacts facts;
         if (n.active) {
-            append_spheres(n, samples, c, r, method == BoundsMethod::Paper ? &p : nullptr);
-            for (size_t k = first; k < c.size(); ++k) out.box.extend(c[k]);
+            for (size_t k = 0; k < n.samples.size(); ++k) {
+                const uint32_t s = n.samples[k];
+                if (!p.empty()) p[first + k] = samples.points[s];
+                c[first + k] = samples.sphere_centre(s, n.ss_radius);
+                r[first + k] = n.ss_radius;
+                out.box.extend(c[first + k]);
+            }
             equal[i] = !std::isnan(n.ss_radius);
         } else {
             equal[i] = 1;
-            for (uint32_t child : {tree.left[i], tree.right[i]})
-                if (child != NodeArray::kNone) {
-                    const Result sub = visit(child);
-                    hint = detail::merge_balls(hint, sub.ball);
-                    out.box.extend(sub.box);
-                    if (begin[child] < end[child]) equal[i] &= equal[child] && r[begin[child]] == r[first];
+            const uint32_t child[2] = {tree.left[i], tree.right[i]};
+            Result sub[2];
+            const bool both = child[0] != NodeArray::kNone && child[1] != NodeArray::kNone;
+            if (depth < parallel_depth && both &&
+                std::min(end[child[0]] - begin[child[0]], end[child[1]] - begin[child[1]]) >= kParallelRun)
+                detail::parallel_for(2, 2, [&](size_t k, int) { sub[k] = visit(child[k], depth + 1); });
+            else
+                for (int k = 0; k < 2; ++k)
+                    if (child[k] != NodeArray::kNone) sub[k] = visit(child[k], depth + 1);
+            for (int k = 0; k < 2; ++k)
+                if (child[k] != NodeArray::kNone) {
+                    hint = detail::merge_balls(hint, sub[k].ball);
+                    out.box.extend(sub[k].box);
+                    if (begin[child[k]] < end[child[k]]) equal[i] &= equal[child[k]] && r[begin[child[k]]] == r[first];
                 }
         }
-        begin[i] = uint32_t(first), end[i] = uint32_t(c.size());
         facts.centre_box = &out.box;
         facts.equal_radii = equal[i];
         const SubtreeSearch search(*this, i);
         if (!n.active) facts.farthest = &search;
         const Eigen::Vector3f* points = p.empty() ? nullptr : p.data() + first;
-        detail::bound_run(n, c.data() + first, r.data() + first, points, c.size() - first, hint, method, facts);
+        detail::bound_run(n, c.data() + first, r.data() + first, points, last - first, hint, method, facts);
         out.ball = {n.center.cast<double>(), double(n.bv_radius)};
         return out;
     }
@@ -223,13 +266,13 @@ void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& r
     }
 }
 
-void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method) {
+void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method, int threads) {
     if (tree.node.empty()) return;
     BoundsPass pass{tree, samples, method, {}, {}, {}, std::vector<uint32_t>(tree.node.size()),
                     std::vector<uint32_t>(tree.node.size()), std::vector<uint8_t>(tree.node.size())};
-    pass.c.reserve(samples.size()), pass.r.reserve(samples.size());
-    if (method == BoundsMethod::Paper) pass.p.reserve(samples.size());
-    pass.visit(0);
+    pass.parallel_depth = detail::parallel_levels(threads);
+    pass.place_runs();
+    pass.visit(0, 0);
 }
 
 void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule) {

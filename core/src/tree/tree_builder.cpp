@@ -2,10 +2,12 @@
 #include "spt/tree_builder.hpp"
 #include "sampling/radius_class.hpp"
 #include "tree/bounds.hpp"
+#include "base/parallel.hpp"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -77,12 +79,18 @@ struct AxisBins {
     }
 };
 
+// Subtrees of at least this many samples may be built on a thread of their own.
+constexpr size_t kParallelSubtree = 1 << 15;
+
 struct Builder {
     const BuildOptions& options;
-    std::vector<Item> items;
+    std::vector<Item>& items; // builders of disjoint subtrees share it, each in its own range
     std::vector<TreeNode> out; // depth first: an inner node's left child follows it
     std::vector<uint32_t> right_of; // per node of `out`: its right child's index, or NodeArray::kNone
     int max_depth = kMaxNodeDepth; // deepest id the built nodes may have
+    // Nodes shallower than this build their right child on another thread (as a builder of its
+    // own, spliced in after the left child): the nodes, and their order, do not change.
+    int parallel_depth = 0;
     // Set by split_volume when it knows the exact boxes of the two parts it made (left, right).
     std::array<Bounds3, 2> parts;
     bool parts_known = false;
@@ -100,9 +108,23 @@ struct Builder {
         const NodeId id = node.id;
         node.active = false;
         const size_t at = emit(std::move(node));
-        build(b, mid, left_child(id), boxes ? &(*boxes)[0] : nullptr);
+        const Bounds3* left_box = boxes ? &(*boxes)[0] : nullptr;
+        const Bounds3* right_box = boxes ? &(*boxes)[1] : nullptr;
+        if (node_depth(id) < parallel_depth && std::min(mid - b, e - mid) >= kParallelSubtree) {
+            Builder right{options, items, {}, {}, max_depth, parallel_depth, {}, false};
+            detail::parallel_for(2, 2, [&](size_t k, int) {
+                if (k == 0) build(b, mid, left_child(id), left_box);
+                else right.build(mid, e, right_child(id), right_box);
+            });
+            const auto base = uint32_t(out.size());
+            right_of[at] = base;
+            for (uint32_t r : right.right_of) right_of.push_back(r == NodeArray::kNone ? r : r + base);
+            std::move(right.out.begin(), right.out.end(), std::back_inserter(out));
+            return;
+        }
+        build(b, mid, left_child(id), left_box);
         right_of[at] = uint32_t(out.size());
-        build(mid, e, right_child(id), boxes ? &(*boxes)[1] : nullptr);
+        build(mid, e, right_child(id), right_box);
     }
 
     // The built nodes in breadth-first order, children left to right: increasing ids, the
@@ -277,7 +299,8 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
                         const BuildOptions& options, int max_depth) {
     BuildOptions fixed = options;
     fixed.leaf_size = std::max<uint32_t>(1, options.leaf_size);
-    Builder builder{fixed, std::vector<Item>(members.size()), {}, {}, max_depth, {}, false};
+    std::vector<Item> items(members.size());
+    Builder builder{fixed, items, {}, {}, max_depth, detail::parallel_levels(options.threads), {}, false};
     for (size_t k = 0; k < members.size(); ++k) {
         const uint32_t i = members[k];
         const auto& p = samples.points[i];
@@ -291,7 +314,7 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
     // Radii and bounds on the builder's array, where children are indices rather than look-ups.
     NodeArray array = builder.links();
     assign_radii(array, samples, options.radius);
-    compute_bounds(array, samples, options.bounds);
+    compute_bounds(array, samples, options.bounds, options.threads);
     return SamplingTree(std::move(name), builder.in_id_order());
 }
 
