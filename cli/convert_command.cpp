@@ -79,7 +79,9 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     // more peak memory).
     ::mallopt(M_MMAP_THRESHOLD, 1 << 30);
     ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
-    ImportedMesh m = import_mesh(in);
+    ImportOptions import_options;
+    import_options.threads = a.threads;
+    ImportedMesh m = import_mesh(in, import_options);
     const double import_secs = seconds_since(t0);
     ConvertOptions opt;
     opt.tree_name = a.tree_name;
@@ -90,6 +92,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     opt.build.radius.scale = float(a.radius_scale);
     if (a.tolerance > 0) opt.tolerance = a.tolerance;
     opt.threads = a.threads;
+    opt.build.threads = a.threads; // trees built here too (--append, trees of a recipe without one)
     opt.auto_tolerance = !a.vertices_only;
     ConvertStats st;
     SptDocument doc;

@@ -229,3 +229,48 @@ TEST(MeshImport, TwoClosedBodiesSharingAnEdgeAreBothClosed) {
     for (size_t f = 0; f < m.mesh.triangles.size(); ++f) EXPECT_EQ(m.mesh.on_open_part[f], 0) << "face " << f;
     EXPECT_EQ(m.report.inverted_components, 0u);
 }
+
+TEST(MeshPrepare, SameMeshAndReportOnAnyThreadCountWhenFacesAreReWoundCopiedOrOpen) {
+    // On two threads or more the normals are computed beside the topology and again where a
+    // face was re-wound or copied: every case below must come out as on one thread.
+    std::vector<std::pair<std::string, meshgen::RawMesh>> cases;
+    cases.emplace_back("torus", meshgen::torus(1, 0.3, 40, 20));
+    auto rewound = meshgen::box(1, 1, 1, 3);
+    for (size_t f = 0; f < rewound.triangles.size(); f += 3) std::swap(rewound.triangles[f][1], rewound.triangles[f][2]);
+    cases.emplace_back("rewound box", rewound);
+    auto inside_out = meshgen::icosphere(1.0, 2);
+    for (auto& t : inside_out.triangles) std::swap(t[1], t[2]);
+    cases.emplace_back("inside-out sphere", inside_out);
+    auto copies = meshgen::torus(1, 0.3, 24, 12);
+    for (size_t f = 0; f < 40; f += 4) {
+        auto t = copies.triangles[f];
+        if (f % 8 == 0) std::swap(t[1], t[2]); // a copy wound the other way
+        copies.triangles.push_back(t);
+    }
+    cases.emplace_back("copied faces", copies);
+    auto open = meshgen::box(1, 1, 1, 2);
+    open.triangles.pop_back();
+    cases.emplace_back("open box", open);
+    for (const auto& [name, raw] : cases) {
+        SCOPED_TRACE(name);
+        ImportOptions one;
+        one.threads = 1;
+        const ImportedMesh a = prepare_mesh(name, raw.positions, raw.triangles, one);
+        for (int threads : {2, 3}) {
+            ImportOptions many;
+            many.threads = threads;
+            const ImportedMesh b = prepare_mesh(name, raw.positions, raw.triangles, many);
+            EXPECT_EQ(b.mesh.triangles, a.mesh.triangles);
+            EXPECT_EQ(b.mesh.normals, a.mesh.normals); // bit for bit
+            EXPECT_EQ(b.mesh.normal_valid, a.mesh.normal_valid);
+            EXPECT_EQ(b.mesh.on_open_part, a.mesh.on_open_part);
+            EXPECT_EQ(b.report.flipped_faces, a.report.flipped_faces);
+            EXPECT_EQ(b.report.inverted_components, a.report.inverted_components);
+            EXPECT_EQ(b.report.duplicate_faces, a.report.duplicate_faces);
+            EXPECT_EQ(b.report.components, a.report.components);
+            EXPECT_EQ(b.report.vertices_without_normal, a.report.vertices_without_normal);
+            EXPECT_EQ(b.report.fixes, a.report.fixes);
+            EXPECT_EQ(b.report.warnings, a.report.warnings);
+        }
+    }
+}

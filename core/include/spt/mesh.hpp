@@ -65,6 +65,7 @@ struct ImportedMesh {
 struct ImportOptions {
     double weld_tolerance = 1e-6; ///< weld distance, as a fraction of the bounding-box diagonal
     bool fix_orientation = true;  ///< re-wind inconsistent faces, turn inside-out closed parts around
+    int threads = 0;              ///< threads to prepare the mesh on (0: the machine's cores); the mesh is the same on any count
 };
 
 /// Largest vertex coordinate prepare_mesh accepts (model units): beyond it a double keeps

@@ -2,6 +2,7 @@
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include "mesh/weld.hpp"
+#include "base/parallel.hpp"
 #include "geometry/ray_parity.hpp"
 #include <algorithm>
 #include <array>
@@ -118,14 +119,43 @@ std::vector<int> nesting_depths(const TriangleMesh& m, const std::vector<std::ve
     return depth;
 }
 
+// Per face, 1 for all but the first of faces with the same three vertices; counts them and
+// the vertices no face uses into `r`.
+std::vector<uint8_t> find_duplicates(const TriangleMesh& m, ImportReport& r) {
+    std::vector<uint8_t> duplicate(m.triangles.size(), 0);
+    // Faces by their sorted vertices, then by index: a counting sort by the smallest vertex,
+    // then a small sort within each vertex's run.
+    auto sorted_face = [&](size_t f) {
+        Triangle t = m.triangles[f];
+        std::sort(t.begin(), t.end());
+        return t;
+    };
+    std::vector<uint32_t> start =
+        bucket_starts(m.triangles.size(), m.positions.size(), [&](size_t f) { return sorted_face(f)[0]; });
+    std::vector<std::pair<Triangle, uint32_t>> sorted(m.triangles.size());
+    for (uint32_t f = 0; f < m.triangles.size(); ++f) {
+        const Triangle t = sorted_face(f);
+        sorted[start[t[0]]++] = {t, f};
+    }
+    for (size_t v = 0, b = 0; v < m.positions.size(); b = start[v++])
+        if (start[v] - b > 1) std::sort(sorted.begin() + long(b), sorted.begin() + long(start[v]));
+    for (size_t i = 1; i < sorted.size(); ++i)
+        if (sorted[i].first == sorted[i - 1].first) duplicate[sorted[i].second] = 1, ++r.duplicate_faces;
+    std::vector<uint8_t> used(m.positions.size(), 0);
+    for (const auto& t : m.triangles)
+        for (uint32_t v : t) used[v] = 1;
+    r.unreferenced_vertices = size_t(std::count(used.begin(), used.end(), 0));
+    return duplicate;
+}
+
 // `skip`: per face, 1 for the later copies of duplicate faces (wound the other way, a copy
-// would cancel the normal it duplicates).
+// would cancel the normal it duplicates); empty: none is skipped.
 void compute_normals(TriangleMesh& m, ImportReport& report, double area_eps, const std::vector<uint8_t>& skip) {
     const size_t n = m.positions.size();
     m.normals.assign(n, Eigen::Vector3d::Zero());
     m.normal_valid.assign(n, 0);
     for (size_t f = 0; f < m.triangles.size(); ++f) {
-        if (skip[f]) continue;
+        if (!skip.empty() && skip[f]) continue;
         const auto& t = m.triangles[f];
         const Eigen::Vector3d& p0 = m.positions[t[0]];
         const Eigen::Vector3d& p1 = m.positions[t[1]];
@@ -218,74 +248,67 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
     if (m.triangles.empty()) throw_bad_input(m.name, "every face is degenerate");
     r.faces = m.triangles.size();
-    std::vector<uint8_t> duplicate(m.triangles.size(), 0);
-    {
-        // Faces by their sorted vertices, then by index: a counting sort by the smallest
-        // vertex, then a small sort within each vertex's run. All but the first of equal faces
-        // are copies.
-        auto sorted_face = [&](size_t f) {
-            Triangle t = m.triangles[f];
-            std::sort(t.begin(), t.end());
-            return t;
-        };
-        std::vector<uint32_t> start =
-            bucket_starts(m.triangles.size(), m.positions.size(), [&](size_t f) { return sorted_face(f)[0]; });
-        std::vector<std::pair<Triangle, uint32_t>> sorted(m.triangles.size());
-        for (uint32_t f = 0; f < m.triangles.size(); ++f) {
-            const Triangle t = sorted_face(f);
-            sorted[start[t[0]]++] = {t, f};
-        }
-        for (size_t v = 0, b = 0; v < m.positions.size(); b = start[v++])
-            if (start[v] - b > 1) std::sort(sorted.begin() + long(b), sorted.begin() + long(start[v]));
-        for (size_t i = 1; i < sorted.size(); ++i)
-            if (sorted[i].first == sorted[i - 1].first) duplicate[sorted[i].second] = 1, ++r.duplicate_faces;
-        std::vector<uint8_t> used(m.positions.size(), 0);
-        for (const auto& t : m.triangles)
-            for (uint32_t v : t) used[v] = 1;
-        r.unreferenced_vertices = size_t(std::count(used.begin(), used.end(), 0));
-    }
+    std::vector<uint8_t> duplicate; // per face: 1 for the later copies of a face
 
     // Topology from sorted half-edges.
-    const auto edges = collect_edges(m.triangles, m.positions.size());
+    std::vector<HalfEdge> edges;
     // Parts: faces connected across manifold edges only. A part is closed when each edge of its
     // faces is used by exactly two of them: a closed body that a flap or fin touches along a
     // non-manifold edge stays a solid, and only the flap is open.
     DisjointFaces parts(m.triangles.size());
-    std::vector<size_t> unpaired; // where the runs of edges used other than twice start
-    size_t inconsistent = 0;      // manifold edges whose two faces walk it the same way
-    for (size_t i = 0; i < edges.size();) {
-        const size_t j = run_end(edges, i);
-        const size_t uses = j - i;
-        if (uses == 1) ++r.boundary_edges;
-        if (uses >= 3) ++r.nonmanifold_edges;
-        if (uses != 2) unpaired.push_back(i);
-        if (uses == 2) {
-            parts.join(edges[i].face, edges[i + 1].face);
-            inconsistent += edges[i].forward == edges[i + 1].forward;
+    size_t inconsistent = 0; // manifold edges whose two faces walk it the same way
+    auto topology = [&] {
+        edges = collect_edges(m.triangles, m.positions.size());
+        std::vector<size_t> unpaired; // where the runs of edges used other than twice start
+        for (size_t i = 0; i < edges.size();) {
+            const size_t j = run_end(edges, i);
+            const size_t uses = j - i;
+            if (uses == 1) ++r.boundary_edges;
+            if (uses >= 3) ++r.nonmanifold_edges;
+            if (uses != 2) unpaired.push_back(i);
+            if (uses == 2) {
+                parts.join(edges[i].face, edges[i + 1].face);
+                inconsistent += edges[i].forward == edges[i + 1].forward;
+            }
+            i = j;
         }
-        i = j;
-    }
-    // Components join faces across every shared edge: the parts, and across non-manifold edges.
-    DisjointFaces components = parts;
-    for (const size_t i : unpaired)
-        for (size_t k = i + 1, j = run_end(edges, i); k < j; ++k)
-            components.join(edges[k].face, edges[i].face);
-    r.components = components.count();
-    r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
-    // A part using an edge other than twice is open. An edge used twice joined its two faces
-    // into one part, which uses it twice: only the other runs can open a part.
-    std::vector<uint8_t> part_open(m.triangles.size(), 0); // by part root
-    for (const size_t i : unpaired) {
-        const size_t j = run_end(edges, i);
-        for (size_t k = i; k < j; ++k) {
-            const uint32_t part = parts.find(edges[k].face);
-            size_t own = 0;
-            for (size_t l = i; l < j; ++l) own += parts.find(edges[l].face) == part;
-            if (own != 2) part_open[part] = 1;
+        // Components join faces across every shared edge: the parts, and across non-manifold edges.
+        DisjointFaces components = parts;
+        for (const size_t i : unpaired)
+            for (size_t k = i + 1, j = run_end(edges, i); k < j; ++k)
+                components.join(edges[k].face, edges[i].face);
+        r.components = components.count();
+        r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
+        // A part using an edge other than twice is open. An edge used twice joined its two faces
+        // into one part, which uses it twice: only the other runs can open a part.
+        std::vector<uint8_t> part_open(m.triangles.size(), 0); // by part root
+        for (const size_t i : unpaired) {
+            const size_t j = run_end(edges, i);
+            for (size_t k = i; k < j; ++k) {
+                const uint32_t part = parts.find(edges[k].face);
+                size_t own = 0;
+                for (size_t l = i; l < j; ++l) own += parts.find(edges[l].face) == part;
+                if (own != 2) part_open[part] = 1;
+            }
         }
+        m.on_open_part.assign(m.triangles.size(), 0);
+        for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[parts.find(f)];
+    };
+    // The topology and the copies only read the windings, so on two threads the normals are
+    // computed beside them, from the windings as they are and counting every face; again below
+    // only if a face was re-wound or a copy of another (rare: the file is then fixed or reported).
+    const int threads = options.threads > 0 ? options.threads : detail::machine_threads();
+    const bool early_normals = threads > 1;
+    if (early_normals) {
+        detail::parallel_for(3, std::min(threads, 3), [&](size_t k, int) {
+            if (k == 0) topology(); // the longest first
+            else if (k == 1) compute_normals(m, r, area_eps, {});
+            else duplicate = find_duplicates(m, r);
+        });
+    } else {
+        duplicate = find_duplicates(m, r);
+        topology();
     }
-    m.on_open_part.assign(m.triangles.size(), 0);
-    for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[parts.find(f)];
 
     if (options.fix_orientation && inconsistent > 0) {
         // Per face, its neighbours across manifold edges (face, same_direction): at most one an edge.
@@ -375,7 +398,8 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (r.unreferenced_vertices)
         r.warnings.push_back(std::to_string(r.unreferenced_vertices) + " vertices are used by no face and are left out");
 
-    compute_normals(m, r, area_eps, duplicate);
+    if (!early_normals || r.flipped_faces > 0 || r.inverted_components > 0 || r.duplicate_faces > 0)
+        compute_normals(m, r, area_eps, duplicate);
     // Unreferenced vertices have no normal either; they are reported above.
     if (r.vertices_without_normal > r.unreferenced_vertices)
         r.warnings.push_back(std::to_string(r.vertices_without_normal - r.unreferenced_vertices) +
