@@ -6,6 +6,7 @@
 #include "sampling/surface_samples.hpp"
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 namespace spt {
 namespace {
@@ -87,15 +88,22 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
 
     stage(options, mesh, "sampling vertices");
     auto t0 = Clock::now();
-    const RadiusLimiter limiter(mesh, protrusion, two_sided_radius);
     const int threads = options.threads > 0 ? options.threads : detail::machine_threads();
+    // The limiter's triangle tree and the mesh's hash (for the file) both only read the mesh.
+    std::unique_ptr<const RadiusLimiter> limiter_made;
+    MeshInfo info;
+    detail::parallel_for(2, threads, [&](size_t k, int) {
+        if (k == 0) limiter_made = std::make_unique<const RadiusLimiter>(mesh, protrusion, two_sided_radius);
+        else info = info_of(mesh);
+    });
+    const RadiusLimiter& limiter = *limiter_made;
     const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius, threads);
     if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
     st.vertex_samples = vertex_samples.size();
     const RadiusRule& rule = options.build.radius;
 
     SptDocument doc;
-    doc.mesh = info_of(mesh);
+    doc.mesh = info;
     if (!options.tolerance) {
         doc.samples = vertex_samples;
         st.sample_seconds = seconds_since(t0);

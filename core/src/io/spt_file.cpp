@@ -2,6 +2,7 @@
 #include "spt/spt_file.hpp"
 #include "io/binary_io.hpp"
 #include "io/recipe_codec.hpp"
+#include "base/parallel.hpp"
 #include "sampling/encoding.hpp"
 #include <zlib.h>
 #include <array>
@@ -241,9 +242,15 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
 }
 
 void save_spt(const SptDocument& doc, const std::string& path) {
-    const std::string why = doc.validate();
+    // The check and the encoding only read the document (the encoding writes the values as
+    // they are, whatever the tree's shape): on two threads they run at once.
+    std::string why;
+    std::vector<uint8_t> bytes;
+    detail::parallel_for(2, detail::machine_threads(), [&](size_t k, int) {
+        if (k == 0) why = doc.validate();
+        else bytes = encode_spt(doc);
+    });
     if (!why.empty()) throw Error(ErrorKind::BadInput, path + ": refusing to save an invalid document: " + why);
-    const std::vector<uint8_t> bytes = encode_spt(doc);
     auto cannot = [&](const std::string& what) {
         throw Error(ErrorKind::CannotWrite, path + ": cannot write: " + what + ": " + std::strerror(errno));
     };
