@@ -102,13 +102,18 @@ std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size,
     const uint32_t end = first + std::min(node.count, set_size - first);
     std::vector<SphereItem> items;
     auto dimmed = [&](uint32_t from, uint32_t to) {
-        SphereItem item{set, Eigen::Affine3f::Identity(), from, to - from, {}};
+        SphereItem item;
+        item.spheres = set, item.first = from, item.count = to - from;
         item.fade = kDimmedFade;
         items.push_back(item);
     };
     if (show_all && first > 0) dimmed(0, first);
     if (show_all && end < set_size) dimmed(end, set_size);
-    if (end > first) items.push_back(SphereItem{set, Eigen::Affine3f::Identity(), first, end - first, highlight_color()});
+    if (end > first) {
+        SphereItem item;
+        item.spheres = set, item.first = first, item.count = end - first, item.color = highlight_color();
+        items.push_back(item);
+    }
     return items;
 }
 

@@ -90,7 +90,9 @@ TEST(CompactTree, NodeDiscHoldsTheDiscOfEverySphereBelowIt) {
             }
         }
         EXPECT_GT(discs, nodes.size() / 4) << mesh.name;
-        if (mesh.name == "sheet") EXPECT_EQ(discs, nodes.size());
+        if (mesh.name == "sheet") {
+            EXPECT_EQ(discs, nodes.size());
+        }
     }
     const ImportedMesh closed = meshgen::prepare(meshgen::torus(1, 0.3, 32, 16), "torus");
     const SampleSet s = test::vertex_samples(closed.mesh);
