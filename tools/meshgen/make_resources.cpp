@@ -1,5 +1,6 @@
 // Writes the meshes bundled in resources/meshes/. Usage: spt-make-resources OUT_DIR [--big]
-// --big also writes torus_1m.ply (1,000,000 vertices) for the conversion benchmark; it is
+// --big also writes torus_1m.ply (1,000,000 vertices) and the same torus as an unindexed
+// binary STL, torus_1m.stl (6,000,000 corners to weld), for the conversion benchmark; they are
 // not bundled.
 #include "meshgen.hpp"
 #include "spt/error.hpp"
@@ -22,7 +23,11 @@ int main(int argc, char** argv) {
         write_ply(box(1, 1, 1, 4), (dir / "box.ply").string());
         write_stl(cad_part(), (dir / "cad_part.stl").string());
         write_stl(icosphere(0.5, 3), (dir / "sphere.stl").string());
-        if (big) write_ply(torus(1.0, 0.35, 1000, 1000), (dir / "torus_1m.ply").string());
+        if (big) {
+            const RawMesh t = torus(1.0, 0.35, 1000, 1000);
+            write_ply(t, (dir / "torus_1m.ply").string());
+            write_stl(t, (dir / "torus_1m.stl").string());
+        }
     } catch (const spt::Error& e) {
         std::cerr << e.what() << "\n";
         return int(e.kind());
