@@ -93,13 +93,14 @@ void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const S
 
 namespace {
 
-// Appends an active node's sampling spheres (centres, radii) and, if `p` is given, their surface points.
-void append_spheres(const TreeNode& n, const SampleSet& samples, std::vector<Eigen::Vector3f>& c,
-                    std::vector<float>& r, std::vector<Eigen::Vector3f>* p) {
-    for (uint32_t s : n.samples) {
-        if (p) p->push_back(samples.points[s]);
-        c.push_back(samples.sphere_centre(s, n.ss_radius));
-        r.push_back(n.ss_radius);
+// Writes an active node's sampling spheres (centres, radii) from c and r on and, if `p` is
+// given, their surface points from p on: one entry per sample.
+void put_spheres(const TreeNode& n, const SampleSet& samples, Eigen::Vector3f* c, float* r, Eigen::Vector3f* p) {
+    for (size_t k = 0; k < n.samples.size(); ++k) {
+        const uint32_t s = n.samples[k];
+        if (p) p[k] = samples.points[s];
+        c[k] = samples.sphere_centre(s, n.ss_radius);
+        r[k] = n.ss_radius;
     }
 }
 
@@ -158,13 +159,8 @@ struct BoundsPass {
         detail::Ball hint;
         detail::RunFacts facts;
         if (n.active) {
-            for (size_t k = 0; k < n.samples.size(); ++k) {
-                const uint32_t s = n.samples[k];
-                if (!p.empty()) p[first + k] = samples.points[s];
-                c[first + k] = samples.sphere_centre(s, n.ss_radius);
-                r[first + k] = n.ss_radius;
-                out.box.extend(c[first + k]);
-            }
+            put_spheres(n, samples, c.data() + first, r.data() + first, p.empty() ? nullptr : p.data() + first);
+            for (uint32_t k = first; k < last; ++k) out.box.extend(c[k]);
             equal[i] = !std::isnan(n.ss_radius);
         } else {
             equal[i] = 1;
@@ -302,7 +298,9 @@ void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMet
         std::vector<float> rad;
         std::function<void(const TreeNode&)> collect = [&](const TreeNode& t) {
             if (t.active) {
-                append_spheres(t, samples, c, rad, &p);
+                const size_t at = c.size();
+                c.resize(at + t.samples.size()), rad.resize(c.size()), p.resize(c.size());
+                put_spheres(t, samples, c.data() + at, rad.data() + at, p.data() + at);
                 return;
             }
             if (const TreeNode* l = find(left_child(t.id))) collect(*l);
