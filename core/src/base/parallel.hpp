@@ -14,7 +14,8 @@ namespace spt::detail {
 /// Runs f(i, worker) for every i in [0, n) on up to `threads` threads. An exception thrown by f
 /// on any thread (out of memory, a refused input) stops the items not yet begun and is thrown
 /// again on the calling thread once every worker has stopped, as on one thread (an exception
-/// leaving a std::thread would end the process).
+/// leaving a std::thread would end the process). Items start in increasing order of i (a worker
+/// takes the next when it is free), so an item may wait for an earlier one without a deadlock.
 template <class F>
 void parallel_for(size_t n, int threads, F&& f) {
     if (threads <= 1 || n < 2) {

@@ -60,6 +60,12 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
     if (s.moved_b.size() < 3 * lb) s.moved_b.resize(3 * lb);
     if (s.ga.size() < 3 * la) s.ga.resize(3 * la), s.ia.resize(la);
     if (s.gb.size() < 3 * lb) s.gb.resize(3 * lb), s.ib.resize(lb);
+    const size_t nodes = b.tree().nodes().size();
+    s.leaf_slot = 3 * lb <= detail::kLeafCacheFloats / std::max<size_t>(nodes, 1) ? 3 * lb : 0, s.leaf_column = lb;
+    if (s.leaf_slot) {
+        if (s.leaf_cache.size() < nodes * s.leaf_slot) s.leaf_cache.resize(nodes * s.leaf_slot);
+        if (s.leaf_stamp.size() < nodes) s.leaf_stamp.resize(nodes, 0);
+    }
     if (s.stack.capacity() < 256) s.stack.reserve(256);
     if (s.visits.size() < 256) s.visits.resize(256);
     // B's vertices: the exact level's triangles, and the faces of two-sided spheres at the sphere level.
@@ -77,6 +83,7 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
         std::fill(s.vert_stamp.begin(), s.vert_stamp.end(), 0);
         std::fill(s.tri_stamp.begin(), s.tri_stamp.end(), 0);
         std::fill(s.bbox_stamp.begin(), s.bbox_stamp.end(), 0);
+        std::fill(s.leaf_stamp.begin(), s.leaf_stamp.end(), 0);
         s.epoch = 1;
     }
     s.pairs.clear();

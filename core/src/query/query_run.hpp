@@ -156,4 +156,19 @@ struct QueryRun {
     void keep_exit_root(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, float reach);
 };
 
+inline bool QueryRun::may_exit_later(const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra, float rb,
+                                     float pad) const {
+    // Every sphere below lies in its node's bounding ball, so a pair of them overlaps only
+    // while the balls do; the walk's float centres are within pad of the exact ones. The
+    // balls' exit root reaches the best root S when their chord's middle lies at or beyond S,
+    // or when they still overlap at S (the root's inequality squared: no square root). The
+    // reach is widened by a millionth so that rounding never drops a pair that ties.
+    const Eigen::Vector3d w = (cb - ca).cast<double>();
+    const double S = exit->root;
+    if (-w.dot(exit->back) >= S) return true;
+    const double r = double(ra) + double(rb) + double(pad);
+    const double wide = r + 1e-6 * (r + w.cwiseAbs().sum());
+    return (w + S * exit->back).squaredNorm() <= wide * wide;
+}
+
 } // namespace spt

@@ -38,10 +38,19 @@ struct SphereMemo {
     }
 };
 
+// Floats of moved leaves cached a query (256 KiB: the slots of a small model such as a scene's
+// pebble, visited by many leaf pairs, stay in L2; a large model's leaves are moved per leaf pair).
+constexpr size_t kLeafCacheFloats = 65536;
+
 struct ScratchBuffers {
     std::vector<std::pair<uint32_t, uint32_t>> stack;  // triangle-tree walk (level exact)
     std::vector<NodePairVisit> visits;                 // sampling-tree walk
     std::vector<float> moved_b;              // one leaf of B in A's frame (x, y, z columns)
+    // B's active nodes moved into A's frame at most once a query, a slot of three columns each,
+    // when the slots of every node fit in L2 (kLeafCacheFloats); leaf_slot 0: moved per leaf pair.
+    std::vector<float> leaf_cache;
+    std::vector<uint32_t> leaf_stamp;        // the epoch of the query that filled a slot
+    size_t leaf_slot = 0, leaf_column = 0;   // floats a slot and a column
     std::vector<Eigen::Vector3d> bverts;     // B's vertices in A's frame (lazy)
     std::vector<uint32_t> vert_stamp;
     std::vector<float> btri;                 // B's triangle bounding spheres in A's frame (lazy)

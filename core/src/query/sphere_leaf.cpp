@@ -35,6 +35,9 @@ void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
 void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
                       const Eigen::Vector3f& cb, float reach, float ra, float d2) {
     if (exit) {
+        // Most pairs part well before the best root found so far: bounded from the walk's
+        // float centres (within the frame's margin of the double ones) before the exact root.
+        if (exit->found && !may_exit_later(ca, cb, reach, 0.0f, f.margin)) return;
         keep_exit_root(node_a, node_b, a, b, reach);
         return;
     }
@@ -59,17 +62,6 @@ void QueryRun::keep_exit_root(uint32_t node_a, uint32_t node_b, uint32_t a, uint
     const Eigen::Vector3d w = f.Rd * detail::pair_centre(B.tree(), bounds, node_b, b) + f.td -
                               detail::pair_centre(A.tree(), bounds, node_a, a);
     detail::keep_exit(*exit, detail::exit_root(w, double(reach), exit->back), double(reach));
-}
-
-bool QueryRun::may_exit_later(const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra, float rb,
-                              float pad) const {
-    // Every sphere below lies in its node's bounding ball, so a pair of them overlaps only
-    // while the balls do; the walk's float centres are within pad of the exact ones. The
-    // bound is widened by a millionth so that rounding never drops a pair that ties.
-    const Eigen::Vector3d w = (cb - ca).cast<double>();
-    const double reach = double(ra) + double(rb) + double(pad);
-    const double bound = detail::exit_root(w, reach, exit->back) + 1e-6 * (reach + w.norm());
-    return bound >= exit->root;
 }
 
 bool QueryRun::shapes_touch(uint32_t sa, uint32_t sb, const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra,
@@ -107,11 +99,17 @@ bool QueryRun::node_discs_touch(uint32_t i, uint32_t j, const Eigen::Vector3f& c
 uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3f& ca) {
     const CompactTree &ta = A.tree(), &tb = B.tree();
     const CompactNode &na = ta.nodes()[i], &nb = tb.nodes()[j];
-    // Lazy update: B's spheres are moved only here, for the leaf the walk reached,
-    // into a small buffer that stays in L1 (a whole-model copy would not).
+    // Lazy update: B's spheres are moved only here, for the leaf the walk reached: once a query
+    // into its slot when a small model's slots fit in L2, else into a buffer that stays in L1.
     const size_t lb = s.moved_b.size() / 3;
-    float *bx = s.moved_b.data(), *by = bx + lb, *bz = by + lb;
-    move_leaf(j, bx, by, bz);
+    float *bx, *by, *bz;
+    if (s.leaf_slot) {
+        bx = s.leaf_cache.data() + j * s.leaf_slot, by = bx + s.leaf_column, bz = by + s.leaf_column;
+        if (s.leaf_stamp[j] != s.epoch) s.leaf_stamp[j] = s.epoch, move_leaf(j, bx, by, bz);
+    } else {
+        bx = s.moved_b.data(), by = bx + lb, bz = by + lb;
+        move_leaf(j, bx, by, bz);
+    }
     const float* block_a = ta.centres(na);
     const float *ax = block_a, *ay = block_a + na.count, *az = block_a + 2 * na.count;
     uint32_t count_a = na.count, count_b = nb.count;

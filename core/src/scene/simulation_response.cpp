@@ -6,7 +6,10 @@
 #include "spt/error.hpp"
 #include "spt/simulation.hpp"
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <chrono>
+#include <thread>
 
 namespace spt {
 
@@ -15,27 +18,47 @@ void Simulation::respond(StepCounters& c) {
     const std::vector<PairContact>& contacts = result_.contacts;
     // Pairs act in (a, b) order, each seeing the moves of those before it. A pair reads and
     // writes only its dynamic objects (static and path objects are never moved by a response),
-    // so it depends only on the earlier pairs sharing one: batch = one after the latest of
-    // theirs. The pairs of a batch share no dynamic object and run in parallel with exactly
-    // the outcome of the one-after-the-other order, whatever the thread count.
-    std::vector<int> last(poses_.size(), -1);
+    // so it depends only on the latest earlier pair sharing each of them: batch = one after the
+    // latest of theirs, and the pairs of a batch share no dynamic object. The workers take the
+    // pairs batch by batch and start one once the two it depends on are done: exactly the
+    // outcome of the one-after-the-other order whatever the thread count, with no wait for the
+    // rest of a batch to end (and no threads started a batch).
+    std::vector<int> last(poses_.size(), -1), batch_of(poses_.size(), -1);
+    std::vector<std::array<int, 2>> after(contacts.size(), {-1, -1});
     std::vector<std::vector<uint32_t>> batches;
     for (uint32_t k = 0; k < contacts.size(); ++k) {
         const uint32_t a = contacts[k].a, b = contacts[k].b;
         const bool da = dynamic(a), db = dynamic(b);
         if (!da && !db) continue;
-        const int batch = 1 + std::max(da ? last[a] : -1, db ? last[b] : -1);
-        if (da) last[a] = batch;
-        if (db) last[b] = batch;
+        after[k] = {da ? last[a] : -1, db ? last[b] : -1};
+        const int batch = 1 + std::max(da ? batch_of[a] : -1, db ? batch_of[b] : -1);
+        for (const uint32_t i : {a, b})
+            if (dynamic(i)) last[i] = int(k), batch_of[i] = batch;
         if (size_t(batch) == batches.size()) batches.emplace_back();
         batches[size_t(batch)].push_back(k);
     }
+    std::vector<uint32_t> movers; // batch by batch: what a pair waits on comes before it
+    for (const std::vector<uint32_t>& batch : batches) movers.insert(movers.end(), batch.begin(), batch.end());
     std::vector<uint8_t> acted(contacts.size(), 0);
-    for (const std::vector<uint32_t>& batch : batches)
-        detail::parallel_for(batch.size(), threads_, [&](size_t i, int w) {
-            const uint32_t k = batch[i];
+    std::vector<std::atomic<uint8_t>> done(contacts.size());
+    for (std::atomic<uint8_t>& d : done) d.store(0, std::memory_order_relaxed);
+    std::atomic<bool> failed{false};
+    detail::parallel_for(movers.size(), threads_, [&](size_t i, int w) {
+        const uint32_t k = movers[i];
+        // Taken in order, so each pair waited on is running or done: no cycle of waits.
+        for (const int d : after[k])
+            while (d >= 0 && !done[size_t(d)].load(std::memory_order_acquire)) {
+                if (failed.load(std::memory_order_relaxed)) return; // parallel_for rethrows the failure
+                std::this_thread::yield();
+            }
+        try {
             acted[k] = respond_pair(contacts[k], start_pairs_[k], scratch_[size_t(w)]); // one per contact
-        });
+        } catch (...) {
+            failed.store(true);
+            throw;
+        }
+        done[k].store(1, std::memory_order_release);
+    });
     for (uint8_t x : acted) c.responses += x;
     c.ns_response = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
 }
