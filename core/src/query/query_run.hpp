@@ -154,6 +154,14 @@ struct QueryRun {
     // The exit root of sphere pair a, b (of nodes node_a, node_b; at level bounds the nodes), from
     // their centres moved in double as the backtrack moves them.
     void keep_exit_root(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, float reach);
+    // An overlapping pair met by an exit search (centres ca, cb in A's frame, in float).
+    void exit_pair(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
+                   const Eigen::Vector3f& cb, float reach) {
+        // Most pairs part well before the best root found so far: bounded from the walk's
+        // float centres (within the frame's margin of the double ones) before the exact root.
+        if (exit->found && !may_exit_later(ca, cb, reach, 0.0f, f.margin)) return;
+        keep_exit_root(node_a, node_b, a, b, reach);
+    }
 };
 
 inline bool QueryRun::may_exit_later(const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra, float rb,

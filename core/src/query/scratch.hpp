@@ -63,8 +63,8 @@ struct ScratchBuffers {
     std::vector<SpherePair> pairs;
     std::vector<TrianglePair> tri_pairs;
     uint32_t epoch = 0;
-    SphereMemo<Eigen::Vector3d> memo_a, memo_b;   // per-pair-list values of A's and B's spheres
-    SphereMemo<Eigen::Vector3d> memo_na, memo_nb; // a second value of each (a normal)
+    SphereMemo<Eigen::Vector3d> memo_b;           // a per-pair-list value of B's spheres
+    SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
 };
 
 } // namespace spt::detail

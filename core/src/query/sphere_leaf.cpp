@@ -35,10 +35,7 @@ void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
 void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
                       const Eigen::Vector3f& cb, float reach, float ra, float d2) {
     if (exit) {
-        // Most pairs part well before the best root found so far: bounded from the walk's
-        // float centres (within the frame's margin of the double ones) before the exact root.
-        if (exit->found && !may_exit_later(ca, cb, reach, 0.0f, f.margin)) return;
-        keep_exit_root(node_a, node_b, a, b, reach);
+        exit_pair(node_a, node_b, a, b, ca, cb, reach);
         return;
     }
     const float dist = std::sqrt(d2);
@@ -173,12 +170,22 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     uint32_t best_p = 0, best_q = 0;
     float best_d2 = INFINITY;
     const v4f lim = splat(limit2);
+    // Mode all keeps every touching pair: its depth four lanes at a time (the same floats as
+    // record's), written here rather than through a call a pair.
+    const bool collect = o.mode == QueryMode::All && !exit;
     for (uint32_t p = 0; p < count_a; ++p) {
         const float* row = d2 + size_t(p) * stride;
         for (uint32_t q0 = 0; q0 < stride; q0 += 4) {
             v4f v;
             std::memcpy(&v, row + q0, sizeof v);
-            for (unsigned bits = unsigned(movemask(v < lim)); bits; bits &= bits - 1) {
+            unsigned bits = unsigned(movemask(v < lim));
+            if (!bits) continue;
+            float depth[4];
+            if (collect) {
+                const v4f d = splat(reach) - detail::sqrt4(v);
+                std::memcpy(depth, &d, sizeof depth);
+            }
+            for (; bits; bits &= bits - 1) {
                 const uint32_t q = q0 + uint32_t(__builtin_ctz(bits));
                 if (o.mode == QueryMode::Deepest && !(row[q] < best_d2)) continue; // cannot be the closest
                 if (!touch(p, q)) continue;
@@ -192,8 +199,13 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
                     continue;
                 }
                 ++hits;
-                record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach,
-                       na.ss_radius, row[q]);
+                if (collect)
+                    s.pairs.push_back({sphere_a(p), sphere_b(q), i, j, depth[q - q0], reach});
+                else if (exit) // as record() answers an exit search, without the call
+                    exit_pair(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach);
+                else
+                    record(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach,
+                           na.ss_radius, row[q]);
             }
         }
     }

@@ -2,6 +2,7 @@
 #include "scene/pair_work.hpp"
 #include "query/scratch.hpp"
 #include <algorithm>
+#include <cmath>
 
 namespace spt::detail {
 namespace {
@@ -21,20 +22,30 @@ Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const Co
                                const std::vector<SpherePair>& pairs, const Eigen::Vector3d& fallback, bool a_moves,
                                bool b_moves, QueryScratch& scratch) {
     const bool use_a = !a_moves || b_moves, use_b = !b_moves || a_moves; // what is struck gives the normal
-    // World centres and normals made once a sphere, not once a pair (a sphere is in many pairs).
+    // World centres and normals made once a sphere, not once a pair (a sphere is in many pairs);
+    // a sphere's two side by side, found by one look-up.
     detail::ScratchBuffers& m = scratch.buffers();
-    m.memo_a.start(a.tree().sphere_count()), m.memo_na.start(a.tree().sphere_count());
-    m.memo_b.start(b.tree().sphere_count()), m.memo_nb.start(b.tree().sphere_count());
+    m.memo_ca.start(a.tree().sphere_count()), m.memo_cb.start(b.tree().sphere_count());
+    auto frame = [](const CollisionModel& o, const Pose& p, uint32_t node, uint32_t sphere) {
+        Eigen::Matrix<double, 3, 2> v;
+        v.col(0) = centre(o, p, node, sphere);
+        v.col(1) = p.rotate(surface_normal(o.tree(), sphere));
+        return v;
+    };
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     for (const SpherePair& p : pairs) {
-        const Eigen::Vector3d ab = m.memo_b.get(p.b, [&] { return centre(b, pb, p.node_b, p.b); }) -
-                                   m.memo_a.get(p.a, [&] { return centre(a, pa, p.node_a, p.a); });
-        const Eigen::Vector3d& na = m.memo_na.get(p.a, [&] { return pa.rotate(surface_normal(a.tree(), p.a)); });
-        const Eigen::Vector3d& nb = m.memo_nb.get(p.b, [&] { return pb.rotate(surface_normal(b.tree(), p.b)); });
+        const Eigen::Matrix<double, 3, 2>& sa = m.memo_ca.get(p.a, [&] { return frame(a, pa, p.node_a, p.a); });
+        const Eigen::Matrix<double, 3, 2>& sb = m.memo_cb.get(p.b, [&] { return frame(b, pb, p.node_b, p.b); });
+        const Eigen::Vector3d ab = sb.col(0) - sa.col(0);
+        const auto na = sa.col(1), nb = sb.col(1);
         // A normal gives the axis; its side is the one facing the other sphere: in a thin part the
         // spheres of the far face poke through the near one and stand for it.
-        if (use_a) n += double(p.depth) * (na.dot(ab) >= 0 ? na : Eigen::Vector3d(-na));
-        if (use_b) n -= double(p.depth) * (nb.dot(ab) <= 0 ? nb : Eigen::Vector3d(-nb));
+        // The side is the sign of the weight, set without a branch (a coin toss a pair): adding
+        // 0.0 turns a dot of -0 into +0, so the sign is that of "dot >= 0", and +-depth * n is,
+        // bit for bit, depth * (+-n).
+        const double d = p.depth;
+        if (use_a) n += std::copysign(d, na.dot(ab) + 0.0) * na;
+        if (use_b) n -= std::copysign(d, -nb.dot(ab) + 0.0) * nb;
     }
     const double len = n.norm();
     return len > 1e-12 ? Eigen::Vector3d(n / len) : fallback;
