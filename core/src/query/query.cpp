@@ -80,7 +80,27 @@ struct Grandchildren {
         z = v4f{n[0]->center[2], n[1]->center[2], n[2]->center[2], n[3]->center[2]};
         r = v4f{lr[0], lr[1], lr[2], lr[3]};
     }
+    explicit Grandchildren(const detail::NodeGroup& g) : count(g.count) {
+        std::memcpy(&x, g.x, sizeof x), std::memcpy(&y, g.y, sizeof y), std::memcpy(&z, g.z, sizeof z);
+        std::memcpy(&r, g.r, sizeof r), std::memcpy(ref, g.ref, sizeof ref);
+    }
+    void store(detail::NodeGroup& g) const {
+        std::memcpy(g.x, &x, sizeof x), std::memcpy(g.y, &y, sizeof y), std::memcpy(g.z, &z, sizeof z);
+        std::memcpy(g.r, &r, sizeof r), std::memcpy(g.ref, ref, sizeof ref);
+        g.count = count;
+    }
 };
+
+// B's inner node i's group moved into A's frame: for a small model made once a query and kept
+// (a node of B meets many of A's), else made now.
+Grandchildren b_group(const QueryFrame& f, detail::ScratchBuffers& s, const std::vector<CompactNode>& nodes,
+                      uint32_t i, const float* reach) {
+    if (s.group_cache && s.b_group_stamp[i] == s.epoch) return Grandchildren(s.b_groups[i]);
+    Grandchildren w(nodes, i, reach);
+    b_to_a(f, w.x, w.y, w.z);
+    if (s.group_cache) s.b_group_stamp[i] = s.epoch, w.store(s.b_groups[i]);
+    return w;
+}
 
 // The stack is a scratch vector used up to `size`; it grows (rarely) by doubling.
 struct VisitStack {
@@ -167,13 +187,9 @@ void QueryRun::run() {
         // Descend the larger sphere (paper: both children are visited; here the
         // grandchildren of an inner child too).
         const bool side_a = leaf_b || (!leaf_a && ra >= rb);
-        const Grandchildren w = side_a ? Grandchildren(an, ref_a, reach_a) : Grandchildren(bn, ref_b, reach_b);
-        v4f x = w.x, y = w.y, z = w.z;
-        Eigen::Vector3f other = cb;
-        if (!side_a) { // B's children into A's frame
-            b_to_a(f, x, y, z);
-            other = ca;
-        }
+        const Grandchildren w = side_a ? Grandchildren(an, ref_a, reach_a) : b_group(f, s, bn, ref_b, reach_b);
+        const v4f x = w.x, y = w.y, z = w.z;
+        const Eigen::Vector3f other = side_a ? cb : ca;
         const v4f dx = x - splat(other.x()), dy = y - splat(other.y()), dz = z - splat(other.z());
         const v4f dd = dx * dx + dy * dy + dz * dz;
         const v4f r = w.r;

@@ -66,6 +66,8 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
         if (s.leaf_cache.size() < nodes * s.leaf_slot) s.leaf_cache.resize(nodes * s.leaf_slot);
         if (s.leaf_stamp.size() < nodes) s.leaf_stamp.resize(nodes, 0);
     }
+    s.group_cache = nodes * sizeof(detail::NodeGroup) <= detail::kLeafCacheFloats * sizeof(float);
+    if (s.group_cache && s.b_groups.size() < nodes) s.b_groups.resize(nodes), s.b_group_stamp.resize(nodes, 0);
     if (s.stack.capacity() < 256) s.stack.reserve(256);
     if (s.visits.size() < 256) s.visits.resize(256);
     // B's vertices: the exact level's triangles, and the faces of two-sided spheres at the sphere level.
@@ -84,6 +86,7 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
         std::fill(s.tri_stamp.begin(), s.tri_stamp.end(), 0);
         std::fill(s.bbox_stamp.begin(), s.bbox_stamp.end(), 0);
         std::fill(s.leaf_stamp.begin(), s.leaf_stamp.end(), 0);
+        std::fill(s.b_group_stamp.begin(), s.b_group_stamp.end(), 0);
         s.epoch = 1;
     }
     s.pairs.clear();

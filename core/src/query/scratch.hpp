@@ -42,6 +42,17 @@ struct SphereMemo {
 // pebble, visited by many leaf pairs, stay in L2; a large model's leaves are moved per leaf pair).
 constexpr size_t kLeafCacheFloats = 65536;
 
+// Up to four nodes below an inner node of B, in A's frame, as the walk tests them in one step
+// (query.cpp: centre and radius columns, node references, lanes in use).
+struct NodeGroup {
+    alignas(16) float x[4];
+    alignas(16) float y[4];
+    alignas(16) float z[4];
+    alignas(16) float r[4];
+    uint32_t ref[4];
+    uint32_t count;
+};
+
 struct ScratchBuffers {
     std::vector<std::pair<uint32_t, uint32_t>> stack;  // triangle-tree walk (level exact)
     std::vector<NodePairVisit> visits;                 // sampling-tree walk
@@ -51,6 +62,10 @@ struct ScratchBuffers {
     std::vector<float> leaf_cache;
     std::vector<uint32_t> leaf_stamp;        // the epoch of the query that filled a slot
     size_t leaf_slot = 0, leaf_column = 0;   // floats a slot and a column
+    // Likewise B's inner nodes' groups, made at most once a query for a small model.
+    std::vector<NodeGroup> b_groups;
+    std::vector<uint32_t> b_group_stamp;
+    bool group_cache = false;
     std::vector<Eigen::Vector3d> bverts;     // B's vertices in A's frame (lazy)
     std::vector<uint32_t> vert_stamp;
     std::vector<float> btri;                 // B's triangle bounding spheres in A's frame (lazy)
