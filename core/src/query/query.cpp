@@ -91,14 +91,14 @@ struct Grandchildren {
     }
 };
 
-// B's inner node i's group moved into A's frame: for a small model made once a query and kept
-// (a node of B meets many of A's), else made now.
-Grandchildren b_group(const QueryFrame& f, detail::ScratchBuffers& s, const std::vector<CompactNode>& nodes,
-                      uint32_t i, const float* reach) {
-    if (s.group_cache && s.b_group_stamp[i] == s.epoch) return Grandchildren(s.b_groups[i]);
+// B's inner node i's group moved into A's frame, made once a query and kept (a small model's
+// node of B meets many of A's).
+Grandchildren cached_b_group(const QueryFrame& f, detail::ScratchBuffers& s, const std::vector<CompactNode>& nodes,
+                             uint32_t i, const float* reach) {
+    if (s.b_group_stamp[i] == s.epoch) return Grandchildren(s.b_groups[i]);
     Grandchildren w(nodes, i, reach);
     b_to_a(f, w.x, w.y, w.z);
-    if (s.group_cache) s.b_group_stamp[i] = s.epoch, w.store(s.b_groups[i]);
+    s.b_group_stamp[i] = s.epoch, w.store(s.b_groups[i]);
     return w;
 }
 
@@ -187,9 +187,16 @@ void QueryRun::run() {
         // Descend the larger sphere (paper: both children are visited; here the
         // grandchildren of an inner child too).
         const bool side_a = leaf_b || (!leaf_a && ra >= rb);
-        const Grandchildren w = side_a ? Grandchildren(an, ref_a, reach_a) : b_group(f, s, bn, ref_b, reach_b);
-        const v4f x = w.x, y = w.y, z = w.z;
-        const Eigen::Vector3f other = side_a ? cb : ca;
+        const bool cached = !side_a && s.group_cache;
+        const Grandchildren w = side_a   ? Grandchildren(an, ref_a, reach_a)
+                                : cached ? cached_b_group(f, s, bn, ref_b, reach_b)
+                                         : Grandchildren(bn, ref_b, reach_b);
+        v4f x = w.x, y = w.y, z = w.z;
+        Eigen::Vector3f other = cb;
+        if (!side_a) { // B's children into A's frame (a cached group is already there)
+            if (!cached) b_to_a(f, x, y, z);
+            other = ca;
+        }
         const v4f dx = x - splat(other.x()), dy = y - splat(other.y()), dz = z - splat(other.z());
         const v4f dd = dx * dx + dy * dy + dz * dz;
         const v4f r = w.r;
