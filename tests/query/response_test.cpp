@@ -2,6 +2,7 @@
 #include "query_fixtures.hpp"
 #include "spt/response.hpp"
 #include "query/query_run.hpp"
+#include "query/backtrack_from.hpp"
 #include <gtest/gtest.h>
 
 namespace spt {
@@ -89,6 +90,42 @@ TEST(Backtrack, PrunedExitSearchFindsTheLargestRootOfEveryOverlappingPair) {
     }
     EXPECT_GT(compared, 150);
     EXPECT_LT(walked_exit, walked_all / 2) << "the search prunes";
+}
+
+TEST(Backtrack, StartingFromTheDepthQuerysPairsGivesTheSameDistanceBitForBit) {
+    // A scene's response starts the backtrack from the sphere pairs its depth query found at
+    // the same poses, skipping pairs that part before the best root without solving them: the
+    // distance must be the one the backtrack finds on its own, with one query fewer. Far from
+    // the origin too, where the world poses' translations are large against the models.
+    static auto box = test::make_object(make_box({0.4, 0.25, 0.3}, 6));
+    std::mt19937 rng(41);
+    QueryScratch s, t;
+    int compared = 0;
+    for (int it = 0; it < 160; ++it) {
+        const bool same = it % 2 == 0;
+        const CollisionModel& a = torus().model;
+        const CollisionModel& b = same ? torus().model : box->model;
+        const Eigen::Vector3d offset = (it % 4 < 2 ? 0.0 : 1e4) * test::random_unit(rng);
+        const Pose pa = Pose::from(offset, test::random_rotation(rng));
+        const Pose rel = test::random_pose(rng, 0.1 + 0.01 * it);
+        const Pose pb = pa * rel;
+        const Eigen::Vector3d motion = test::random_unit(rng) * 0.2;
+        for (QueryLevel level : {QueryLevel::Bounds, QueryLevel::Spheres}) {
+            QueryOptions o;
+            o.level = level;
+            o.mode = QueryMode::All;
+            if (!collide(a, pa, b, pb, o, s).collide || s.pairs().empty()) continue;
+            const std::vector<SpherePair> pairs = s.pairs();
+            o.mode = QueryMode::Any;
+            const BacktrackResult alone = backtrack(a, pa, b, pb, motion, o, BacktrackRule::Exact, t);
+            const BacktrackResult from = detail::backtrack_from_pairs(a, pa, b, pb, motion, o, pairs, t);
+            ASSERT_TRUE(alone.converged && from.converged) << it;
+            EXPECT_EQ(from.distance, alone.distance) << it << " level " << int(level);
+            EXPECT_EQ(from.queries + 1, alone.queries) << it << " level " << int(level);
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 150);
 }
 
 TEST(Backtrack, ZeroMotionDirectionMovesNothing) {

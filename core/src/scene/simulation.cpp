@@ -5,6 +5,7 @@
 #include "base/parallel.hpp"
 #include "scene/pair_work.hpp"
 #include "scene/same_pose.hpp"
+#include "query/scratch.hpp"
 #include "spt/ccd.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
@@ -217,9 +218,12 @@ void Simulation::run_contacts(StepCounters& c) {
             else
                 detail::deepest_contact(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
                                         dynamic(p.a), dynamic(p.b), work[k], s);
-            const std::vector<SpherePair>& pairs = reuse ? work[k].pairs : s.pairs();
-            if (keep_pairs && band == 0 && (dynamic(p.a) || dynamic(p.b))) // a response moves one of them
-                start_pairs_[j].assign(pairs.begin(), pairs.end());
+            if (keep_pairs && band == 0 && (dynamic(p.a) || dynamic(p.b))) { // a response moves one of them
+                if (reuse)
+                    start_pairs_[j].assign(work[k].pairs.begin(), work[k].pairs.end());
+                else // taken from the scratch, which clears what it gets back at its next query
+                    start_pairs_[j].swap(s.buffers().pairs);
+            }
         });
         c.depth_queries = colliding.size();
         c.ns_depth = ns_since(t0);
