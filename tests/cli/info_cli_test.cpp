@@ -27,8 +27,6 @@ protected:
     std::vector<char> bytes;
 };
 
-} // namespace
-
 TEST_F(InfoCli, DescribesAValidFile) {
     const auto r = run_command(spt_binary() + " info " + q(dir.file("figure.spt")));
     EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -73,3 +71,5 @@ TEST_F(InfoCli, MissingFileAndMeshInsteadOfSptExitTwo) {
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.output.find("not an .spt file"), std::string::npos) << r.output;
 }
+
+} // namespace

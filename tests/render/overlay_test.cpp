@@ -35,8 +35,6 @@ std::set<uint32_t> samples_below(const SamplingTree& tree, NodeId id) {
     return out;
 }
 
-} // namespace
-
 TEST_F(TreeFixture, sampling_spheres_follow_the_compact_layout_and_levels) {
     ASSERT_GT(tree.depth(), 2);
     const auto spheres = sampling_spheres(compact, tree, ColorBy::Level);
@@ -153,3 +151,5 @@ TEST_F(TreeFixture, query_pairs_index_world_spheres) {
         }
     EXPECT_GT(clear_overlaps, 0u);
 }
+
+} // namespace

@@ -64,8 +64,6 @@ bool has_two_colours(const Image& im) {
     return false;
 }
 
-} // namespace
-
 TEST_F(RenderCli, mesh_alone_needs_only_an_output) {
     const CliRun r = spt("render figure.obj -o out.png");
     ASSERT_EQ(r.code, 0) << r.err;
@@ -226,3 +224,5 @@ TEST(RenderSceneCli, FramesAreWrittenOneAPngAndSceneOverlaysNeedAScene) {
     EXPECT_EQ(r.exit_code, 1) << r.output;
     std::filesystem::remove_all(dir);
 }
+
+} // namespace
