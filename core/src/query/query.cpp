@@ -137,8 +137,9 @@ void QueryRun::run() {
     VisitStack stack{s.visits};
     // Every pair on the stack overlaps: it was tested when pushed, four children at a
     // time, and the same distances order the descent.
-    // The pair in hand (the root first, then in mode any the nearest child) stays in
-    // registers instead of going through the stack: a store and a load less a step.
+    // The pair in hand (the root first, then the child taken next: in mode any the nearest,
+    // in an exit search the one likely to part last, else the one the stack would give back
+    // first) stays in registers instead of going through the stack: a store and a load less a step.
     uint32_t ref_a = an[0].is_active() ? kActive : 0, ref_b = bn[0].is_active() ? kActive : 0;
     Eigen::Vector3f ca(an[0].center[0], an[0].center[1], an[0].center[2]), cb = b_node_centre(0);
     float ra = reach_a ? reach_a[0] : an[0].bv_radius, rb = reach_b ? reach_b[0] : bn[0].bv_radius;
@@ -226,27 +227,34 @@ void QueryRun::run() {
                 push_visit(stack, ref_a, w.ref[k], ca.x(), ca.y(), ca.z(), Eigen::Vector3f(lx[k], ly[k], lz[k]), ra,
                            lr[k], ld2[k]);
         };
-        const unsigned first = nearest >= 0 ? 1u << nearest : 0u;
         if (exit) {
             // Exit search: the lane likely to part last on top of the stack, so that the best
             // root comes early and prunes more: by how far B's side lies behind A's along
             // back, plus the radii (the root when the centres are in line).
+            // (The order only steers the pruning: the root found is the same in any order.)
             int order[4], n = 0;
             float key[4];
             const Eigen::Vector3f back = exit->back.cast<float>();
+            const v4f along = side_a ? dx * splat(back.x()) + dy * splat(back.y()) + dz * splat(back.z())
+                                     : -(dx * splat(back.x()) + dy * splat(back.y()) + dz * splat(back.z()));
+            const v4f k4 = along + r;
+            std::memcpy(key, &k4, sizeof key);
             for (unsigned bits = unsigned(movemask(pass)); bits; bits &= bits - 1) {
                 const int k = __builtin_ctz(bits);
-                const Eigen::Vector3f child(lx[k], ly[k], lz[k]);
-                const float along = side_a ? (child - cb).dot(back) : (ca - child).dot(back);
-                key[k] = along + lr[k];
                 int m = n++;
                 for (; m > 0 && key[order[m - 1]] > key[k]; --m) order[m] = order[m - 1];
                 order[m] = k;
             }
-            for (int m = 0; m < n; ++m) push(order[m]);
-            continue;
+            // The last, taken first, is carried on below instead of pushed and popped at once.
+            for (int m = 0; m + 1 < n; ++m) push(order[m]);
+            nearest = n > 0 ? order[n - 1] : -1;
+        } else {
+            unsigned bits = unsigned(movemask(pass));
+            // Modes all and deepest: the last lane pushed would be popped at once; carried instead,
+            // the walk visits the same pairs in the same order.
+            if (!any && bits) nearest = 31 - __builtin_clz(bits);
+            for (bits &= ~(nearest >= 0 ? 1u << nearest : 0u); bits; bits &= bits - 1) push(__builtin_ctz(bits));
         }
-        for (unsigned bits = unsigned(movemask(pass)) & ~first; bits; bits &= bits - 1) push(__builtin_ctz(bits));
         if (nearest >= 0) {
             const int k = nearest;
             if (side_a)
