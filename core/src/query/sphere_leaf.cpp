@@ -3,6 +3,7 @@
 #include "query/lanes.hpp"
 #include "geometry/sample_disc.hpp"
 #include "geometry/sphere_block.hpp"
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -170,20 +171,20 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     uint32_t best_p = 0, best_q = 0;
     float best_d2 = INFINITY;
     const v4f lim = splat(limit2);
-    // Mode all keeps every touching pair: its depth four lanes at a time (the same floats as
-    // record's), written here rather than through a call a pair.
+    // Mode all keeps every touching pair with its depth (the same float as record's), written
+    // here rather than through a call a pair.
     const bool collect = o.mode == QueryMode::All && !exit;
+    // A row's hits are gathered 32 lanes at a time into one mask: a branch a row, not one a
+    // group of four (a leaf's rows are mostly a group or two, hit or not at random).
     for (uint32_t p = 0; p < count_a; ++p) {
         const float* row = d2 + size_t(p) * stride;
-        for (uint32_t q0 = 0; q0 < stride; q0 += 4) {
-            v4f v;
-            std::memcpy(&v, row + q0, sizeof v);
-            unsigned bits = unsigned(movemask(v < lim));
-            if (!bits) continue;
-            float depth[4];
-            if (collect) {
-                const v4f d = splat(reach) - detail::sqrt4(v);
-                std::memcpy(depth, &d, sizeof depth);
+        for (uint32_t q0 = 0; q0 < stride; q0 += 32) {
+            const uint32_t q1 = std::min(stride, q0 + 32);
+            unsigned bits = 0;
+            for (uint32_t g = q0; g < q1; g += 4) {
+                v4f v;
+                std::memcpy(&v, row + g, sizeof v);
+                bits |= unsigned(movemask(v < lim)) << (g - q0);
             }
             for (; bits; bits &= bits - 1) {
                 const uint32_t q = q0 + uint32_t(__builtin_ctz(bits));
@@ -200,7 +201,7 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
                 }
                 ++hits;
                 if (collect)
-                    s.pairs.push_back({sphere_a(p), sphere_b(q), i, j, depth[q - q0], reach});
+                    s.pairs.push_back({sphere_a(p), sphere_b(q), i, j, reach - std::sqrt(row[q]), reach});
                 else if (exit) // as record() answers an exit search, without the call
                     exit_pair(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach);
                 else
