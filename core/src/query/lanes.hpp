@@ -1,7 +1,6 @@
 #pragma once
 // Four-lane float vectors of the query walk and the one way B's points are moved into A's frame.
 #include "query/query_run.hpp"
-#include <cmath>
 #include <cstdint>
 #if defined(__SSE__)
 #include <xmmintrin.h>
@@ -22,15 +21,6 @@ inline int movemask(v4i m) {
     int bits = 0;
     for (int k = 0; k < 4; ++k) bits |= (m[k] & 1) << k;
     return bits;
-#endif
-}
-
-// Square root lane by lane, each correctly rounded as std::sqrt rounds one float.
-inline v4f sqrt4(v4f v) {
-#if defined(__SSE__)
-    return v4f(_mm_sqrt_ps(__m128(v)));
-#else
-    return v4f{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
 #endif
 }
 
