@@ -63,6 +63,15 @@ inline double exit_root(const Eigen::Vector3d& w, double reach, const Eigen::Vec
     return -half_b + std::sqrt(std::max(0.0, half_b * half_b - c));
 }
 
+// Whether the exit root of two such balls may reach S (lie at or beyond it), told without a
+// square root: the middle of their chord lies at or beyond S, or they still overlap at S. The
+// reach is widened by a millionth (of it and of |w|) so that rounding never drops a tie.
+inline bool exit_may_reach(const Eigen::Vector3d& w, double reach, const Eigen::Vector3d& back, double S) {
+    if (-w.dot(back) >= S) return true;
+    const double wide = reach + 1e-6 * (reach + w.cwiseAbs().sum());
+    return (w + S * back).squaredNorm() <= wide * wide;
+}
+
 // Local-frame centre of one side of a recorded pair (SpherePair): sphere k of active node
 // `node`, or at level bounds node k itself, in double.
 inline Eigen::Vector3d pair_centre(const CompactTree& t, bool bounds, uint32_t node, uint32_t k) {
@@ -154,6 +163,11 @@ struct QueryRun {
     // The exit root of sphere pair a, b (of nodes node_a, node_b; at level bounds the nodes), from
     // their centres moved in double as the backtrack moves them.
     void keep_exit_root(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, float reach);
+    // Mode all: records overlapping pair a, b (of nodes node_a, node_b), squared centre distance
+    // d2, with its depth.
+    void keep_pair(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, float reach, float d2) {
+        s.pairs.push_back({a, b, node_a, node_b, reach - std::sqrt(d2), reach});
+    }
     // An overlapping pair met by an exit search (centres ca, cb in A's frame, in float).
     void exit_pair(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, const Eigen::Vector3f& ca,
                    const Eigen::Vector3f& cb, float reach) {
@@ -167,16 +181,9 @@ struct QueryRun {
 inline bool QueryRun::may_exit_later(const Eigen::Vector3f& ca, const Eigen::Vector3f& cb, float ra, float rb,
                                      float pad) const {
     // Every sphere below lies in its node's bounding ball, so a pair of them overlaps only
-    // while the balls do; the walk's float centres are within pad of the exact ones. The
-    // balls' exit root reaches the best root S when their chord's middle lies at or beyond S,
-    // or when they still overlap at S (the root's inequality squared: no square root). The
-    // reach is widened by a millionth so that rounding never drops a pair that ties.
-    const Eigen::Vector3d w = (cb - ca).cast<double>();
-    const double S = exit->root;
-    if (-w.dot(exit->back) >= S) return true;
-    const double r = double(ra) + double(rb) + double(pad);
-    const double wide = r + 1e-6 * (r + w.cwiseAbs().sum());
-    return (w + S * exit->back).squaredNorm() <= wide * wide;
+    // while the balls do; the walk's float centres are within pad of the exact ones.
+    return detail::exit_may_reach((cb - ca).cast<double>(), double(ra) + double(rb) + double(pad), exit->back,
+                                  exit->root);
 }
 
 } // namespace spt

@@ -79,12 +79,8 @@ BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, 
                 });
                 const Eigen::Vector3d w = cb - ca;
                 const double reach = pair.reach;
-                // A pair that parts before the best root so far is skipped without its square root:
-                // it does when the middle of its chord lies before that root and it no longer
-                // overlaps there (the reach widened by a millionth: rounding never skips a tie).
-                if (exit.found && -w.dot(back) < exit.root &&
-                    (w + exit.root * back).squaredNorm() > reach * reach * (1 + 2e-6))
-                    continue;
+                // A pair that parts before the best root so far is skipped without its square root.
+                if (exit.found && !detail::exit_may_reach(w, reach, back, exit.root)) continue;
                 detail::keep_exit(exit, detail::exit_root(w, reach, back), reach);
             }
         } else {

@@ -39,12 +39,12 @@ void QueryRun::record(uint32_t node_a, uint32_t node_b, uint32_t a, uint32_t b, 
         exit_pair(node_a, node_b, a, b, ca, cb, reach);
         return;
     }
-    const float dist = std::sqrt(d2);
-    const float depth = reach - dist;
     if (o.mode == QueryMode::All) {
-        s.pairs.push_back({a, b, node_a, node_b, depth, reach});
+        keep_pair(node_a, node_b, a, b, reach, d2);
         return;
     }
+    const float dist = std::sqrt(d2);
+    const float depth = reach - dist;
     if (have_best && !(depth > res.deepest.depth)) return;
     have_best = true;
     Contact& c = res.deepest;
@@ -171,8 +171,8 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     uint32_t best_p = 0, best_q = 0;
     float best_d2 = INFINITY;
     const v4f lim = splat(limit2);
-    // Mode all keeps every touching pair with its depth (the same float as record's), written
-    // here rather than through a call a pair.
+    // Mode all keeps every touching pair here (keep_pair, as record() does) without a call to
+    // record() a pair.
     const bool collect = o.mode == QueryMode::All && !exit;
     // A row's hits are gathered 32 lanes at a time into one mask: a branch a row, not one a
     // group of four (a leaf's rows are mostly a group or two, hit or not at random).
@@ -201,7 +201,7 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
                 }
                 ++hits;
                 if (collect)
-                    s.pairs.push_back({sphere_a(p), sphere_b(q), i, j, reach - std::sqrt(row[q]), reach});
+                    keep_pair(i, j, sphere_a(p), sphere_b(q), reach, row[q]);
                 else if (exit) // as record() answers an exit search, without the call
                     exit_pair(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach);
                 else
