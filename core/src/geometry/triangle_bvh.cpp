@@ -14,24 +14,41 @@ namespace spt::detail {
 
 Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                     const Eigen::Vector3d& c) {
-    const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+    // In scalars, not Eigen expressions: the same operations in the same order (so the same
+    // bits), but no vector temporaries and element calls for -O1 builds with the sanitizers
+    // to give stack slots and checks (this function was half of a sanitized conversion).
+    const double px = p[0], py = p[1], pz = p[2], ax = a[0], ay = a[1], az = a[2];
+    const double bx = b[0], by = b[1], bz = b[2], cx = c[0], cy = c[1], cz = c[2];
+    const double abx = bx - ax, aby = by - ay, abz = bz - az;
+    const double acx = cx - ax, acy = cy - ay, acz = cz - az;
+    const double apx = px - ax, apy = py - ay, apz = pz - az;
+    const double d1 = abx * apx + aby * apy + abz * apz, d2 = acx * apx + acy * apy + acz * apz;
     if (d1 <= 0 && d2 <= 0) return a;
-    const Eigen::Vector3d bp = p - b;
-    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+    const double bpx = px - bx, bpy = py - by, bpz = pz - bz;
+    const double d3 = abx * bpx + aby * bpy + abz * bpz, d4 = acx * bpx + acy * bpy + acz * bpz;
     if (d3 >= 0 && d4 <= d3) return b;
     const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-    const Eigen::Vector3d cp = p - c;
-    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        const double v = d1 / (d1 - d3);
+        return {ax + abx * v, ay + aby * v, az + abz * v};
+    }
+    const double cpx = px - cx, cpy = py - cy, cpz = pz - cz;
+    const double d5 = abx * cpx + aby * cpy + abz * cpz, d6 = acx * cpx + acy * cpy + acz * cpz;
     if (d6 >= 0 && d5 <= d6) return c;
     const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        const double w = d2 / (d2 - d6);
+        return {ax + acx * w, ay + acy * w, az + acz * w};
+    }
     const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return {bx + (cx - bx) * w, by + (cy - by) * w, bz + (cz - bz) * w};
+    }
     const double denom = va + vb + vc;
     if (!(std::abs(denom) > 0)) return a; // degenerate triangle
-    return a + ab * (vb / denom) + ac * (vc / denom);
+    const double v = vb / denom, w = vc / denom;
+    return {ax + abx * v + acx * w, ay + aby * v + acy * w, az + abz * v + acz * w};
 }
 
 namespace {
@@ -289,24 +306,27 @@ bool TriangleBvh::touches(const BallSegmentProbe& p) const {
 bool TriangleBvh::triangle_within(uint32_t triangle, const Eigen::Vector3d& p, double d2) const {
     const Triangle& t = mesh_.triangles[triangle];
     const Eigen::Vector3d q = closest_on_triangle(p, mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
-    return (q - p).squaredNorm() < d2;
+    const double x = q[0] - p[0], y = q[1] - p[1], z = q[2] - p[2];
+    return x * x + y * y + z * z < d2;
 }
 
 bool TriangleBvh::triangle_crossed(uint32_t triangle, const Eigen::Vector3d& a, const Eigen::Vector3d& d, double skip,
                                    double end) const {
+    // Moller-Trumbore in scalars, as closest_on_triangle, for the same reason.
     const Triangle& t = mesh_.triangles[triangle];
-    const Eigen::Vector3d& v0 = mesh_.positions[t[0]];
-    const Eigen::Vector3d e1 = mesh_.positions[t[1]] - v0, e2 = mesh_.positions[t[2]] - v0;
-    const Eigen::Vector3d pv = d.cross(e2);
-    const double det = e1.dot(pv);
+    const Eigen::Vector3d &v0 = mesh_.positions[t[0]], &v1 = mesh_.positions[t[1]], &v2 = mesh_.positions[t[2]];
+    const double e1x = v1[0] - v0[0], e1y = v1[1] - v0[1], e1z = v1[2] - v0[2];
+    const double e2x = v2[0] - v0[0], e2y = v2[1] - v0[1], e2z = v2[2] - v0[2];
+    const double pvx = d[1] * e2z - d[2] * e2y, pvy = d[2] * e2x - d[0] * e2z, pvz = d[0] * e2y - d[1] * e2x;
+    const double det = e1x * pvx + e1y * pvy + e1z * pvz;
     if (std::abs(det) < 1e-300) return false;
-    const Eigen::Vector3d tv = a - v0;
-    const double u = tv.dot(pv) / det;
+    const double tx = a[0] - v0[0], ty = a[1] - v0[1], tz = a[2] - v0[2];
+    const double u = (tx * pvx + ty * pvy + tz * pvz) / det;
     if (u < 0 || u > 1) return false;
-    const Eigen::Vector3d qv = tv.cross(e1);
-    const double v = d.dot(qv) / det;
+    const double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
+    const double v = (d[0] * qx + d[1] * qy + d[2] * qz) / det;
     if (v < 0 || u + v > 1) return false;
-    const double s = e2.dot(qv) / det;
+    const double s = (e2x * qx + e2y * qy + e2z * qz) / det;
     return s > skip && s <= end;
 }
 

@@ -6,6 +6,7 @@
 #include "geometry/tri_tri.hpp"
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace spt {
 
@@ -16,12 +17,15 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
     const QueryMode mode = options.mode;
     auto done = [&] { return run.res.collide && mode == QueryMode::Any; };
     if (options.level == QueryLevel::Bounds) {
+        // B's node centres moved once, not once a pair: the same floats, an n + m cost.
+        std::vector<Eigen::Vector3f> b_centre(bn.size());
+        for (uint32_t j = 0; j < bn.size(); ++j) b_centre[j] = run.b_node_centre(j);
         for (uint32_t i = 0; i < an.size() && !done(); ++i)
             for (uint32_t j = 0; j < bn.size() && an[i].is_active() && !done(); ++j) {
                 if (!bn[j].is_active()) continue;
                 ++run.res.counters.bound_tests;
                 const Eigen::Vector3f ca(an[i].center[0], an[i].center[1], an[i].center[2]);
-                const Eigen::Vector3f cb = run.b_node_centre(j);
+                const Eigen::Vector3f& cb = b_centre[j];
                 const float sum = an[i].bv_radius + bn[j].bv_radius + options.inflate;
                 const float d2 = (ca - cb).squaredNorm();
                 if (!(d2 < sum * sum)) continue;
