@@ -81,6 +81,17 @@ TEST(ConvertCli, NaNCoordinateIsBadInputNamingTheFile) {
     EXPECT_FALSE(fs::exists(out.file("n.spt")));
 }
 
+TEST(ConvertCli, ToleranceFarBelowTheMeshsDetailIsExitTwoNamingTheFile) {
+    // Model units mistaken for a fraction of the diagonal: torus.obj would need about 1e12 samples.
+    TempDir out("tiny-tolerance");
+    const auto r = run_command(spt_binary() + " convert " + q(project_meshes() + "/torus.obj") +
+                               " --tolerance 1e-6 -o " + q(out.file("t.spt")));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("torus.obj: a tolerance of 1e-06"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("give a larger --tolerance"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out.file("t.spt")));
+}
+
 TEST(ConvertCli, ParallelOutputIsByteIdenticalToSerial) {
     TempDir out("determinism");
     const std::string in = q(project_meshes()) + "/*.*";

@@ -44,6 +44,11 @@ constexpr double kDefaultProtrusion = 0.0025;
 /// Tolerance applied automatically (fraction of the diagonal) when vertices leave holes.
 constexpr double kAutoTolerance = 0.005;
 
+/// Most samples a conversion with face samples makes (about 1.2 GB in memory, as much again
+/// as a file): a tolerance that would need more, far below the mesh's own detail, is refused
+/// as bad input.
+constexpr size_t kMaxSamples = size_t(1) << 25;
+
 /// What make_document did beyond the document itself.
 struct ConvertStats {
     size_t vertex_samples = 0;       ///< samples at mesh vertices

@@ -6,7 +6,9 @@
 #include "sampling/surface_samples.hpp"
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 
 namespace spt {
 namespace {
@@ -135,8 +137,29 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     // 1/kRadiusClassRatio of each member's own radius: faces are sampled for that radius.
     const double eps = *options.tolerance / 2;
     SampleSet s = vertex_samples;
+    // A tolerance far below the mesh's detail (model units mistaken for a fraction of the
+    // diagonal, say) would sample for hours into all memory: refused up front from a lower
+    // bound on the count, or as soon as the samples pass the limit.
+    const auto too_many = [&](const std::string& count) {
+        std::ostringstream why;
+        why << "a tolerance of " << *options.tolerance << " (" << *options.tolerance / mesh.diagonal()
+            << " of the diagonal " << mesh.diagonal() << ") needs " << count << " samples; at most " << kMaxSamples
+            << " are made: give a larger --tolerance";
+        throw_bad_input(mesh.name, why.str());
+    };
+    const double least = least_face_samples(limiter, eps, rule, 1.0f / kRadiusClassRatio);
+    if (double(s.size()) + least > double(kMaxSamples)) {
+        std::ostringstream count;
+        count << "at least " << std::setprecision(3) << double(s.size()) + least;
+        too_many(count.str());
+    }
     stage(options, mesh, "sampling faces");
-    s.append(face_samples(limiter, s.origin, eps, rule, 1.0f / kRadiusClassRatio, threads, options.cancel));
+    try {
+        s.append(face_samples(limiter, s.origin, eps, rule, 1.0f / kRadiusClassRatio, threads, options.cancel,
+                              kMaxSamples - s.size()));
+    } catch (const TooManySamples&) {
+        too_many("more than " + std::to_string(kMaxSamples));
+    }
     stage(options, mesh, nullptr); // a cancel during face sampling left it unfinished
     st.sample_seconds = seconds_since(t0);
     stage(options, mesh, "building the tree");

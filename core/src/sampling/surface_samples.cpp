@@ -114,6 +114,12 @@ double nearest_corner_bound(const double len2[3]) {
     return std::sqrt(std::min(circum2, c2 / 3.0));
 }
 
+// A face sample's spacing: it stands for the mesh's own resolution (it sets default radii),
+// not the grid's.
+float face_spacing(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    return float(((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0);
+}
+
 // Adaptive sampling of one triangle on a dyadic barycentric grid: a sub-triangle is fine
 // when every point of it is close enough to one of its corners for that corner's sphere:
 // within the tolerance of a one-sided sphere, inside a two-sided one (open parts).
@@ -189,8 +195,7 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const Eigen::Vector3d fn = (b - a).cross(c - a);
     if (!(fn.norm() > 0)) return;
-    // Spacing stands for the mesh's own resolution (it sets default radii), not the grid's.
-    const float spacing = float(((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3.0);
+    const float spacing = face_spacing(a, b, c);
     FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), limiter.face_on_open_part(face),
                    spacing, rule, radius_factor, eps, {}};
     const int64_t g = FaceSampler::kGrid;
@@ -198,14 +203,44 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
 }
 
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
-                       float radius_factor, int threads, const std::atomic<bool>* cancel) {
+                       float radius_factor, int threads, const std::atomic<bool>* cancel, size_t max_samples) {
     const size_t faces = limiter.mesh().triangles.size();
+    std::atomic<size_t> made{0};
     return sample_in_runs(faces, origin, threads, [&](size_t first, size_t last, SampleSet& s) {
         for (auto f = uint32_t(first); f < last; ++f) {
             if ((f & 4095u) == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
+            const size_t before = s.size();
             add_face_samples(s, limiter, f, eps, rule, radius_factor);
+            const size_t total = made.fetch_add(s.size() - before, std::memory_order_relaxed) + s.size() - before;
+            if (total > max_samples) throw TooManySamples{total};
         }
     });
+}
+
+double least_face_samples(const RadiusLimiter& limiter, double eps, const RadiusRule& rule, float radius_factor) {
+    // A sub-triangle with longest edge L has area at most sqrt(3)/4 L^2. add_face_samples stops
+    // refining one only once L <= sqrt(3) x max_face_sample_gap(r, eps) (one-sided), or once
+    // L <= 2 x kTwoSidedCoverage x r (two-sided: the nearest corner is at least L/2 away from
+    // some point), for r at most the rule's radius, and a two-sided one at most the two-sided
+    // cap (1% above either, for rounding). A face of area A thus ends in at least
+    // A / (largest such area) sub-triangles, whose corners are samples: at least half as many
+    // corners as sub-triangles (Euler's formula).
+    const TriangleMesh& mesh = limiter.mesh();
+    double least = 0;
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+        const auto& t = mesh.triangles[f];
+        const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        if (!(area > 0) || !std::isfinite(area)) continue;
+        const float spacing = face_spacing(a, b, c);
+        const bool two_sided = limiter.face_on_open_part(f);
+        const double r = 1.01 * (two_sided ? rule.for_sample(spacing, float(limiter.two_sided_radius()))
+                                           : double(radius_factor) * rule.for_sample(spacing, INFINITY));
+        const double longest = two_sided ? 2 * kTwoSidedCoverage * r : std::sqrt(3.0) * max_face_sample_gap(r, eps);
+        const double largest_area = std::sqrt(3.0) / 4 * longest * longest;
+        if (largest_area > 0) least += 0.5 * std::floor(area / largest_area);
+    }
+    return least;
 }
 
 } // namespace spt

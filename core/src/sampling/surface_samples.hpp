@@ -3,6 +3,8 @@
 #include "spt/samples.hpp"
 #include "sampling/radius_limiter.hpp"
 #include <atomic>
+#include <cstddef>
+#include <cstdint>
 
 namespace spt {
 
@@ -43,8 +45,17 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
 /// `origin` (add_face_samples of each), on up to `threads` threads with the same samples as on
 /// one. Once `cancel` (may be null) is set, the faces not yet begun are skipped (it is looked at
 /// every 4,096 faces): the caller checks it after the call and discards the set.
+/// Throws TooManySamples as soon as the set would hold more than `max_samples` samples.
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
-                       float radius_factor, int threads, const std::atomic<bool>* cancel = nullptr);
+                       float radius_factor, int threads, const std::atomic<bool>* cancel = nullptr,
+                       size_t max_samples = SIZE_MAX);
+/// Thrown by face_samples when the samples pass its `max_samples`.
+struct TooManySamples {
+    size_t reached; ///< samples made when it stopped
+};
+/// A lower bound on the number of samples face_samples(limiter, ..., eps, rule, radius_factor)
+/// makes, from each face's area and the largest sub-triangle its stopping rule can accept; O(faces).
+double least_face_samples(const RadiusLimiter& limiter, double eps, const RadiusRule& rule, float radius_factor);
 /// Largest in-plane distance between face samples that keeps the uncovered depth
 /// under spheres of radius r within eps: sqrt(h^2 + r^2) - r <= eps.
 double max_face_sample_gap(double radius, double eps);
