@@ -85,4 +85,25 @@ TEST(SampleLimit, FaceSamplesStopOnceTheyPassTheirLimitOnOneThreadOrMore) {
     }
 }
 
+TEST(SampleLimit, OneFaceStopsWithinItselfOnceItsSamplesPassItsRoom) {
+    // A single face can ask for more samples than memory holds: it stops at the limit, not
+    // after it has made them all.
+    const TriangleMesh mesh = make_box({0.5, 0.5, 0.5}, 1);
+    const RadiusLimiter limiter(mesh, 1e-5);
+    SampleSet all;
+    add_face_samples(all, limiter, 0, 2e-3, {}, 0.5f);
+    ASSERT_GT(all.size(), 500u);
+    SampleSet some;
+    try {
+        add_face_samples(some, limiter, 0, 2e-3, {}, 0.5f, 500);
+        FAIL() << "a face of " << all.size() << " samples did not stop at 500";
+    } catch (const TooManySamples& t) {
+        EXPECT_EQ(t.reached, 501u);
+        EXPECT_EQ(some.size(), 500u);
+    }
+    SampleSet exactly;
+    add_face_samples(exactly, limiter, 0, 2e-3, {}, 0.5f, all.size());
+    EXPECT_EQ(exactly.size(), all.size());
+}
+
 } // namespace

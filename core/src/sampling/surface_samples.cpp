@@ -136,6 +136,7 @@ struct FaceSampler {
     RadiusRule rule;
     float factor;
     double eps;
+    size_t room; // samples this face may add before it stops (TooManySamples)
     std::map<std::pair<int64_t, int64_t>, float> radius_at; // assumed radius of each corner sample
 
     Eigen::Vector3d point(int64_t i, int64_t j) const {
@@ -144,6 +145,8 @@ struct FaceSampler {
     float corner(int64_t i, int64_t j) {
         auto it = radius_at.find({i, j});
         if (it != radius_at.end()) return it->second;
+        // One face can ask for more samples than memory holds (a tolerance far below its size).
+        if (radius_at.size() >= room) throw TooManySamples{radius_at.size() + 1};
         const Eigen::Vector3d p = point(i, j); // on the face: limited there, stored local in float
         const float cap = limiter.limit(p, normal, search_radius(rule, spacing, two_sided), two_sided);
         out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit | (two_sided ? kTwoSidedBit : 0), spacing, cap);
@@ -189,7 +192,7 @@ struct FaceSampler {
 } // namespace
 
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
-                      const RadiusRule& rule, float radius_factor) {
+                      const RadiusRule& rule, float radius_factor, size_t room) {
     const TriangleMesh& mesh = limiter.mesh();
     const auto& t = mesh.triangles[face];
     const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
@@ -197,7 +200,7 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     if (!(fn.norm() > 0)) return;
     const float spacing = face_spacing(a, b, c);
     FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), limiter.face_on_open_part(face),
-                   spacing, rule, radius_factor, eps, {}};
+                   spacing, rule, radius_factor, eps, room, {}};
     const int64_t g = FaceSampler::kGrid;
     fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
 }
@@ -209,8 +212,12 @@ SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& orig
     return sample_in_runs(faces, origin, threads, [&](size_t first, size_t last, SampleSet& s) {
         for (auto f = uint32_t(first); f < last; ++f) {
             if ((f & 4095u) == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
-            const size_t before = s.size();
-            add_face_samples(s, limiter, f, eps, rule, radius_factor);
+            const size_t before = s.size(), so_far = made.load(std::memory_order_relaxed);
+            try {
+                add_face_samples(s, limiter, f, eps, rule, radius_factor, max_samples - std::min(so_far, max_samples));
+            } catch (const TooManySamples& t) {
+                throw TooManySamples{so_far + t.reached};
+            }
             const size_t total = made.fetch_add(s.size() - before, std::memory_order_relaxed) + s.size() - before;
             if (total > max_samples) throw TooManySamples{total};
         }

@@ -33,26 +33,29 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
 /// sphere's radius from its centre (the rest is a margin for rounding).
 constexpr double kTwoSidedCoverage = 0.9;
 
+/// Thrown by add_face_samples and face_samples when the samples would pass their limit.
+struct TooManySamples {
+    size_t reached; ///< samples there would have been with the next one
+};
+
 /// Adds face samples (face normals, relative to samples.origin) on `triangle`, refining adaptively until every point of
 /// it lies within reach of a face sample whose sphere leaves it at most `eps` uncovered (on an
 /// open part: lies inside the sphere, within kTwoSidedCoverage of its radius; the samples are
 /// two-sided), assuming each sample's radius is `radius_factor` x rule.for_sample(spacing, max_radius)
-/// (two-sided: 1 x, as the builder keeps their radius).
+/// (two-sided: 1 x, as the builder keeps their radius). Throws TooManySamples (counting this
+/// face's samples) before it would add more than `room` samples.
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
-                      const RadiusRule& rule, float radius_factor);
+                      const RadiusRule& rule, float radius_factor, size_t room = SIZE_MAX);
 
 /// The face samples of every triangle of the limiter's mesh, in triangle order, relative to
 /// `origin` (add_face_samples of each), on up to `threads` threads with the same samples as on
 /// one. Once `cancel` (may be null) is set, the faces not yet begun are skipped (it is looked at
 /// every 4,096 faces): the caller checks it after the call and discards the set.
-/// Throws TooManySamples as soon as the set would hold more than `max_samples` samples.
+/// Throws TooManySamples once the set would hold more than `max_samples` samples (a face stops
+/// when its own samples would take the count past it; threads running at once may each reach it).
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
                        float radius_factor, int threads, const std::atomic<bool>* cancel = nullptr,
                        size_t max_samples = SIZE_MAX);
-/// Thrown by face_samples when the samples pass its `max_samples`.
-struct TooManySamples {
-    size_t reached; ///< samples made when it stopped
-};
 /// A lower bound on the number of samples face_samples(limiter, ..., eps, rule, radius_factor)
 /// makes, from each face's area and the largest sub-triangle its stopping rule can accept; O(faces).
 double least_face_samples(const RadiusLimiter& limiter, double eps, const RadiusRule& rule, float radius_factor);
