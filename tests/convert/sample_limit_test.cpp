@@ -40,7 +40,7 @@ TEST(SampleLimit, LeastFaceSamplesIsALowerBoundOnTheSamplesMadeAndNotFarBelowThe
             EXPECT_LE(least, double(made)) << c.name << " at " << relative;
             // A bound that grows with the count, not a vacuous one: radii below the rule's
             // (sharp edges, thin walls) and bisection's leaves below the largest accepted keep
-            // it 3-300x under the count on these meshes; the running limit covers the rest.
+            // it 2.5-300x under the count on these meshes; the running limit covers the rest.
             if (made > 20000) {
                 EXPECT_GT(least, 0.002 * double(made)) << c.name << " at " << relative;
             }
