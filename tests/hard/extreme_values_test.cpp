@@ -221,15 +221,15 @@ std::pair<std::vector<Eigen::Vector3d>, std::vector<Triangle>> unwelded_box(doub
 
 TEST(ExtremeMeshes, CoordinatesBeyond1e16AreRefused) {
     for (double x : {1.0000001e16, 1e30, 3e38, kMax}) {
-        auto [p, t] = unwelded_box(1, Eigen::Vector3d(x, 0, 0));
-        EXPECT_EQ(kind_of([&] { prepare_mesh("far.obj", p, t); }), ErrorKind::BadInput) << x;
+        const auto mesh = unwelded_box(1, Eigen::Vector3d(x, 0, 0));
+        EXPECT_EQ(kind_of([&] { prepare_mesh("far.obj", mesh.first, mesh.second); }), ErrorKind::BadInput) << x;
     }
 }
 
 TEST(ExtremeMeshes, SubnormalAndTinyMeshesAreRefused) {
     for (double half : {4.9e-324, 1e-310, 1e-200, 1e-17}) {
-        auto [p, t] = unwelded_box(half, Eigen::Vector3d::Zero());
-        EXPECT_EQ(kind_of([&] { prepare_mesh("tiny.obj", p, t); }), ErrorKind::BadInput) << half;
+        const auto mesh = unwelded_box(half, Eigen::Vector3d::Zero());
+        EXPECT_EQ(kind_of([&] { prepare_mesh("tiny.obj", mesh.first, mesh.second); }), ErrorKind::BadInput) << half;
     }
 }
 
