@@ -8,6 +8,9 @@
 #include "test_meshes.hpp"
 #include <gtest/gtest.h>
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
 #include <set>
 
 using namespace spt;
@@ -100,6 +103,40 @@ TEST(overlay, sphere_pairs_by_brute_force) {
     const render::SpherePair same = make_sphere_pair({{1, 1, 1}, 1}, {{1, 1, 1}, 2});
     EXPECT_TRUE(same.normal.isApprox(Eigen::Vector3f::UnitY()));
     EXPECT_FLOAT_EQ(same.depth, 3.0f);
+}
+
+// The sweep keeps exactly the pairs, in the order, of testing every sphere of a against every
+// sphere of b: spheres of many sizes, ties in x, one far out that reaches back, one with a NaN
+// centre (overlaps nothing), one of infinite radius (overlaps every finite one) and one of
+// negative radius.
+TEST(overlay, sphere_pairs_are_those_of_pairing_off_every_sphere) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-4, 4), size(0.01f, 0.8f);
+    auto spheres = [&](int n) {
+        std::vector<Sphere> s;
+        for (int k = 0; k < n; ++k) s.push_back({{u(rng), u(rng), u(rng)}, size(rng)});
+        s.push_back({{s[3].center.x(), 0, 0}, 0.5f});     // the same x as another
+        s.push_back({{1e7f, 0, 0}, 1e7f});                // reaches back to the others
+        s.push_back({{NAN, 0, 0}, 1});
+        s.push_back({{0, 0, 0}, std::numeric_limits<float>::infinity()});
+        s.push_back({{1, 1, 1}, -0.9f}); // the pair test squares the sum of radii
+        return s;
+    };
+    const std::vector<Sphere> a = spheres(300), b = spheres(400);
+    std::vector<render::SpherePair> expected;
+    for (const Sphere& x : a)
+        for (const Sphere& y : b) {
+            const float r = x.radius + y.radius;
+            if ((y.center - x.center).squaredNorm() < r * r) expected.push_back(make_sphere_pair(x, y));
+        }
+    const auto pairs = overlapping_pairs(a, b);
+    ASSERT_EQ(pairs.size(), expected.size());
+    ASSERT_GT(pairs.size(), 300u);
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        EXPECT_EQ(pairs[k].a.center, expected[k].a.center) << k;
+        EXPECT_EQ(pairs[k].b.center, expected[k].b.center) << k;
+        EXPECT_EQ(pairs[k].b.radius, expected[k].b.radius) << k;
+    }
 }
 
 TEST_F(TreeFixture, world_spheres_apply_the_pose) {

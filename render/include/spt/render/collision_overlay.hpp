@@ -3,8 +3,8 @@
 /// colliding pairs in spt::QueryScratch::pairs() as sphere indices in CompactTree
 /// order; world_spheres gives each tree's spheres in that order, and
 /// make_sphere_pair turns one pair of them into what the overlay draws.
-/// overlapping_pairs finds every pair by brute force without the query: a
-/// reference for tests and tiny scenes.
+/// overlapping_pairs finds every pair without a tree or the query: a reference
+/// for tests and small scenes.
 #include "spt/compact_tree.hpp"
 #include "spt/render/frame.hpp"
 #include <vector>
@@ -22,7 +22,9 @@ std::vector<Sphere> world_spheres(const CompactTree& compact, const Eigen::Affin
 SpherePair make_sphere_pair(const Sphere& a, const Sphere& b);
 
 /// Every (i, j) with a[i] and b[j] overlapping (depth > 0), ordered by i then j, in
-/// the frame of a and b. O(|a| |b|): for tests and small overlays.
+/// the frame of a and b: the pairs of testing every sphere of a against every sphere of
+/// b, found by a sweep along x (O((|a| + |b|) log |b|) plus the spheres each one's x
+/// window holds).
 std::vector<SpherePair> overlapping_pairs(const std::vector<Sphere>& a, const std::vector<Sphere>& b);
 
 } // namespace spt::render
