@@ -20,7 +20,20 @@ using namespace spt;
 // Uniform in [lo, hi) from the raw generator output, identical on every standard library.
 double uniform(std::mt19937& rng, double lo, double hi) { return lo + (hi - lo) * (double(rng()) / 4294967296.0); }
 
+// Vectors of uniform draws, one draw a statement, z first: the order of a call's arguments is
+// the compiler's choice, and the scenes must come out the same from every build (this is the
+// order in which they were first made).
+Eigen::Vector3d xyz(std::mt19937& rng, double lo, double hi) {
+    const double z = uniform(rng, lo, hi), y = uniform(rng, lo, hi), x = uniform(rng, lo, hi);
+    return {x, y, z};
+}
+Eigen::Vector2d yz(std::mt19937& rng, double lo, double hi) {
+    const double z = uniform(rng, lo, hi), y = uniform(rng, lo, hi);
+    return {y, z};
+}
+
 json vec(double x, double y, double z) { return json::array({x, y, z}); }
+json vec3(const Eigen::Vector3d& v) { return vec(v.x(), v.y(), v.z()); }
 
 json object(const std::string& name, const std::string& model) { return json{{"name", name}, {"model", model}}; }
 
@@ -63,12 +76,14 @@ void fig8(const fs::path& dir) {
     s["response"] = {{"rule", "backtrack"}, {"restitution", 0.5}};
     json a = object("torus", "../meshes/torus.obj"), b = object("part", "../meshes/cad_part.stl");
     a["position"] = vec(-1.5, 0, 0), b["position"] = vec(1.5, 0.1, 0);
-    const Eigen::Vector3d da = (Eigen::Vector3d(1, uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3))).normalized();
-    const Eigen::Vector3d db = (Eigen::Vector3d(-1, uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3))).normalized();
+    const Eigen::Vector2d ta = yz(rng, -0.3, 0.3);
+    const Eigen::Vector3d da = Eigen::Vector3d(1, ta.x(), ta.y()).normalized();
+    const Eigen::Vector2d tb = yz(rng, -0.3, 0.3);
+    const Eigen::Vector3d db = Eigen::Vector3d(-1, tb.x(), tb.y()).normalized();
     a["velocity"] = vec(2 * da.x(), 2 * da.y(), 2 * da.z());
     b["velocity"] = vec(2 * db.x(), 2 * db.y(), 2 * db.z());
-    a["angular_velocity"] = vec(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-    b["angular_velocity"] = vec(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    a["angular_velocity"] = vec3(xyz(rng, -1, 1));
+    b["angular_velocity"] = vec3(xyz(rng, -1, 1));
     s["objects"] = {a, b};
     write_scene(dir, "fig8.json", s);
 }
@@ -143,9 +158,9 @@ void pile(const fs::path& dir) {
     objects.push_back(floor);
     for (int i = 0; i < 1000; ++i) {
         json o = object("o" + std::to_string(i), i % 3 == 0 ? "grit.spt" : "pebble.spt");
-        o["position"] = vec(1.0 * (i % 10) - 4.5 + uniform(rng, -0.05, 0.05), 1.0 * (i / 100) + 0.5,
-                            1.0 * (i / 10 % 10) - 4.5 + uniform(rng, -0.05, 0.05));
-        o["velocity"] = vec(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5));
+        const double jitter_z = uniform(rng, -0.05, 0.05), jitter_x = uniform(rng, -0.05, 0.05); // z first, as in xyz
+        o["position"] = vec(1.0 * (i % 10) - 4.5 + jitter_x, 1.0 * (i / 100) + 0.5, 1.0 * (i / 10 % 10) - 4.5 + jitter_z);
+        o["velocity"] = vec3(xyz(rng, -0.5, 0.5));
         objects.push_back(o);
     }
     s["objects"] = objects;

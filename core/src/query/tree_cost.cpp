@@ -12,14 +12,18 @@ namespace {
 
 Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
     std::normal_distribution<double> g;
-    Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
+    // One draw a statement: the order of a call's arguments is the compiler's choice, and a
+    // seed must give the same poses from every build. z first: the order of the poses before.
+    const double z = g(rng), y = g(rng), x = g(rng), w = g(rng);
+    Eigen::Quaterniond q(w, x, y, z);
     return q.norm() > 1e-9 ? q.normalized() : Eigen::Quaterniond::Identity();
 }
 
 Eigen::Vector3d random_unit(std::mt19937_64& rng) {
     std::normal_distribution<double> g;
     for (;;) {
-        const Eigen::Vector3d v(g(rng), g(rng), g(rng));
+        const double z = g(rng), y = g(rng), x = g(rng); // as in random_rotation
+        const Eigen::Vector3d v(x, y, z);
         if (v.norm() > 1e-9) return v.normalized();
     }
 }
@@ -95,7 +99,8 @@ CostPoses cost_poses(const CollisionModel& a, const CollisionModel& b, const Cos
     // Reach: B's origin farther than this from A's leaves the two models apart.
     const double reach = a.extent() + b.extent() + a.origin().norm() + b.origin().norm();
     for (int i = 0; i < o.random_poses; ++i) {
-        const Eigen::Vector3d t = random_unit(rng) * reach * std::cbrt(unit(rng));
+        const double r = std::cbrt(unit(rng)); // drawn before the direction, as before
+        const Eigen::Vector3d t = random_unit(rng) * reach * r;
         out.random.push_back(Pose::from(t, random_rotation(rng)));
     }
     QueryOptions find = o.query;
