@@ -7,6 +7,20 @@
 
 namespace spt::test {
 
+/// Whether this build (and so the binaries the tests run) has AddressSanitizer: GCC defines
+/// __SANITIZE_ADDRESS__, clang answers __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 struct CommandResult {
     int exit_code = -1;  ///< exit status, or -1 if the process died from a signal
     bool crashed = false;

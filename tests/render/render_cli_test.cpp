@@ -121,9 +121,8 @@ TEST_F(RenderCli, bad_arguments_exit_1) {
 // process when it touched them: such a size is refused up front. An address-space limit
 // (ulimit -v, counted like available memory) makes the case the same on every machine.
 TEST_F(RenderCli, size_beyond_the_memory_there_is_exits_1_before_any_work) {
-#if defined(__SANITIZE_ADDRESS__)
-    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space and cannot run under ulimit -v";
-#endif
+    if (spt::test::kAddressSanitizer)
+        GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space and cannot run under ulimit -v";
     const std::string limit = "ulimit -v 2500000 &&"; // about 2.4 GiB; 8192x8192 needs about 6
     const CliRun big = spt("render figure.obj --size 8192x8192 -o x.png", limit);
     EXPECT_EQ(big.code, 1) << big.err;
