@@ -1,25 +1,45 @@
 // spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS]: the four-view sampling editor.
+#include "app_start.hpp"
 #include "main_window.hpp"
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTimer>
 #include <cstdio>
 
-int main(int argc, char** argv) {
-    // Before QApplication: every view's context is 3.3 core (render/ needs it).
-    spt::editor::use_render_gl_format();
-    QApplication app(argc, argv);
-    QApplication::setApplicationName("spt-editor");
-    QApplication::setOrganizationName("spt");
+namespace {
 
-    QCommandLineParser parser;
-    parser.setApplicationDescription("The four-view sampling editor (docs/editor.md).");
+void describe(QCommandLineParser& parser) {
+    parser.setApplicationDescription("The four-view sampling editor (docs/editor.md). Exit codes: 0 ok, 2 bad command "
+                                     "line, 3 no window system (no display).");
     parser.addHelpOption();
     parser.addPositionalArgument("FILE", "A mesh (converted with default options) or a .spt file");
     parser.addOption({{"o", "output"}, "Where Save (Ctrl+S) writes, without a dialog", "OUT.spt"});
     parser.addOption({"mesh", "The .spt file's mesh, if it is not beside it", "MESH"});
     parser.addOption({"autosave", "Seconds between recovery files for this session (default: the preference, 30; 0: off)", "SECONDS"});
-    parser.process(app);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QCommandLineParser parser;
+    describe(parser);
+    if (spt::editor::asks_for_help(spt::editor::arguments_before_app(argc, argv))) { // no display needed
+        std::fputs(qPrintable(parser.helpText().replace("<executable_name>", "spt-editor")), stdout);
+        return 0;
+    }
+    // Before QApplication: every view's context is 3.3 core (render/ needs it).
+    spt::editor::use_render_gl_format();
+    spt::editor::exit_cleanly_without_window_system("spt-editor");
+    QApplication app(argc, argv);
+    spt::editor::window_system_started();
+    QApplication::setApplicationName("spt-editor");
+    QApplication::setOrganizationName("spt");
+
+    // Parsed after QApplication, which takes Qt's own options (-platform, -display) out.
+    if (!parser.parse(QApplication::arguments())) {
+        std::fprintf(stderr, "spt-editor: %s\n", qPrintable(parser.errorText()));
+        return 2;
+    }
 
     spt::editor::StartOptions options;
     const QStringList files = parser.positionalArguments();

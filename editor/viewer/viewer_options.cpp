@@ -9,7 +9,7 @@ QString viewer_usage() {
            "Plays a scene's simulation (docs/viewer.md). Overlays (comma-separated, as `spt render`):\n"
            "contacts, normals, pairs, ghost, trails, spheres, bounds, broad, grid, axes, none\n"
            "(default grid,axes). Keys: Space play/pause, Right/Left step, Home/End first/last step,\n"
-           "F frame all, F5 reload. Exit codes: 0 ok, 2 bad arguments.\n";
+           "F frame all, F5 reload. Exit codes: 0 ok, 2 bad arguments, 3 no window system (no display).\n";
 }
 
 ViewerCommandLine parse_viewer_arguments(const QStringList& args) {

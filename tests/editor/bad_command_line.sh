@@ -21,5 +21,7 @@ expect_2 "--autosave -1: expected" --autosave -1
 expect_2 "--autosave 1.5: expected" --autosave 1.5
 expect_2 "--autosave nan: expected" --autosave nan
 expect_2 "one FILE at most" a.obj b.obj
+expect_2 "Unknown option 'bogus'" --bogus a.obj
+expect_2 "Missing value after '--mesh'" a.spt --mesh
 [[ $fail == 0 ]] && echo "every bad command line exited 2 with its reason"
 exit $fail
