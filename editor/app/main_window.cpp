@@ -15,6 +15,7 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
 #include <QStatusBar>
 #include <QToolBar>
@@ -98,6 +99,7 @@ MainWindow::~MainWindow() {
 
 void MainWindow::build_docks() {
     panel_ = new TreePanel(doc_, this);
+    panel_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding); // grows with the window, as the history
     auto* tree_dock = new QDockWidget("Tree", this);
     tree_dock->setObjectName("tree_dock");
     tree_dock->setWidget(panel_);
@@ -111,7 +113,13 @@ void MainWindow::build_docks() {
     cost_ = new CostPanel(doc_, this);
     auto* cost_dock = new QDockWidget("Cost", this);
     cost_dock->setObjectName("cost_dock");
-    cost_dock->setWidget(cost_);
+    // Scrolled when short: unscrolled, the panel's chart and table set the tab group's least
+    // height and squeezed the tree above it to a few rows.
+    auto* cost_scroll = new QScrollArea;
+    cost_scroll->setWidget(cost_);
+    cost_scroll->setWidgetResizable(true);
+    cost_scroll->setFrameShape(QFrame::NoFrame);
+    cost_dock->setWidget(cost_scroll);
     addDockWidget(Qt::RightDockWidgetArea, cost_dock);
     tabifyDockWidget(history_dock, cost_dock);
     history_dock->raise();

@@ -41,6 +41,7 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     nodes_->setObjectName("node_tree");
     nodes_->setHeaderLabels({"Node", "Samples", "Bounding r", "Sampling r", "Active"});
     nodes_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    nodes_->setIndentation(nodes_->fontMetrics().height() * 3 / 4); // trees 15-20 deep stay readable
     layout->addWidget(nodes_, 1);
 
     properties_ = new QLabel;
@@ -87,6 +88,13 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
 void TreePanel::show_color_by_node(bool by_node) {
     const QSignalBlocker block(color_);
     color_->setCurrentIndex(by_node ? 1 : 0);
+}
+
+QSize TreePanel::sizeHint() const {
+    QSize hint = QWidget::sizeHint();
+    const int rows = 24;
+    hint.setHeight(hint.height() - nodes_->sizeHint().height() + rows * nodes_->fontMetrics().height());
+    return hint;
 }
 
 BuildOptions TreePanel::build_options() const {

@@ -27,6 +27,9 @@ public:
     BuildOptions build_options() const;
     /// Shows colouring by node (true) or by level without asking for it again.
     void show_color_by_node(bool by_node);
+    /// Room for about 24 rows of the node table (pixels), so that the dock column gives the
+    /// tree most of its height and the history below it the rest.
+    QSize sizeHint() const override;
 
 signals:
     /// The user asked to set the current node's sampling-sphere radius (model units).

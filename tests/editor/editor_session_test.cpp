@@ -2,20 +2,24 @@
 // (asking first), and preferences that apply at once and persist.
 #include "editor_support.hpp"
 #include "spt/spt_file.hpp"
+#include "cost_panel.hpp"
 #include "tree_panel.hpp"
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDialogButtonBox>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QTest>
 #include <QTimer>
+#include <QTreeWidget>
 #include <QUrl>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -186,4 +190,24 @@ TEST(EditorSession, ALargeNodeIsBuiltInTheBackgroundAndAnEditMeanwhileDropsTheRe
     QTest::qWait(50);
     EXPECT_EQ(w->undo_stack().count(), 1) << "the stale build was pushed";
     EXPECT_TRUE(w->last_message().contains("not applied")) << w->last_message().toStdString();
+}
+
+TEST(EditorSession, TheTreePanelShowsManyRowsBesideTheHistoryAndCostTabs) {
+    // The cost tab's chart and table once set the lower dock group's least height, and the
+    // node table above it showed three rows in an 860-pixel window.
+    TempDir dir("editor-session-rows");
+    std::string error;
+    const auto w = open_editor(dir, write_editor_files(dir).spt, &error);
+    ASSERT_TRUE(w) << error;
+    ASSERT_GE(w->height(), 800); // the window opens at 1280x860
+    QTreeWidget* nodes = w->tree_panel().nodes();
+    const int row = nodes->fontMetrics().height();
+    EXPECT_GE(nodes->viewport()->height(), 15 * row) << "the node table shows "
+                                                      << nodes->viewport()->height() / row << " rows";
+    // The cost tab is whole when scrolled: a scroll area holds it, not the dock's height.
+    w->findChild<QDockWidget*>("cost_dock")->raise();
+    QTest::qWait(50);
+    auto* scroll = qobject_cast<QScrollArea*>(w->findChild<QDockWidget*>("cost_dock")->widget());
+    ASSERT_TRUE(scroll);
+    EXPECT_EQ(scroll->widget(), &w->cost_panel());
 }
