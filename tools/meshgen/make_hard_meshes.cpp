@@ -1,6 +1,7 @@
 // Writes the open, non-manifold and thin meshes of the hard-case suite (core's
 // mesh/hard_shapes) as OBJ, for the pair benchmark. Usage: spt-make-hard-meshes OUT_DIR
 #include "meshgen.hpp"
+#include "out_dir_argument.hpp"
 #include "mesh/hard_shapes.hpp"
 #include "mesh/shapes.hpp"
 #include "spt/error.hpp"
@@ -19,10 +20,7 @@ void write(const spt::TriangleMesh& m, const std::filesystem::path& path) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::cerr << "usage: spt-make-hard-meshes OUT_DIR\n";
-        return 1;
-    }
+    if (int code = 0; !spt::meshgen::out_dir_argument(argc, argv, "usage: spt-make-hard-meshes OUT_DIR", code)) return code;
     const std::filesystem::path dir = argv[1];
     std::filesystem::create_directories(dir);
     try {

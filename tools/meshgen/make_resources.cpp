@@ -3,15 +3,18 @@
 // binary STL, torus_1m.stl (6,000,000 corners to weld), for the conversion benchmark; they are
 // not bundled.
 #include "meshgen.hpp"
+#include "out_dir_argument.hpp"
 #include "spt/error.hpp"
 #include <filesystem>
 #include <iostream>
 #include <string>
 
 int main(int argc, char** argv) {
+    const char* usage = "usage: spt-make-resources OUT_DIR [--big]";
+    if (int code = 0; !spt::meshgen::out_dir_argument(argc, argv, usage, code, 1)) return code;
     const bool big = argc == 3 && std::string(argv[2]) == "--big";
-    if (argc != 2 && !big) {
-        std::cerr << "usage: spt-make-resources OUT_DIR [--big]\n";
+    if (argc == 3 && !big) {
+        std::cerr << usage << '\n';
         return 1;
     }
     const std::filesystem::path dir = argv[1];

@@ -1,6 +1,7 @@
 // Writes the scenes bundled in resources/scenes/ and the meshes and .spt files they use.
 // Usage: spt-make-scenes OUT_DIR. Scenes name the bundled meshes as ../meshes/NAME.
 #include "meshgen.hpp"
+#include "out_dir_argument.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include "walk_tree.hpp"
@@ -170,10 +171,7 @@ void pile(const fs::path& dir) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::cerr << "usage: spt-make-scenes OUT_DIR\n";
-        return 1;
-    }
+    if (int code = 0; !spt::meshgen::out_dir_argument(argc, argv, "usage: spt-make-scenes OUT_DIR", code)) return code;
     const fs::path dir = argv[1];
     try {
         fs::create_directories(dir);
