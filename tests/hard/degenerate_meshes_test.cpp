@@ -126,3 +126,50 @@ TEST(DegenerateMeshes, ConvertAndQueryAtEveryLevelWithoutNaN) {
 
 } // namespace
 } // namespace spt
+
+namespace spt {
+namespace {
+
+TEST(DegenerateMeshes, ABoxExportedWithEveryFaceTwiceIsTheClosedSolidBox) {
+    // Every edge of such a box is used four times: counted as non-manifold, the box was an open
+    // shell of two-sided spheres, 35 times the samples of the box and with no inside.
+    const TriangleMesh box = make_box({0.5, 0.5, 0.5}, 2);
+    const ImportedMesh once = prepare_mesh("once", box.positions, box.triangles);
+    const auto single = hard::make_object(once.mesh);
+    const auto small = hard::make_object(prepare_mesh("small", make_box({0.1, 0.1, 0.1}, 2).positions,
+                                                      make_box({0.1, 0.1, 0.1}, 2).triangles).mesh);
+    for (bool reversed : {true, false}) {
+        std::vector<Triangle> t = box.triangles;
+        for (const Triangle& f : box.triangles) t.push_back(reversed ? Triangle{f[0], f[2], f[1]} : f);
+        for (int threads : {1, 2}) {
+            ImportOptions options;
+            options.threads = threads;
+            const ImportedMesh twice = prepare_mesh("twice", box.positions, t, options);
+            const ImportReport& r = twice.report;
+            const std::string what = std::string(reversed ? "reversed" : "same winding") + ", threads " + std::to_string(threads);
+            EXPECT_EQ(r.duplicate_faces, box.triangles.size()) << what;
+            EXPECT_TRUE(r.closed) << what;
+            EXPECT_EQ(r.nonmanifold_edges, 0u) << what;
+            EXPECT_EQ(r.components, 1u) << what;
+            EXPECT_EQ(r.flipped_faces, 0u) << what;
+            EXPECT_EQ(std::count(twice.mesh.on_open_part.begin(), twice.mesh.on_open_part.end(), 1), 0) << what;
+            EXPECT_EQ(twice.mesh.triangles.size(), t.size()) << what << ": the file's faces are all kept";
+            const auto doubled = hard::make_object(twice.mesh);
+            ASSERT_EQ(doubled->doc.samples.size(), single->doc.samples.size()) << what;
+            for (size_t i = 0; i < single->doc.samples.size(); ++i)
+                ASSERT_EQ(doubled->doc.samples.position(i), single->doc.samples.position(i)) << what << " sample " << i;
+            // A solid: a small box wholly inside collides at every level, as with the box itself.
+            const Pose inside{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.1, -0.05, 0.08)};
+            QueryScratch s;
+            for (QueryLevel level : hard::kLevels) {
+                QueryOptions q;
+                q.level = level;
+                EXPECT_TRUE(collide_relative(doubled->model, small->model, inside, q, s).collide)
+                    << what << " level " << int(level);
+            }
+        }
+    }
+}
+
+} // namespace
+} // namespace spt

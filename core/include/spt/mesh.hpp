@@ -24,6 +24,9 @@ struct TriangleMesh {
     std::vector<uint32_t> welded_index;     ///< for each vertex as the file had it, its welded vertex
     std::vector<uint8_t> on_open_part;      ///< per triangle: 1 if its part (faces joined by edges) has a
                                             ///< boundary or non-manifold edge; empty: unknown, treated as open
+    std::vector<uint8_t> is_copy;           ///< per triangle: 1 for a later copy of a face (the same three
+                                            ///< vertices, either winding), left out of the topology, the
+                                            ///< normals and the samples; empty: no copies
 
     /// Axis-aligned bounds of the vertex positions (min, max); zero box if empty.
     std::pair<Eigen::Vector3d, Eigen::Vector3d> bounds() const;

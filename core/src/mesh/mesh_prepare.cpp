@@ -63,17 +63,30 @@ template <class Bucket> std::vector<uint32_t> bucket_starts(size_t count, size_t
 
 // Half-edges in (key, face) order: a counting sort by the smaller vertex, then a small sort
 // within each vertex's run (a few edges), instead of one sort of them all.
-std::vector<HalfEdge> collect_edges(const std::vector<Triangle>& tris, size_t vertex_count) {
-    const size_t n = tris.size() * 3;
-    auto lo_of = [&](size_t i) { return std::min(tris[i / 3][i % 3], tris[i / 3][(i % 3 + 1) % 3]); };
+// Half-edges of every face but those `skip` marks (empty: none), sorted by edge.
+std::vector<HalfEdge> collect_edges(const std::vector<Triangle>& tris, size_t vertex_count,
+                                    const std::vector<uint8_t>& skip) {
+    std::vector<uint32_t> live; // the faces kept, when some are skipped
+    if (!skip.empty())
+        for (uint32_t f = 0; f < tris.size(); ++f)
+            if (!skip[f]) live.push_back(f);
+    const size_t faces = skip.empty() ? tris.size() : live.size();
+    auto face_at = [&](size_t i) { return skip.empty() ? uint32_t(i) : live[i]; };
+    const size_t n = faces * 3;
+    auto lo_of = [&](size_t i) {
+        const Triangle& t = tris[face_at(i / 3)];
+        return std::min(t[i % 3], t[(i % 3 + 1) % 3]);
+    };
     std::vector<uint32_t> start = bucket_starts(n, vertex_count, lo_of);
     std::vector<HalfEdge> edges(n);
-    for (uint32_t f = 0; f < tris.size(); ++f)
+    for (size_t i = 0; i < faces; ++i) {
+        const uint32_t f = face_at(i);
         for (int k = 0; k < 3; ++k) {
             const uint32_t a = tris[f][k], b = tris[f][(k + 1) % 3];
             const uint64_t lo = std::min(a, b), hi = std::max(a, b);
             edges[start[lo]++] = {(lo << 32) | hi, f, a < b};
         }
+    }
     auto before = [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; };
     // start[v] is now where vertex v's run ends.
     for (size_t v = 0, b = 0; v < vertex_count; b = start[v++])
@@ -119,10 +132,11 @@ std::vector<int> nesting_depths(const TriangleMesh& m, const std::vector<std::ve
     return depth;
 }
 
-// Per face, 1 for all but the first of faces with the same three vertices; counts them and
-// the vertices no face uses into `r`.
-std::vector<uint8_t> find_duplicates(const TriangleMesh& m, ImportReport& r) {
-    std::vector<uint8_t> duplicate(m.triangles.size(), 0);
+// Per face, the first face with the same three vertices (either winding): itself for all
+// but the later copies. Counts the copies and the vertices no face uses into `r`.
+std::vector<uint32_t> find_duplicates(const TriangleMesh& m, ImportReport& r) {
+    std::vector<uint32_t> copy_of(m.triangles.size());
+    std::iota(copy_of.begin(), copy_of.end(), 0u);
     // Faces by their sorted vertices, then by index: a counting sort by the smallest vertex,
     // then a small sort within each vertex's run.
     auto sorted_face = [&](size_t f) {
@@ -140,12 +154,12 @@ std::vector<uint8_t> find_duplicates(const TriangleMesh& m, ImportReport& r) {
     for (size_t v = 0, b = 0; v < m.positions.size(); b = start[v++])
         if (start[v] - b > 1) std::sort(sorted.begin() + long(b), sorted.begin() + long(start[v]));
     for (size_t i = 1; i < sorted.size(); ++i)
-        if (sorted[i].first == sorted[i - 1].first) duplicate[sorted[i].second] = 1, ++r.duplicate_faces;
+        if (sorted[i].first == sorted[i - 1].first) copy_of[sorted[i].second] = copy_of[sorted[i - 1].second], ++r.duplicate_faces;
     std::vector<uint8_t> used(m.positions.size(), 0);
     for (const auto& t : m.triangles)
         for (uint32_t v : t) used[v] = 1;
     r.unreferenced_vertices = size_t(std::count(used.begin(), used.end(), 0));
-    return duplicate;
+    return copy_of;
 }
 
 // `skip`: per face, 1 for the later copies of duplicate faces (wound the other way, a copy
@@ -248,17 +262,22 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
     if (m.triangles.empty()) throw_bad_input(m.name, "every face is degenerate");
     r.faces = m.triangles.size();
+    std::vector<uint32_t> copy_of;  // per face: the first face with its three vertices (itself if none)
     std::vector<uint8_t> duplicate; // per face: 1 for the later copies of a face
 
-    // Topology from sorted half-edges.
+    // Topology from sorted half-edges. A later copy of a face adds no surface: it is left out,
+    // or a closed body exported with its faces twice would be all non-manifold edges, open, and
+    // sampled as a thin shell (35 times the samples of the box it is), with no inside.
     std::vector<HalfEdge> edges;
     // Parts: faces connected across manifold edges only. A part is closed when each edge of its
     // faces is used by exactly two of them: a closed body that a flap or fin touches along a
     // non-manifold edge stays a solid, and only the flap is open.
     DisjointFaces parts(m.triangles.size());
     size_t inconsistent = 0; // manifold edges whose two faces walk it the same way
-    auto topology = [&] {
-        edges = collect_edges(m.triangles, m.positions.size());
+    auto topology = [&](const std::vector<uint8_t>& skip) {
+        r.boundary_edges = r.nonmanifold_edges = 0, inconsistent = 0;
+        parts = DisjointFaces(m.triangles.size());
+        edges = collect_edges(m.triangles, m.positions.size(), skip);
         std::vector<size_t> unpaired; // where the runs of edges used other than twice start
         for (size_t i = 0; i < edges.size();) {
             const size_t j = run_end(edges, i);
@@ -272,11 +291,15 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
             }
             i = j;
         }
-        // Components join faces across every shared edge: the parts, and across non-manifold edges.
+        // Components join faces across every shared edge: the parts, and across non-manifold
+        // edges; a copy belongs to its face's.
         DisjointFaces components = parts;
         for (const size_t i : unpaired)
             for (size_t k = i + 1, j = run_end(edges, i); k < j; ++k)
                 components.join(edges[k].face, edges[i].face);
+        if (!skip.empty())
+            for (uint32_t f = 0; f < m.triangles.size(); ++f)
+                if (skip[f]) components.join(f, copy_of[f]);
         r.components = components.count();
         r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0;
         // A part using an edge other than twice is open. An edge used twice joined its two faces
@@ -293,21 +316,32 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         }
         m.on_open_part.assign(m.triangles.size(), 0);
         for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = part_open[parts.find(f)];
+        if (!skip.empty()) // a copy lies on its face's part (copies come after the face they copy)
+            for (uint32_t f = 0; f < m.triangles.size(); ++f) m.on_open_part[f] = m.on_open_part[copy_of[f]];
     };
     // The topology and the copies only read the windings, so on two threads the normals are
     // computed beside them, from the windings as they are and counting every face; again below
-    // only if a face was re-wound or a copy of another (rare: the file is then fixed or reported).
+    // only if a face was re-wound or a copy of another (rare: the file is then fixed or reported),
+    // and the topology again, without the copies, if there are any.
     const int threads = options.threads > 0 ? options.threads : detail::machine_threads();
     const bool early_normals = threads > 1;
+    auto mark_copies = [&] {
+        duplicate.assign(m.triangles.size(), 0);
+        for (uint32_t f = 0; f < m.triangles.size(); ++f) duplicate[f] = copy_of[f] != f;
+    };
     if (early_normals) {
         detail::parallel_for(3, std::min(threads, 3), [&](size_t k, int) {
-            if (k == 0) topology(); // the longest first
+            if (k == 0) topology({}); // the longest first
             else if (k == 1) compute_normals(m, r, area_eps, {});
-            else duplicate = find_duplicates(m, r);
+            else copy_of = find_duplicates(m, r);
         });
+        mark_copies();
+        if (r.duplicate_faces > 0) topology(duplicate), m.is_copy = duplicate;
     } else {
-        duplicate = find_duplicates(m, r);
-        topology();
+        copy_of = find_duplicates(m, r);
+        mark_copies();
+        topology(r.duplicate_faces > 0 ? duplicate : std::vector<uint8_t>{});
+        if (r.duplicate_faces > 0) m.is_copy = duplicate;
     }
 
     if (options.fix_orientation && inconsistent > 0) {
@@ -371,7 +405,11 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (options.fix_orientation) {
         // A closed part faces out of the solid: positive volume, unless it is the inner wall
         // of a hollow (inside an odd number of other closed parts), which faces the cavity.
-        const std::vector<std::vector<uint32_t>> part_faces = parts.groups();
+        std::vector<std::vector<uint32_t>> part_faces = parts.groups();
+        // A copy is a part of its own (no edges): its face's part decides.
+        part_faces.erase(std::remove_if(part_faces.begin(), part_faces.end(),
+                                        [&](const std::vector<uint32_t>& p) { return duplicate[p[0]] != 0; }),
+                         part_faces.end());
         const std::vector<int> nesting = nesting_depths(m, part_faces);
         for (size_t c = 0; c < part_faces.size(); ++c) {
             const auto& comp = part_faces[c];
@@ -394,7 +432,8 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (r.needle_faces)
         r.warnings.push_back(std::to_string(r.needle_faces) + " needle faces (narrower than 1e-6 of their length)");
     if (r.duplicate_faces)
-        r.warnings.push_back(std::to_string(r.duplicate_faces) + " duplicate faces (the same three vertices as another face)");
+        r.warnings.push_back(std::to_string(r.duplicate_faces) +
+                             " duplicate faces (the same three vertices as another face) left out of the topology, normals and samples");
     if (r.unreferenced_vertices)
         r.warnings.push_back(std::to_string(r.unreferenced_vertices) + " vertices are used by no face and are left out");
 

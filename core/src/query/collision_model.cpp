@@ -48,6 +48,11 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     e.closed.assign(e.triangles.size(), 0);
     if (mesh.on_open_part.size() == e.triangles.size())
         for (size_t f = 0; f < e.closed.size(); ++f) e.closed[f] = !mesh.on_open_part[f];
+    // A later copy of a face walls in nothing its face does not: counted twice, a ray would
+    // cross the wall twice and find itself outside.
+    if (mesh.is_copy.size() == e.triangles.size())
+        for (size_t f = 0; f < e.closed.size(); ++f)
+            if (mesh.is_copy[f]) e.closed[f] = 0;
     const size_t nt = e.triangles.size();
     e.tri_sphere.assign(nt * 4, 0);
     for (uint32_t f = 0; f < nt; ++f) {
