@@ -61,9 +61,9 @@ template <class Bucket> std::vector<uint32_t> bucket_starts(size_t count, size_t
     return start;
 }
 
-// Half-edges in (key, face) order: a counting sort by the smaller vertex, then a small sort
-// within each vertex's run (a few edges), instead of one sort of them all.
-// Half-edges of every face but those `skip` marks (empty: none), sorted by edge.
+// Half-edges of every face but those `skip` marks (empty: none), in (key, face) order: a
+// counting sort by the smaller vertex, then a small sort within each vertex's run (a few
+// edges), instead of one sort of them all.
 std::vector<HalfEdge> collect_edges(const std::vector<Triangle>& tris, size_t vertex_count,
                                     const std::vector<uint8_t>& skip) {
     std::vector<uint32_t> live; // the faces kept, when some are skipped
