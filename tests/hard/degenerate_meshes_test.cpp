@@ -136,8 +136,8 @@ TEST(DegenerateMeshes, ABoxExportedWithEveryFaceTwiceIsTheClosedSolidBox) {
     const TriangleMesh box = make_box({0.5, 0.5, 0.5}, 2);
     const ImportedMesh once = prepare_mesh("once", box.positions, box.triangles);
     const auto single = hard::make_object(once.mesh);
-    const auto small = hard::make_object(prepare_mesh("small", make_box({0.1, 0.1, 0.1}, 2).positions,
-                                                      make_box({0.1, 0.1, 0.1}, 2).triangles).mesh);
+    const TriangleMesh small_box = make_box({0.1, 0.1, 0.1}, 2);
+    const auto small = hard::make_object(prepare_mesh("small", small_box.positions, small_box.triangles).mesh);
     for (bool reversed : {true, false}) {
         std::vector<Triangle> t = box.triangles;
         for (const Triangle& f : box.triangles) t.push_back(reversed ? Triangle{f[0], f[2], f[1]} : f);

@@ -32,6 +32,8 @@ struct TriangleMesh {
     std::pair<Eigen::Vector3d, Eigen::Vector3d> bounds() const;
     /// Length of the bounding-box diagonal, model units.
     double diagonal() const;
+    /// Whether triangle f is a later copy of an earlier face (is_copy), to be left out.
+    bool copies_earlier_face(size_t f) const { return f < is_copy.size() && is_copy[f]; }
     /// Stable 64-bit hash of positions (as float32) and triangles; identifies the mesh in .spt files.
     uint64_t content_hash() const;
 };

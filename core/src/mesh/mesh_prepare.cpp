@@ -263,7 +263,6 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (m.triangles.empty()) throw_bad_input(m.name, "every face is degenerate");
     r.faces = m.triangles.size();
     std::vector<uint32_t> copy_of;  // per face: the first face with its three vertices (itself if none)
-    std::vector<uint8_t> duplicate; // per face: 1 for the later copies of a face
 
     // Topology from sorted half-edges. A later copy of a face adds no surface: it is left out,
     // or a closed body exported with its faces twice would be all non-manifold edges, open, and
@@ -325,9 +324,10 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     // and the topology again, without the copies, if there are any.
     const int threads = options.threads > 0 ? options.threads : detail::machine_threads();
     const bool early_normals = threads > 1;
-    auto mark_copies = [&] {
-        duplicate.assign(m.triangles.size(), 0);
-        for (uint32_t f = 0; f < m.triangles.size(); ++f) duplicate[f] = copy_of[f] != f;
+    auto mark_copies = [&] { // m.is_copy stays empty without copies
+        if (r.duplicate_faces == 0) return;
+        m.is_copy.assign(m.triangles.size(), 0);
+        for (uint32_t f = 0; f < m.triangles.size(); ++f) m.is_copy[f] = copy_of[f] != f;
     };
     if (early_normals) {
         detail::parallel_for(3, std::min(threads, 3), [&](size_t k, int) {
@@ -336,12 +336,11 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
             else copy_of = find_duplicates(m, r);
         });
         mark_copies();
-        if (r.duplicate_faces > 0) topology(duplicate), m.is_copy = duplicate;
+        if (r.duplicate_faces > 0) topology(m.is_copy);
     } else {
         copy_of = find_duplicates(m, r);
         mark_copies();
-        topology(r.duplicate_faces > 0 ? duplicate : std::vector<uint8_t>{});
-        if (r.duplicate_faces > 0) m.is_copy = duplicate;
+        topology(m.is_copy);
     }
 
     if (options.fix_orientation && inconsistent > 0) {
@@ -408,7 +407,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         std::vector<std::vector<uint32_t>> part_faces = parts.groups();
         // A copy is a part of its own (no edges): its face's part decides.
         part_faces.erase(std::remove_if(part_faces.begin(), part_faces.end(),
-                                        [&](const std::vector<uint32_t>& p) { return duplicate[p[0]] != 0; }),
+                                        [&](const std::vector<uint32_t>& p) { return m.copies_earlier_face(p[0]); }),
                          part_faces.end());
         const std::vector<int> nesting = nesting_depths(m, part_faces);
         for (size_t c = 0; c < part_faces.size(); ++c) {
@@ -438,7 +437,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         r.warnings.push_back(std::to_string(r.unreferenced_vertices) + " vertices are used by no face and are left out");
 
     if (!early_normals || r.flipped_faces > 0 || r.inverted_components > 0 || r.duplicate_faces > 0)
-        compute_normals(m, r, area_eps, duplicate);
+        compute_normals(m, r, area_eps, m.is_copy);
     // Unreferenced vertices have no normal either; they are reported above.
     if (r.vertices_without_normal > r.unreferenced_vertices)
         r.warnings.push_back(std::to_string(r.vertices_without_normal - r.unreferenced_vertices) +

@@ -50,9 +50,8 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         for (size_t f = 0; f < e.closed.size(); ++f) e.closed[f] = !mesh.on_open_part[f];
     // A later copy of a face walls in nothing its face does not: counted twice, a ray would
     // cross the wall twice and find itself outside.
-    if (mesh.is_copy.size() == e.triangles.size())
-        for (size_t f = 0; f < e.closed.size(); ++f)
-            if (mesh.is_copy[f]) e.closed[f] = 0;
+    for (size_t f = 0; f < e.closed.size(); ++f)
+        if (mesh.copies_earlier_face(f)) e.closed[f] = 0;
     const size_t nt = e.triangles.size();
     e.tri_sphere.assign(nt * 4, 0);
     for (uint32_t f = 0; f < nt; ++f) {

@@ -208,12 +208,11 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
                        float radius_factor, int threads, const std::atomic<bool>* cancel, size_t max_samples) {
     const size_t faces = limiter.mesh().triangles.size();
-    const std::vector<uint8_t>& is_copy = limiter.mesh().is_copy; // a copy's samples would be its face's again
     std::atomic<size_t> made{0};
     return sample_in_runs(faces, origin, threads, [&](size_t first, size_t last, SampleSet& s) {
         for (auto f = uint32_t(first); f < last; ++f) {
             if ((f & 4095u) == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
-            if (!is_copy.empty() && is_copy[f]) continue;
+            if (limiter.mesh().copies_earlier_face(f)) continue; // its samples would be its face's again
             const size_t before = s.size(), so_far = made.load(std::memory_order_relaxed);
             try {
                 add_face_samples(s, limiter, f, eps, rule, radius_factor, max_samples - std::min(so_far, max_samples));
@@ -237,7 +236,7 @@ double least_face_samples(const RadiusLimiter& limiter, double eps, const Radius
     const TriangleMesh& mesh = limiter.mesh();
     double least = 0;
     for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-        if (!mesh.is_copy.empty() && mesh.is_copy[f]) continue; // not sampled
+        if (mesh.copies_earlier_face(f)) continue; // not sampled
         const auto& t = mesh.triangles[f];
         const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
         const double area = 0.5 * (b - a).cross(c - a).norm();
