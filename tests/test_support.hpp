@@ -2,10 +2,12 @@
 // Helpers shared by the test binaries: temporary directories and real meshes.
 #include "spt/convert.hpp"
 #include "sampling/surface_samples.hpp"
+#include <atomic>
 #include <filesystem>
 #include <unistd.h>
 #include <random>
 #include <string>
+#include <thread>
 
 namespace spt::test {
 
@@ -26,6 +28,29 @@ public:
 
 private:
     std::filesystem::path path_;
+};
+
+/// Sets a cancel flag from another thread as soon as start() is called, as an editor's Cancel
+/// button would while the calling thread runs long work (the flag is set within microseconds).
+class CancelFromAnotherThread {
+public:
+    explicit CancelFromAnotherThread(std::atomic<bool>& flag)
+        : thread_([this, &flag] {
+              while (!started_.load()) std::this_thread::yield();
+              flag = true;
+          }) {}
+    ~CancelFromAnotherThread() {
+        start();
+        thread_.join();
+    }
+    CancelFromAnotherThread(const CancelFromAnotherThread&) = delete;
+    CancelFromAnotherThread& operator=(const CancelFromAnotherThread&) = delete;
+    /// The work starts now: the flag is set at once.
+    void start() { started_ = true; }
+
+private:
+    std::atomic<bool> started_{false};
+    std::thread thread_;
 };
 
 /// Directory of Debian's assimp-testmodels.

@@ -18,7 +18,9 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
     try {
         if (!QFileInfo(path).isFile()) throw_bad_input(path.toStdString(), "no such file");
         if (!is_spt_file(path)) {
-            TriangleMesh mesh = import_mesh(path.toStdString()).mesh;
+            ImportOptions reading;
+            reading.cancel = cancel;
+            TriangleMesh mesh = import_mesh(path.toStdString(), reading).mesh;
             ConvertOptions options;
             options.cancel = cancel;
             options.on_stage = on_stage;
@@ -41,7 +43,9 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
             return r;
         }
         try {
-            TriangleMesh mesh = import_mesh(candidate.toStdString()).mesh;
+            ImportOptions reading;
+            reading.cancel = cancel;
+            TriangleMesh mesh = import_mesh(candidate.toStdString(), reading).mesh;
             const std::string mismatch = check_mesh_matches(r.doc->mesh, mesh);
             if (!mismatch.empty()) {
                 r.warning = QString("%1 is not the mesh %2 was made from (%3); showing the sampling spheres only")
@@ -50,12 +54,15 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
             }
             r.mesh = std::move(mesh);
             r.mesh_path = candidate;
+        } catch (const Cancelled&) {
+            throw; // the whole opening stops, not only the mesh
         } catch (const std::exception& e) {
             r.warning = QString("%1; showing the sampling spheres only").arg(QString::fromStdString(e.what()));
         }
-    } catch (const Cancelled&) {
+    } catch (const Cancelled& e) {
         r.doc.reset();
         r.cancelled = true;
+        r.stopped_importing = std::string(e.what()).rfind("importing", 0) == 0;
         r.error = QString("%1: opening cancelled").arg(path);
     } catch (const Error& e) {
         r.doc.reset();

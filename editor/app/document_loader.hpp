@@ -18,7 +18,8 @@ struct LoadResult {
     std::optional<TriangleMesh> mesh;   ///< the document's mesh, when found and matching
     QString mesh_path;                  ///< where the mesh was read from (empty if not used)
     bool converted = false;             ///< the file was a mesh, converted to a new document
-    bool cancelled = false;             ///< the conversion was stopped by the cancel flag
+    bool cancelled = false;             ///< the opening was stopped by the cancel flag
+    bool stopped_importing = false;     ///< it stopped while the mesh was being read (else converted)
     QString error;                      ///< why the file could not be opened (names the file)
     QString warning;                    ///< a problem that still leaves a document (mesh missing or mismatched)
 };
@@ -27,9 +28,9 @@ struct LoadResult {
 bool is_spt_file(const QString& path);
 
 /// Opens `path`; `mesh_path` (may be empty) overrides where a .spt file's mesh is looked for.
-/// A mesh's conversion stops when `cancel` (may be null) is set (`cancelled`, and `error`
-/// says so) and names its stages to `on_stage` (may be empty). Never throws: problems come
-/// back in `error` and `warning`.
+/// Reading a mesh (a .spt file's too) and converting it stop when `cancel` (may be null) is
+/// set (`cancelled`, and `error` says so); the conversion names its stages to `on_stage` (may
+/// be empty). Never throws: problems come back in `error` and `warning`.
 LoadResult load_document(const QString& path, const QString& mesh_path, const std::atomic<bool>* cancel = nullptr,
                          const std::function<void(const std::string&)>& on_stage = {});
 

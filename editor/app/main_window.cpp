@@ -48,9 +48,10 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     cancel_->setObjectName("cancel_open");
     add_busy(build_progress_, build_cancel_, "Cancel build");
     build_cancel_->setObjectName("cancel_build");
-    // Core's builder cannot be interrupted: Cancel drops its result when it arrives.
+    // Core's builder stops at its next node of 1,024 samples or more; a result that still
+    // arrives is dropped.
     connect(build_cancel_, &QPushButton::clicked, this, [this] {
-        build_cancelled_ = true;
+        if (build_cancel_flag_) *build_cancel_flag_ = true;
         build_progress_->hide();
         build_cancel_->hide();
     });
@@ -69,7 +70,8 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
         cancel_->hide();
         const LoadResult& r = watcher_.result();
         if (!cancelled_) loaded(r);
-        else if (r.cancelled) show_message(QString("%1: opening cancelled, the conversion stopped").arg(r.path));
+        else if (r.cancelled)
+            show_message(QString("%1: opening cancelled, the %2 stopped").arg(r.path, r.stopped_importing ? "import" : "conversion"));
         opening_ = false;
         update_title();
     });
@@ -88,6 +90,9 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    // Work still running stops at its next check instead of finishing for nobody.
+    if (open_cancel_) *open_cancel_ = true;
+    if (build_cancel_flag_) *build_cancel_flag_ = true;
     watcher_.waitForFinished();
     build_watcher_.waitForFinished();
     recovery_.clear();

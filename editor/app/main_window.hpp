@@ -146,13 +146,15 @@ private:
     struct BuildJob {
         std::optional<SamplingTree> tree; // the edited tree with the subtree built
         QString refusal;     // why core refused, if it did
+        bool stopped = false; // core's builder saw the cancel flag and stopped
     };
     QFutureWatcher<BuildJob> build_watcher_;
     size_t background_build_samples_ = 20000;
     int build_stack_index_ = -1, build_tree_index_ = -1;
     NodeId build_node_ = 0;
     BuildOptions build_options_;
-    bool build_cancelled_ = false, build_pending_ = false; // pending: started, result not yet taken in
+    bool build_pending_ = false; // started, result not yet taken in
+    std::shared_ptr<std::atomic<bool>> build_cancel_flag_; // the running build's; set: Cancel build was clicked
     QProgressBar* build_progress_ = nullptr;
     QPushButton* build_cancel_ = nullptr;
     void build_finished();

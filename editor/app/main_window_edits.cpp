@@ -2,6 +2,7 @@
 #include "edit_commands.hpp"
 #include "main_window.hpp"
 #include "tree_panel.hpp"
+#include "spt/error.hpp"
 #include <QProgressBar>
 #include <QPushButton>
 #include <QtConcurrent/QtConcurrentRun>
@@ -36,19 +37,27 @@ bool MainWindow::build_subtree() {
     build_tree_index_ = doc_.tree_index();
     build_node_ = doc_.current();
     build_options_ = panel_->build_options();
-    build_cancelled_ = false;
+    build_cancel_flag_ = std::make_shared<std::atomic<bool>>(false);
     build_pending_ = true;
     build_progress_->show();
     build_cancel_->show();
     show_message(QString("building a subtree under node %1 (%2 samples)...")
                      .arg(qulonglong(build_node_))
                      .arg(node->samples.size()));
+    // The flag goes to this build only: the options kept for the undo stack hold none. The
+    // worker holds the flag too, so it outlives a window closed while the build runs.
+    BuildOptions options = build_options_;
+    options.cancel = build_cancel_flag_.get();
     build_watcher_.setFuture(QtConcurrent::run(
-        [tree = doc_.tree(), samples = doc_.samples(), id = build_node_, options = build_options_]() mutable {
+        [tree = doc_.tree(), samples = doc_.samples(), id = build_node_, options, flag = build_cancel_flag_]() mutable {
             BuildJob job;
-            const EditResult r = tree.build_subtree(id, samples, options);
-            if (!r) job.refusal = QString::fromStdString(r.reason);
-            job.tree = std::move(tree);
+            try {
+                const EditResult r = tree.build_subtree(id, samples, options);
+                if (!r) job.refusal = QString::fromStdString(r.reason);
+                job.tree = std::move(tree);
+            } catch (const Cancelled&) {
+                job.stopped = true;
+            }
             return job;
         }));
     return true;
@@ -58,8 +67,11 @@ void MainWindow::build_finished() {
     build_pending_ = false;
     build_progress_->hide();
     build_cancel_->hide();
-    if (build_cancelled_) return show_message("building the subtree cancelled");
     BuildJob job = build_watcher_.result();
+    const bool cancelled = build_cancel_flag_ && *build_cancel_flag_;
+    build_cancel_flag_.reset();
+    if (job.stopped) return show_message("building the subtree cancelled");
+    if (cancelled) return show_message("building the subtree cancelled (it had finished; not applied)");
     if (!job.refusal.isEmpty()) return show_message(job.refusal);
     if (stack_.index() != build_stack_index_ || doc_.tree_index() != build_tree_index_)
         return show_message("the tree was edited while the subtree was being built: not applied, build again");

@@ -44,6 +44,32 @@ TEST(ConvertCancel, FlagSetWhileSamplingFacesStopsItThereOnOneThreadOrMore) {
     }
 }
 
+TEST(ConvertCancel, FlagSetAsTheTreeIsBuiltStopsTheBuilderBeforeItEnds) {
+    // Vertex samples only: building the tree is the last stage, so only the builder itself
+    // can see the flag (before it looked, the conversion ended with a document).
+    const ImportedMesh m = meshgen::prepare(meshgen::torus(1, 0.4, 64, 32), "torus");
+    for (int threads : {1, 2}) {
+        std::atomic<bool> cancel{false};
+        ConvertOptions o;
+        o.cancel = &cancel;
+        o.threads = threads;
+        o.auto_tolerance = false;
+        o.on_stage = [&](const std::string& s) {
+            if (s == "building the tree") cancel = true;
+        };
+        EXPECT_THROW(make_document(m.mesh, o), Cancelled) << threads << " thread(s)";
+    }
+}
+
+TEST(ConvertCancel, VertexSamplingLooksAtTheFlag) {
+    const ImportedMesh m = meshgen::prepare(meshgen::torus(1, 0.4, 64, 32), "torus");
+    const RadiusLimiter limiter(m.mesh, kDefaultProtrusion * m.mesh.diagonal());
+    std::atomic<bool> cancel{true};
+    for (int threads : {1, 2}) EXPECT_THROW(sample_vertices(m.mesh, limiter, {}, threads, &cancel), Cancelled);
+    cancel = false;
+    EXPECT_EQ(sample_vertices(m.mesh, limiter, {}, 2, &cancel).points, sample_vertices(m.mesh, limiter).points);
+}
+
 TEST(ConvertCancel, StagesOfAnUncancelledConversionAreNamedInOrder) {
     const TriangleMesh mesh = import_mesh(test::project_meshes() + "/cad_part.stl").mesh;
     ConvertOptions o;

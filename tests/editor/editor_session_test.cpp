@@ -1,6 +1,8 @@
 // The rest of a session's file handling and settings: drag and drop, Open Recent, Revert
 // (asking first), and preferences that apply at once and persist.
 #include "editor_support.hpp"
+#include "meshgen.hpp"
+#include "spt/recipe.hpp"
 #include "spt/spt_file.hpp"
 #include "cost_panel.hpp"
 #include "tree_panel.hpp"
@@ -190,6 +192,39 @@ TEST(EditorSession, ALargeNodeIsBuiltInTheBackgroundAndAnEditMeanwhileDropsTheRe
     QTest::qWait(50);
     EXPECT_EQ(w->undo_stack().count(), 1) << "the stale build was pushed";
     EXPECT_TRUE(w->last_message().contains("not applied")) << w->last_message().toStdString();
+}
+
+TEST(EditorSession, CancelBuildStopsCoresBuilderAndKeepsTheDocument) {
+    // 80,000 samples in the root: a build far longer than the click that follows its start.
+    TempDir dir("editor-cancel-build");
+    const std::string mesh = dir.file("big.obj"), spt = dir.file("big.spt");
+    meshgen::write_obj(meshgen::torus(1, 0.4, 400, 200), mesh);
+    ConvertOptions o;
+    o.auto_tolerance = false;
+    SptDocument doc = make_document(import_mesh(mesh).mesh, o);
+    doc.trees = {unsplit_tree("authored", doc.samples)};
+    save_spt(doc, spt);
+    std::string error;
+    const auto w = open_editor(dir, QString::fromStdString(spt), &error);
+    ASSERT_TRUE(w) << error;
+    const std::vector<uint8_t> before = w->document().encode();
+    ASSERT_TRUE(w->build_subtree());
+    auto* cancel = w->findChild<QPushButton*>("cancel_build");
+    ASSERT_NE(cancel, nullptr);
+    ASSERT_TRUE(cancel->isVisible());
+    // click(), not a QTest mouse click: that one repaints the four views first (over 100 ms
+    // here), time in which the build could end, and then there would be nothing to stop.
+    cancel->click();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !w->building(); }, 120000));
+    // Core saw the flag and stopped; a build that ran to its end would say so.
+    EXPECT_EQ(w->last_message(), "building the subtree cancelled");
+    EXPECT_EQ(w->undo_stack().count(), 0);
+    EXPECT_EQ(w->document().encode(), before);
+    // Nothing is left behind: the next build runs and is applied.
+    ASSERT_TRUE(w->build_subtree());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !w->building() && w->undo_stack().count() == 1; }, 120000))
+        << w->last_message().toStdString();
+    EXPECT_GT(w->document().tree().node_count(), 1u);
 }
 
 TEST(EditorSession, TheTreePanelShowsManyRowsBesideTheHistoryAndCostTabs) {

@@ -124,3 +124,15 @@ TEST(Weld, ExactCopiesOfKeptVerticesMapToThemAmongNearCopiesAtCellBoundaries) {
         }
     }
 }
+
+TEST(Weld, AFlagSetStopsItAtOnceAndAnUnsetOneChangesNothing) {
+    const Clusters c = make_clusters(5000, 1e-3, Eigen::Vector3d::Zero(), 3);
+    std::atomic<bool> cancel{true};
+    std::vector<Eigen::Vector3d> welded;
+    detail::weld_positions(c.positions, 1e-3, welded, &cancel);
+    EXPECT_TRUE(welded.empty()) << "the weld went on after the flag was set";
+    cancel = false;
+    std::vector<Eigen::Vector3d> plain;
+    EXPECT_EQ(detail::weld_positions(c.positions, 1e-3, welded, &cancel), detail::weld_positions(c.positions, 1e-3, plain));
+    EXPECT_EQ(welded, plain);
+}

@@ -29,7 +29,8 @@ struct ConvertOptions {
     /// same, byte for byte, whatever the count.
     int threads = 0;
     /// Another thread sets it to stop the conversion: make_document looks at it as each stage
-    /// starts and every 4,096 faces while sampling faces, and throws Cancelled. Null: never stops.
+    /// starts, every 4,096 vertices or faces while sampling, and through the tree builder
+    /// (BuildOptions::cancel), and throws Cancelled. Null: never stops.
     const std::atomic<bool>* cancel = nullptr;
     /// Called (on the converting thread) as each stage starts, with its name: "sampling
     /// vertices", "sampling faces", "building the tree"; stages come again when the automatic

@@ -21,8 +21,8 @@ private:
     ErrorKind kind_;
 };
 
-/// Thrown when long work (a conversion) was stopped by its caller's cancel flag: nothing was
-/// made and nothing the caller owns was changed.
+/// Thrown when long work (an import, a conversion, a tree build) was stopped by its caller's
+/// cancel flag: nothing was made and nothing the caller owns was changed.
 class Cancelled : public std::runtime_error {
 public:
     /// Makes the exception; `what` says which work stopped.

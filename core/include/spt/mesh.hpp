@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -71,6 +72,10 @@ struct ImportOptions {
     double weld_tolerance = 1e-6; ///< weld distance, as a fraction of the bounding-box diagonal
     bool fix_orientation = true;  ///< re-wind inconsistent faces, turn inside-out closed parts around
     int threads = 0;              ///< threads to prepare the mesh on (0: the machine's cores); the mesh is the same on any count
+    /// Another thread sets it to stop the import: assimp's reading of the file then ends within
+    /// one buffered read (a file read whole is still parsed to its end), and preparing the mesh
+    /// looks at it as it welds and after each step; throws Cancelled. Null: never stops.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 /// Largest vertex coordinate prepare_mesh accepts (model units): beyond it a double keeps

@@ -1,6 +1,7 @@
 #pragma once
 /// Automatic construction of sampling trees (the paper's future work, §4).
 #include "spt/sampling_tree.hpp"
+#include <atomic>
 
 namespace spt {
 
@@ -21,10 +22,13 @@ struct BuildOptions {
     bool radius_coherent = false;
     /// Threads the builder may use (1: the calling thread only); the tree is the same on any count.
     int threads = 1;
+    /// Another thread sets it to stop the build: looked at as each node of 1,024 samples or
+    /// more is split and before the radii and the bounds; throws Cancelled. Null: never stops.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 /// Builds a tree over all samples; deterministic for equal input. Active nodes hold at most
-/// leaf_size samples (and one radius class if radius_coherent).
+/// leaf_size samples (and one radius class if radius_coherent). Throws Cancelled (options.cancel).
 SamplingTree build_tree(std::string name, const SampleSet& samples, const BuildOptions& options = {});
 
 } // namespace spt

@@ -99,7 +99,8 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
         else info = info_of(mesh);
     });
     const RadiusLimiter& limiter = *limiter_made;
-    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius, threads);
+    stage(options, mesh, nullptr);
+    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius, threads, options.cancel);
     if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
     st.vertex_samples = vertex_samples.size();
     const RadiusRule& rule = options.build.radius;
@@ -113,6 +114,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
         t0 = Clock::now();
         BuildOptions build = options.build;
         build.threads = threads;
+        if (options.cancel) build.cancel = options.cancel;
         doc.trees.push_back(build_tree(options.tree_name, doc.samples, build));
         st.build_seconds = seconds_since(t0);
         const VertexOnlyGaps gaps = vertex_only_gaps(limiter, doc.samples, radius_in_use(doc.trees[0], doc.samples.size()));
@@ -167,6 +169,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     BuildOptions coherent = options.build;
     coherent.radius_coherent = true;
     coherent.threads = threads;
+    if (options.cancel) coherent.cancel = options.cancel;
     SamplingTree tree = build_tree(options.tree_name, s, coherent);
     st.build_seconds = seconds_since(t0);
     // Check the assumption against the radii the tree gave.

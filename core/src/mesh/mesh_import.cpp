@@ -1,4 +1,6 @@
 // Reading mesh files through assimp: every mesh of the scene, node transforms applied.
+#include "base/cancel.hpp"
+#include "mesh/cancellable_io.hpp"
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include <assimp/Importer.hpp>
@@ -50,10 +52,14 @@ ImportedMesh import_mesh(const std::string& path, const ImportOptions& options) 
     if (!std::ifstream(path).good()) throw_bad_input(path, "cannot be opened for reading");
     if (std::filesystem::file_size(path, ec) == 0) throw_bad_input(path, "is empty");
 
+    detail::stop_if_cancelled(options.cancel, "importing", path);
     Assimp::Importer importer;
+    if (options.cancel) importer.SetIOHandler(new detail::CancellableIOSystem(*options.cancel)); // the importer owns it
     // No vertex joining here: assimp keeps seams split by normals, so we weld by position ourselves.
     const aiScene* scene = importer.ReadFile(
         path, aiProcess_Triangulate | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData);
+    // A cancelled read looks like a truncated file to the loader: the flag says which it was.
+    detail::stop_if_cancelled(options.cancel, "importing", path);
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode) {
         std::string why = importer.GetErrorString();
         throw_bad_input(path, "cannot be read as a mesh: " + (why.empty() ? std::string("unknown format") : why));

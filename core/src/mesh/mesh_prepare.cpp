@@ -2,6 +2,7 @@
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include "mesh/weld.hpp"
+#include "base/cancel.hpp"
 #include "base/parallel.hpp"
 #include "geometry/ray_parity.hpp"
 #include <algorithm>
@@ -209,6 +210,8 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     ImportReport& r = out.report;
     m.name = std::move(name);
     r.file_vertices = positions.size();
+    // Looked at after each step that takes time (import_mesh looks before reading the file).
+    const auto stop_if_cancelled = [&] { detail::stop_if_cancelled(options.cancel, "importing", m.name); };
     if (positions.size() > size_t(INT32_MAX)) // welding numbers vertices in int32
         throw_bad_input(m.name, "more than 2^31 - 1 vertices");
 
@@ -232,7 +235,8 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (!(diag >= kMinMeshDiagonal))
         throw_bad_input(m.name, "the mesh is too small: its bounding-box diagonal is below 1e-15 (float cannot "
                                 "hold its squared distances)");
-    m.welded_index = detail::weld_positions(positions, options.weld_tolerance * diag, m.positions);
+    m.welded_index = detail::weld_positions(positions, options.weld_tolerance * diag, m.positions, options.cancel);
+    stop_if_cancelled();
     r.vertices = m.positions.size();
     r.welded = r.file_vertices - r.vertices;
     if (r.welded)
@@ -262,6 +266,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
     if (m.triangles.empty()) throw_bad_input(m.name, "every face is degenerate");
     r.faces = m.triangles.size();
+    stop_if_cancelled();
     std::vector<uint32_t> copy_of;  // per face: the first face with its three vertices (itself if none)
 
     // Topology from sorted half-edges. A later copy of a face adds no surface: it is left out,
@@ -342,6 +347,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         mark_copies();
         topology(m.is_copy);
     }
+    stop_if_cancelled();
 
     if (options.fix_orientation && inconsistent > 0) {
         // Per face, its neighbours across manifold edges (face, same_direction): at most one an edge.
@@ -401,6 +407,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
             r.warnings.push_back("surface is not orientable (" + std::to_string(non_orientable / 2) +
                                  " edges disagree after re-winding)");
     }
+    stop_if_cancelled();
     if (options.fix_orientation) {
         // A closed part faces out of the solid: positive volume, unless it is the inner wall
         // of a hollow (inside an odd number of other closed parts), which faces the cavity.
@@ -436,6 +443,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (r.unreferenced_vertices)
         r.warnings.push_back(std::to_string(r.unreferenced_vertices) + " vertices are used by no face and are left out");
 
+    stop_if_cancelled();
     if (!early_normals || r.flipped_faces > 0 || r.inverted_components > 0 || r.duplicate_faces > 0)
         compute_normals(m, r, area_eps, m.is_copy);
     // Unreferenced vertices have no normal either; they are reported above.

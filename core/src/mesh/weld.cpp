@@ -1,5 +1,6 @@
 // Welds vertices closer than a tolerance through a hash grid.
 #include "mesh/weld.hpp"
+#include "base/cancel.hpp"
 #include "base/huge_pages.hpp"
 #include <algorithm>
 #include <cmath>
@@ -123,7 +124,7 @@ constexpr size_t kPrefetchAhead = 16;
 } // namespace
 
 std::vector<uint32_t> weld_positions(const std::vector<Eigen::Vector3d>& positions, double tolerance,
-                                     std::vector<Eigen::Vector3d>& welded) {
+                                     std::vector<Eigen::Vector3d>& welded, const std::atomic<bool>* cancel) {
     std::vector<uint32_t> map(positions.size());
     welded.clear();
     // Cells four times the tolerance: a match lies in this cell, or in a neighbour on a side
@@ -141,6 +142,7 @@ std::vector<uint32_t> weld_positions(const std::vector<Eigen::Vector3d>& positio
     std::vector<int32_t> next;
     std::vector<Cell> cell_of; // of each welded vertex
     for (size_t i = 0; i < positions.size(); ++i) {
+        if ((i & 65535u) == 0 && cancel_requested(cancel)) return map;
         if (i + kPrefetchAhead < positions.size()) {
             const CellSpan ahead(positions[i + kPrefetchAhead], cell, tolerance);
             for (int dx = ahead.lo[0]; dx <= ahead.hi[0]; ++dx)

@@ -1,6 +1,7 @@
 // Vertex samples and tolerance-driven face samples of a mesh.
 #include "sampling/surface_samples.hpp"
 #include "sampling/encoding.hpp"
+#include "base/cancel.hpp"
 #include "base/parallel.hpp"
 #include <algorithm>
 #include <array>
@@ -67,7 +68,7 @@ SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, F
 } // namespace
 
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule,
-                          int threads) {
+                          int threads, const std::atomic<bool>* cancel) {
     const size_t n = mesh.positions.size();
     std::vector<double> edge_sum(n, 0);
     std::vector<uint32_t> edge_count(n, 0);
@@ -81,6 +82,7 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
         }
     return sample_in_runs(n, local_origin(mesh), threads, [&](size_t first, size_t last, SampleSet& s) {
         for (auto v = uint32_t(first); v < last; ++v) {
+            if ((v & 4095u) == 0) detail::stop_if_cancelled(cancel, "converting", mesh.name);
             if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
             const float spacing = float(edge_sum[v] / edge_count[v]);
             // The radius is limited at the exact vertex: the stored float point may lie a rounding

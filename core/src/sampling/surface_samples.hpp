@@ -23,9 +23,10 @@ float search_radius(const RadiusRule& rule, float spacing, bool two_sided);
 
 /// One sample per vertex with a valid normal, relative to local_origin(mesh); spacing = mean length of its edges,
 /// max_radius from `limiter` (search_radius); vertices of open parts are two-sided.
-/// On up to `threads` threads, with the same samples as on one.
+/// On up to `threads` threads, with the same samples as on one. Throws Cancelled once `cancel`
+/// (may be null) is set: it is looked at every 4,096 vertices.
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {},
-                          int threads = 1);
+                          int threads = 1, const std::atomic<bool>* cancel = nullptr);
 
 /// Two-sided spheres (open parts) must hold every point of their face, not merely come within
 /// a tolerance of it, so that two open surfaces that cross always have overlapping spheres:

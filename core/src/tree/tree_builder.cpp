@@ -2,6 +2,7 @@
 #include "spt/tree_builder.hpp"
 #include "sampling/radius_class.hpp"
 #include "tree/bounds.hpp"
+#include "base/cancel.hpp"
 #include "base/parallel.hpp"
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -81,6 +82,9 @@ struct AxisBins {
 
 // Subtrees of at least this many samples may be built on a thread of their own.
 constexpr size_t kParallelSubtree = 1 << 15;
+// Nodes of at least this many samples look at the cancel flag before they are split: a check
+// costs nothing beside such a split, and a node below it is built in well under a millisecond.
+constexpr size_t kCancelCheckSamples = 1024;
 
 struct Builder {
     const BuildOptions& options;
@@ -256,6 +260,7 @@ struct Builder {
 
     // Builds the node `id` over [b, e); `known`, if given, is the box of the items.
     void build(size_t b, size_t e, NodeId id, const Bounds3* known = nullptr) {
+        if (e - b >= kCancelCheckSamples) detail::stop_if_cancelled(options.cancel, "building", "the tree");
         TreeNode node;
         node.id = id;
         // Active nodes must be radius-coherent. Grouping by radius class a few levels above
@@ -312,8 +317,10 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
     builder.out.reserve(expected), builder.right_of.reserve(expected);
     builder.build(0, members.size(), root_id());
     // Radii and bounds on the builder's array, where children are indices rather than look-ups.
+    detail::stop_if_cancelled(options.cancel, "building", "the tree");
     NodeArray array = builder.links();
     assign_radii(array, samples, options.radius);
+    detail::stop_if_cancelled(options.cancel, "building", "the tree");
     compute_bounds(array, samples, options.bounds, options.threads);
     return SamplingTree(std::move(name), builder.in_id_order());
 }
