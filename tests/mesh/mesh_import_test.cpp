@@ -3,6 +3,7 @@
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include "test_support.hpp"
+#include <cmath>
 #include <fstream>
 #include <gtest/gtest.h>
 
@@ -115,6 +116,59 @@ TEST(MeshPrepare, InsideOutClosedMeshIsTurnedAround) {
     EXPECT_EQ(m.report.inverted_components, 1u);
     EXPECT_GT(volume(m.mesh), 0);
     for (size_t v = 0; v < m.mesh.positions.size(); ++v) EXPECT_GT(m.mesh.normals[v].dot(m.mesh.positions[v]), 0.9);
+}
+
+TEST(MeshPrepare, APartPokingThroughAnotherWithinItsBoxKeepsFacingOutAndAWhollyNestedOneIsACavity) {
+    // A small ball through the inner wall of a torus's tube, its box inside the torus's box and
+    // its first vertex inside the tube (an eye through a head's socket): it was taken for the
+    // inner wall of a cavity and turned inside out, its normals (and so its sampling spheres)
+    // pointing out of it.
+    const double r = 0.1;
+    auto ball_normals_facing_out = [&](const Eigen::Vector3d& centre, size_t* inverted) {
+        meshgen::RawMesh m = meshgen::torus(1, 0.4, 48, 24);
+        m.append(meshgen::icosphere(r, 2), centre);
+        const ImportedMesh im = meshgen::prepare(m, "torus and ball");
+        *inverted = im.report.inverted_components;
+        int out = 0, ball = 0;
+        for (size_t v = 0; v < im.mesh.positions.size(); ++v) {
+            const Eigen::Vector3d d = im.mesh.positions[v] - centre;
+            if (std::abs(d.norm() - r) > 1e-9) continue;
+            ++ball;
+            out += im.mesh.normals[v].dot(d) > 0;
+        }
+        EXPECT_GT(ball, 100);
+        return double(out) / ball;
+    };
+    size_t inverted = 0;
+    for (const Eigen::Vector3d& through : {Eigen::Vector3d(0.68, 0, 0.1), Eigen::Vector3d(0.68, -0.1, 0.1)}) {
+        EXPECT_EQ(ball_normals_facing_out(through, &inverted), 1.0) << through.transpose();
+        EXPECT_EQ(inverted, 0u) << through.transpose();
+    }
+    // Wholly inside the tube, it is the wall of a cavity there (the even-odd rule, docs/queries.md).
+    EXPECT_EQ(ball_normals_facing_out(Eigen::Vector3d(1.0, 0, 0), &inverted), 0.0);
+    EXPECT_EQ(inverted, 1u);
+}
+
+TEST(MeshPrepare, APartInsideAConeOfSliversIsFoundNestedWithoutListingEverySliverInEveryCell) {
+    // A cone of 20,000 slivers from its apex, each of whose boxes spans the small box inside it:
+    // the grid that finds meeting faces would list every sliver in every cell (4e8 entries)
+    // without its budget.
+    const int slivers = 20000;
+    meshgen::RawMesh m;
+    m.positions = {{0, 0, 1}, {0, 0, -1}};
+    for (int k = 0; k < slivers; ++k) {
+        const double a = 2 * M_PI * k / slivers;
+        m.positions.push_back({std::cos(a), std::sin(a), -1});
+    }
+    for (int k = 0; k < slivers; ++k) {
+        const uint32_t p = 2 + uint32_t(k), q = 2 + uint32_t((k + 1) % slivers);
+        m.triangles.push_back({0, p, q});
+        m.triangles.push_back({1, q, p});
+    }
+    m.append(meshgen::box(0.1, 0.1, 0.1, 1), {0, 0, -0.5});
+    const ImportedMesh im = meshgen::prepare(m, "cone and box");
+    EXPECT_TRUE(im.report.closed);
+    EXPECT_EQ(im.report.inverted_components, 1u) << "the box wholly inside is the wall of a cavity";
 }
 
 TEST(MeshPrepare, OpenMeshLoadsWithWarning) {

@@ -1,10 +1,10 @@
 // Turns raw triangles into a TriangleMesh: weld, topology report, orientation fix, normals.
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
+#include "mesh/part_nesting.hpp"
 #include "mesh/weld.hpp"
 #include "base/cancel.hpp"
 #include "base/parallel.hpp"
-#include "geometry/ray_parity.hpp"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -111,26 +111,6 @@ double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) 
         v += (m.positions[t[0]] - o).dot((m.positions[t[1]] - o).cross(m.positions[t[2]] - o));
     }
     return v / 6.0;
-}
-
-// For each closed part: how many other closed parts hold it (ray parity from one of its
-// vertices, exact). Parts hold each other only where bounding boxes nest.
-std::vector<int> nesting_depths(const TriangleMesh& m, const std::vector<std::vector<uint32_t>>& components) {
-    std::vector<int> depth(components.size(), 0);
-    std::vector<Eigen::AlignedBox3d> box(components.size());
-    std::vector<size_t> closed;
-    for (size_t c = 0; c < components.size(); ++c) {
-        if (m.on_open_part[components[c][0]]) continue;
-        closed.push_back(c);
-        for (uint32_t f : components[c])
-            for (uint32_t v : m.triangles[f]) box[c].extend(m.positions[v]);
-    }
-    for (size_t i : closed)
-        for (size_t j : closed)
-            if (i != j && box[j].contains(box[i]) &&
-                inside_by_parity(m.positions, m.triangles, components[j], m.positions[m.triangles[components[i][0]][0]]))
-                ++depth[i];
-    return depth;
 }
 
 // Per face, the first face with the same three vertices (either winding): itself for all
@@ -416,7 +396,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
         part_faces.erase(std::remove_if(part_faces.begin(), part_faces.end(),
                                         [&](const std::vector<uint32_t>& p) { return m.copies_earlier_face(p[0]); }),
                          part_faces.end());
-        const std::vector<int> nesting = nesting_depths(m, part_faces);
+        const std::vector<int> nesting = detail::nesting_depths(m, part_faces);
         for (size_t c = 0; c < part_faces.size(); ++c) {
             const auto& comp = part_faces[c];
             if (!m.on_open_part[comp[0]] && (signed_volume(m, comp) < 0) != (nesting[c] % 2 == 1)) {
