@@ -62,6 +62,34 @@ TEST(Containment, ObjectInTheCavityOfAHollowShellDoesNotCollide) {
     EXPECT_TRUE(collides(*shell, *small, in_wall, QueryLevel::Exact));
 }
 
+TEST(Containment, ObjectInTheRegionTwoOverlappingClosedPartsShareCollidesAtEveryLevel) {
+    // Two boxes of side 2, the second moved by (0.45, 0.13, 0.07) (no face of one in a plane of the
+    // other): one solid, as a model built of overlapping parts is meant. By ray parity the
+    // shared region was outside at the exact level (two crossings).
+    const TriangleMesh a = make_box({1, 1, 1}, 2);
+    std::vector<Eigen::Vector3d> p = a.positions;
+    std::vector<Triangle> t = a.triangles;
+    const auto base = uint32_t(p.size());
+    for (const auto& q : a.positions) p.push_back(q + Eigen::Vector3d(0.45, 0.13, 0.07));
+    for (const auto& tri : a.triangles) t.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+    const ImportedMesh both = prepare_mesh("overlapping boxes", std::move(p), std::move(t));
+    ASSERT_TRUE(both.report.closed);
+    EXPECT_EQ(both.report.components, 2u);
+    EXPECT_EQ(both.report.inverted_components, 0u);
+    const auto solid = hard::make_object(both.mesh);
+    const auto small = hard::make_object(make_box({0.1, 0.1, 0.1}, 2));
+    const Pose shared{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.22, 0.05, 0.0)};
+    const Pose first_only{Eigen::Quaterniond::Identity(), Eigen::Vector3d(-0.8, 0.0, 0.0)};
+    const Pose second_only{Eigen::Quaterniond::Identity(), Eigen::Vector3d(1.25, 0.1, 0.1)};
+    const Pose outside{Eigen::Quaterniond::Identity(), Eigen::Vector3d(2.0, 0.1, 0.1)};
+    for (QueryLevel level : kLevels) {
+        for (const Pose& in : {shared, first_only, second_only})
+            EXPECT_TRUE(collides(*solid, *small, in, level)) << "level " << int(level) << " at " << in.translation.transpose();
+        EXPECT_TRUE(collides(*small, *solid, shared.inverse(), level)) << "level " << int(level);
+        EXPECT_FALSE(collides(*solid, *small, outside, level)) << "level " << int(level);
+    }
+}
+
 TEST(Containment, OpenBoxHoldsNothing) {
     const auto box = hard::make_object(make_open_box({1, 1, 1}, 4));
     const auto small = hard::make_object(make_box({0.1, 0.1, 0.1}, 2));

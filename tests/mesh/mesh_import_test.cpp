@@ -144,7 +144,7 @@ TEST(MeshPrepare, APartPokingThroughAnotherWithinItsBoxKeepsFacingOutAndAWhollyN
         EXPECT_EQ(ball_normals_facing_out(through, &inverted), 1.0) << through.transpose();
         EXPECT_EQ(inverted, 0u) << through.transpose();
     }
-    // Wholly inside the tube, it is the wall of a cavity there (the even-odd rule, docs/queries.md).
+    // Wholly inside the tube, it is the wall of a cavity there (docs/queries.md).
     EXPECT_EQ(ball_normals_facing_out(Eigen::Vector3d(1.0, 0, 0), &inverted), 0.0);
     EXPECT_EQ(inverted, 1u);
 }

@@ -1,6 +1,7 @@
-// Solid data of a model, and the exact point-in-solid test by ray parity.
+// Solid data of a model, and the exact point-in-solid test by a ray's winding number.
 #include "query/solid.hpp"
 #include "query/exact_data.hpp"
+#include "geometry/predicates.hpp"
 #include "geometry/ray_parity.hpp"
 #include "spt/compact_tree.hpp"
 #include <algorithm>
@@ -79,7 +80,7 @@ bool inside_closed_parts(const ExactData& e, const Eigen::Vector3d& p) {
         const Eigen::Vector3d q = p + length * dir;
         const Eigen::Vector3d seg = q - p;
         const double seg2 = seg.squaredNorm();
-        int parity = 0;
+        int winding = 0;
         bool degenerate = false;
         stack.assign(1, 0u);
         while (!stack.empty() && !degenerate) {
@@ -102,10 +103,13 @@ bool inside_closed_parts(const ExactData& e, const Eigen::Vector3d& p) {
                 const Crossing x = segment_crossing(p, q, e.positions[t[0]], e.positions[t[1]], e.positions[t[2]]);
                 if (x == Crossing::StartsOn) return true;
                 if (x == Crossing::Degenerate) degenerate = true;
-                parity ^= x == Crossing::Crosses;
+                // Signed: the ray leaves a part through faces turned one way and enters through
+                // faces turned the other, so the sum counts the parts around p.
+                if (x == Crossing::Crosses)
+                    winding += orient3d(e.positions[t[0]], e.positions[t[1]], e.positions[t[2]], p) > 0 ? 1 : -1;
             }
         }
-        if (!degenerate) return parity != 0;
+        if (!degenerate) return winding != 0;
     }
     return false; // every direction grazed an edge: not provably inside
 }

@@ -25,8 +25,10 @@ struct SolidData {
     size_t memory_bytes() const;
 };
 
-/// Exact: is local point p inside the closed parts of `e` (odd crossings of a ray with their
-/// triangles, decided by orientation predicates; a point on a closed triangle counts as inside)?
+/// Exact: is local point p inside the closed parts of `e`: is the winding number of their
+/// triangles about p, counted along a ray by orientation predicates, nonzero (so a region two
+/// overlapping parts share is inside, a hollow's cavity, walled by a part facing into it, is
+/// not)? A point on a closed triangle counts as inside.
 bool inside_closed_parts(const ExactData& e, const Eigen::Vector3d& p);
 
 } // namespace spt
