@@ -73,7 +73,9 @@ void SceneHistory::run(render::SceneOverlays overlays, bool load) {
         QMetaObject::invokeMethod(this, [this, message] { emit failed(message), emit stopped(); }, Qt::QueuedConnection);
     };
     try {
-        if (load) scene_ = std::make_shared<const Scene>(load_scene(path_.toStdString()));
+        // A history dropped while its meshes convert (the window closed, the file reloaded)
+        // stops them.
+        if (load) scene_ = std::make_shared<const Scene>(load_scene(path_.toStdString(), &stop_));
         effects_ = render::effects_for_overlays(scene_->effects, overlays);
         target_ = scene_->steps;
         Simulation sim(*scene_, effects_, hardware_threads());
@@ -99,6 +101,8 @@ void SceneHistory::run(render::SceneOverlays overlays, bool load) {
         }
         finished_ = true;
         QMetaObject::invokeMethod(this, [this] { emit stopped(); }, Qt::QueuedConnection);
+    } catch (const Cancelled&) {
+        finished_ = true; // only the destructor stops a history: nobody is told
     } catch (const std::exception& e) {
         // load_scene's messages name the file and the JSON path already.
         fail(QString::fromStdString(e.what()));

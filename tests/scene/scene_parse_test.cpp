@@ -180,6 +180,17 @@ TEST(SceneParse, ModelsAreLoadedOnceAndTheirSphereHoldsEveryVertex) {
     }
 }
 
+TEST(SceneParse, ACancelledLoadStopsAndCachesNothingSoTheNextLoadSucceeds) {
+    // The viewer drops a scene still converting its meshes (closed, or its file reloaded).
+    const spt::test::SceneDir dir;
+    const std::string path = dir.write("one.json", R"({"spt_scene": 1, "objects": [{"name": "a", "model": "box.obj"}]})");
+    std::atomic<bool> cancel{true};
+    EXPECT_THROW(load_scene(path, &cancel), Cancelled);
+    const Scene s = load_scene(path);
+    ASSERT_TRUE(s.objects[0].model);
+    EXPECT_GT(s.objects[0].model->tree().sphere_count(), 0u);
+}
+
 // The schema (docs/scene.schema.json) and the parser agree on every field and effect.
 TEST(SceneSchema, ParserAcceptsEveryFieldTheSchemaListsAndTheSchemaListsEveryEffect) {
     std::ifstream in(std::string(SPT_SOURCE_DIR) + "/docs/scene.schema.json");

@@ -6,6 +6,7 @@
 #include "spt/pose.hpp"
 #include "spt/query.hpp"
 #include "spt/response.hpp"
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -112,14 +113,16 @@ struct Scene {
 
 /// Reads a scene file and loads its models (meshes converted with default options; a model
 /// used twice is loaded once and kept in a process-wide cache keyed by file, time and scale).
-/// Throws Error(BadInput) with the file and the JSON path of the problem.
-Scene load_scene(const std::string& path);
+/// Throws Error(BadInput) with the file and the JSON path of the problem, or Cancelled once
+/// `cancel` (may be null) is set: reading and converting a mesh look at it (ImportOptions::cancel).
+Scene load_scene(const std::string& path, const std::atomic<bool>* cancel = nullptr);
 
 /// Parses scene JSON text; model paths are resolved against `base_dir`, models not loaded.
 /// `file` names the text in messages.
 Scene parse_scene(const std::string& text, const std::string& file, const std::string& base_dir);
 
-/// Loads every object's model (and its broad-phase sphere). Throws Error(BadInput).
-void load_models(Scene& scene);
+/// Loads every object's model (and its broad-phase sphere). Throws Error(BadInput), or
+/// Cancelled once `cancel` (may be null) is set; a model stopped so is not cached.
+void load_models(Scene& scene, const std::atomic<bool>* cancel = nullptr);
 
 } // namespace spt

@@ -53,7 +53,7 @@ void bound(const CollisionModel& m, const TriangleMesh* mesh, Cached& c) {
     c.radius = r * (1 + 1e-6) + 1e-6 * c.center.norm();
 }
 
-Cached load_one(const SceneObject& o, const std::string& where) {
+Cached load_one(const SceneObject& o, const std::string& where, const std::atomic<bool>* cancel) {
     if (is_spt_file(o.model_path)) {
         if (o.scale != 1)
             throw Error(ErrorKind::BadInput,
@@ -67,7 +67,9 @@ Cached load_one(const SceneObject& o, const std::string& where) {
         c.model = std::move(model);
         return c;
     }
-    ImportedMesh im = import_mesh(o.model_path);
+    ImportOptions reading;
+    reading.cancel = cancel;
+    ImportedMesh im = import_mesh(o.model_path, reading);
     for (Eigen::Vector3d& p : im.mesh.positions) p *= o.scale;
     // Import checked the mesh's size as read; scaled, it must still fit what import accepts.
     double far = 0;
@@ -80,7 +82,9 @@ Cached load_one(const SceneObject& o, const std::string& where) {
             << " (its diagonal would be " << diagonal << ")";
         throw Error(ErrorKind::BadInput, why.str());
     }
-    const SptDocument doc = make_document(im.mesh);
+    ConvertOptions converting;
+    converting.cancel = cancel;
+    const SptDocument doc = make_document(im.mesh, converting);
     if (!o.tree.empty() && !doc.tree(o.tree))
         throw Error(ErrorKind::BadInput, where + ": a mesh converted with default options has one tree, 'default', not '" +
                                              o.tree + "'");
@@ -93,7 +97,7 @@ Cached load_one(const SceneObject& o, const std::string& where) {
 
 } // namespace
 
-void load_models(Scene& scene) {
+void load_models(Scene& scene, const std::atomic<bool>* cancel) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         SceneObject& o = scene.objects[i];
         const std::string where = scene.file + ": at /objects/" + std::to_string(i) + "/model";
@@ -110,7 +114,7 @@ void load_models(Scene& scene) {
         }
         if (!c.model) {
             try {
-                c = load_one(o, where);
+                c = load_one(o, where, cancel);
             } catch (const Error& e) {
                 const std::string msg = e.what();
                 if (msg.rfind(where, 0) == 0) throw;

@@ -182,13 +182,13 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::s
     return s;
 }
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, const std::atomic<bool>* cancel) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(ErrorKind::BadInput, path + ": cannot open the scene file");
     std::stringstream buf;
     buf << in.rdbuf();
     Scene s = parse_scene(buf.str(), path, std::filesystem::path(path).parent_path().string());
-    load_models(s);
+    load_models(s, cancel);
     return s;
 }
 
