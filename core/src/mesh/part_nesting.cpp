@@ -47,14 +47,14 @@ bool surfaces_meet(const TriangleMesh& m, const std::vector<uint32_t>& a, const 
     // Faces far larger than a cell (slivers across the box) would be listed in thousands of
     // cells each: a coarser grid keeps the lists within a budget.
     const double budget = 16.0 * double(a.size() + near.size()) + double(1 << 20);
-    for (double listed = INFINITY; n > 1; n = std::max(1, n / 2)) {
-        listed = 0;
+    for (; n > 1; n = std::max(1, n / 2)) {
+        double entries = 0;
         for (const Eigen::AlignedBox3d& box : near_box) {
             double spans = 1;
             for (int axis = 0; axis < 3; ++axis) spans *= cells(box, axis).second - cells(box, axis).first + 1;
-            listed += spans;
+            entries += spans;
         }
-        if (listed <= budget) break;
+        if (entries <= budget) break;
     }
     std::vector<uint32_t> start(size_t(n) * size_t(n) * size_t(n) + 1, 0);
     for (const Eigen::AlignedBox3d& box : near_box) for_cells(box, [&](size_t c) { ++start[c + 1]; });
