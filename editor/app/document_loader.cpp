@@ -15,6 +15,7 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
                          const std::function<void(const std::string&)>& on_stage) {
     LoadResult r;
     r.path = path;
+    bool converting = false; // the mesh is read: a cancel now stops the conversion
     try {
         if (!QFileInfo(path).isFile()) throw_bad_input(path.toStdString(), "no such file");
         if (!is_spt_file(path)) {
@@ -24,6 +25,7 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
             ConvertOptions options;
             options.cancel = cancel;
             options.on_stage = on_stage;
+            converting = true;
             r.doc = make_document(mesh, options);
             // Authoring starts where the paper's tool does: the root holds every sample (B builds
             // the automatic tree under any node).
@@ -59,10 +61,10 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
         } catch (const std::exception& e) {
             r.warning = QString("%1; showing the sampling spheres only").arg(QString::fromStdString(e.what()));
         }
-    } catch (const Cancelled& e) {
+    } catch (const Cancelled&) {
         r.doc.reset();
         r.cancelled = true;
-        r.stopped_importing = std::string(e.what()).rfind("importing", 0) == 0;
+        r.stopped_importing = !converting;
         r.error = QString("%1: opening cancelled").arg(path);
     } catch (const Error& e) {
         r.doc.reset();

@@ -1,6 +1,7 @@
 // Mesh to document: vertex samples, tolerance-driven face samples, one built tree.
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
+#include "base/cancel.hpp"
 #include "base/parallel.hpp"
 #include "sampling/radius_class.hpp"
 #include "sampling/surface_samples.hpp"
@@ -59,8 +60,7 @@ VertexOnlyGaps vertex_only_gaps(const RadiusLimiter& limiter, const SampleSet& s
 
 // Names the stage starting and stops here if the caller asked to.
 void stage(const ConvertOptions& o, const TriangleMesh& mesh, const char* name) {
-    if (o.cancel && o.cancel->load(std::memory_order_relaxed))
-        throw Cancelled("converting " + mesh.name + ": cancelled");
+    detail::stop_if_cancelled(o.cancel, "converting", mesh.name);
     if (name && o.on_stage) o.on_stage(name);
 }
 

@@ -2,6 +2,7 @@
 #include "spt/tree_cost.hpp"
 #include "spt/error.hpp"
 #include "spt/query_scratch.hpp"
+#include "base/cancel.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -60,7 +61,7 @@ CostFigures run(const CollisionModel& a, const CollisionModel& b, const std::vec
     size_t colliding = 0;
     double node_pairs = 0, sphere_tests = 0;
     for (const Pose& p : poses) {
-        if (cancel && cancel->load()) {
+        if (detail::cancel_requested(cancel)) {
             *cancelled = true;
             break;
         }

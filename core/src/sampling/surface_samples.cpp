@@ -213,7 +213,7 @@ SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& orig
     std::atomic<size_t> made{0};
     return sample_in_runs(faces, origin, threads, [&](size_t first, size_t last, SampleSet& s) {
         for (auto f = uint32_t(first); f < last; ++f) {
-            if ((f & 4095u) == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
+            if ((f & 4095u) == 0 && detail::cancel_requested(cancel)) return;
             if (limiter.mesh().copies_earlier_face(f)) continue; // its samples would be its face's again
             const size_t before = s.size(), so_far = made.load(std::memory_order_relaxed);
             try {
