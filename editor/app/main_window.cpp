@@ -109,8 +109,8 @@ void MainWindow::build_docks() {
     tree_dock->setObjectName("tree_dock");
     tree_dock->setWidget(panel_);
     addDockWidget(Qt::RightDockWidgetArea, tree_dock);
-    auto* history = new QUndoView(&stack_);
-    history->setEmptyLabel("Opened");
+    auto* history = history_ = new QUndoView(&stack_);
+    history->setEmptyLabel("No document"); // the bottom row: the document as opened, once there is one
     auto* history_dock = new QDockWidget("History", this);
     history_dock->setObjectName("history_dock");
     history_dock->setWidget(history);

@@ -19,6 +19,7 @@
 
 class QLabel;
 class QProgressBar;
+class QUndoView;
 class QPushButton;
 
 namespace spt::editor {
@@ -137,6 +138,7 @@ private:
     ViewGrid* grid_ = nullptr;
     TreePanel* panel_ = nullptr;
     CostPanel* cost_ = nullptr;
+    QUndoView* history_ = nullptr;
     QString save_path_, source_path_, mesh_path_, pending_save_path_;
     bool unsaved_new_ = false, recovering_ = false, discard_on_open_ = false;
     bool opening_ = false; // from open_file until its result has been taken in

@@ -8,6 +8,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QUndoView>
 #include <QtConcurrent/QtConcurrentRun>
 
 namespace spt::editor {
@@ -51,6 +52,7 @@ void MainWindow::loaded(const LoadResult& r) {
     recovering_ = false;
     stack_.clear();
     doc_.reset(*r.doc, r.mesh);
+    history_->setEmptyLabel(recovered ? QString("Recovered unsaved work") : QString("Opened %1").arg(QFileInfo(r.path).fileName()));
     source_path_ = r.path;
     mesh_path_ = r.mesh_path;
     // A converted mesh or a recovered document exists nowhere on disk yet.

@@ -1,5 +1,6 @@
 // TreePanel: trees, nodes and properties; clicking a node makes it current.
 #include "tree_panel.hpp"
+#include "radius_box.hpp"
 #include <QComboBox>
 #include <QSignalBlocker>
 #include <QDoubleSpinBox>
@@ -48,10 +49,9 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     properties_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(properties_);
     auto* form = new QFormLayout;
-    radius_ = new QDoubleSpinBox;
-    radius_->setDecimals(6);
-    radius_->setRange(1e-6, 1e9);
-    auto* set_radius = new QPushButton("Set");
+    radius_ = new RadiusBox;
+    radius_->setObjectName("sampling_radius");
+    auto* set_radius = set_radius_ = new QPushButton("Set");
     auto* radius_row = new QHBoxLayout;
     radius_row->addWidget(radius_, 1);
     radius_row->addWidget(set_radius);
@@ -61,7 +61,8 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     leaf_size_->setValue(int(BuildOptions{}.leaf_size));
     strategy_ = new QComboBox;
     strategy_->addItems({"volume", "median"});
-    auto* build = new QPushButton("Build subtree");
+    auto* build = build_ = new QPushButton("Build subtree");
+    build->setObjectName("build_subtree");
     auto* build_row = new QHBoxLayout;
     build_row->addWidget(leaf_size_);
     build_row->addWidget(strategy_);
@@ -83,6 +84,7 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     connect(&doc_, &EditorDocument::treeChanged, this, &TreePanel::rebuild);
     connect(&doc_, &EditorDocument::currentChanged, this, &TreePanel::show_current);
     connect(&doc_, &EditorDocument::selectionChanged, this, &TreePanel::show_current);
+    rebuild();
 }
 
 void TreePanel::show_color_by_node(bool by_node) {
@@ -135,7 +137,14 @@ void TreePanel::rebuild() {
 }
 
 void TreePanel::show_current() {
-    if (!doc_.has_tree()) {
+    // Without a document there is no node to edit: the controls say so instead of showing a
+    // radius no node has.
+    const bool open = doc_.has_tree();
+    for (QWidget* w : std::initializer_list<QWidget*>{radius_, set_radius_, leaf_size_, strategy_, build_, trees_, color_})
+        w->setEnabled(open);
+    radius_->setSpecialValueText(open ? QString() : QString("-"));
+    if (!open) {
+        radius_->setValue(radius_->minimum());
         properties_->setText("No document");
         return;
     }

@@ -9,6 +9,7 @@
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QPushButton;
 class QSpinBox;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -47,6 +48,7 @@ private:
     QTreeWidget* nodes_ = nullptr;
     QLabel* properties_ = nullptr;
     QDoubleSpinBox* radius_ = nullptr;
+    QPushButton *set_radius_ = nullptr, *build_ = nullptr;
     QSpinBox* leaf_size_ = nullptr;
     QComboBox* strategy_ = nullptr;
     QComboBox* color_ = nullptr;

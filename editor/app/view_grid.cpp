@@ -1,7 +1,9 @@
 // ViewGrid: a vertical splitter of two horizontal ones, kept in step, and maximise/restore.
 #include "view_grid.hpp"
+#include <QLabel>
 #include <QSplitter>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace spt::editor {
 
@@ -28,6 +30,27 @@ ViewGrid::ViewGrid(EditorDocument& doc, Scene& scene, const ViewOptions& options
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(rows_);
+    // A first start shows empty views: say what to do, until a document is in.
+    hint_ = new QLabel("No document.\nOpen a mesh or a .spt file: File > Open (Ctrl+O),\nor drop it on the window.", this);
+    hint_->setObjectName("empty_hint");
+    hint_->setAlignment(Qt::AlignCenter);
+    hint_->setAttribute(Qt::WA_TransparentForMouseEvents);
+    hint_->setStyleSheet("QLabel { color: #303030; background: rgba(255, 255, 255, 200); padding: 10px 16px; }");
+    hint_->setVisible(!doc.has_tree());
+    connect(&doc, &EditorDocument::documentReset, this, [this, &doc] { hint_->setVisible(!doc.has_tree()); });
+    place_hint();
+}
+
+void ViewGrid::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    place_hint();
+}
+
+void ViewGrid::place_hint() {
+    hint_->adjustSize();
+    // Across the middle of the top row: the grid's very centre would cover the camera view's name.
+    hint_->move((width() - hint_->width()) / 2, std::max(0, (height() / 2 - hint_->height()) / 2));
+    hint_->raise();
 }
 
 ViewWidget* ViewGrid::view_at(const QPoint& global) const {

@@ -5,6 +5,7 @@
 #include <QWidget>
 #include <array>
 
+class QLabel;
 class QSplitter;
 
 namespace spt::editor {
@@ -23,8 +24,15 @@ public:
     void toggle_maximised(ViewWidget* v);
     /// True while one view fills the grid.
     bool maximised() const { return maximised_; }
+    /// The hint over the views while no document is open ("open a mesh or a .spt file...").
+    const QLabel& empty_hint() const { return *hint_; }
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void place_hint();
+    QLabel* hint_ = nullptr;
     std::array<ViewWidget*, 4> views_{};
     QSplitter* rows_ = nullptr;
     std::array<QSplitter*, 2> columns_{};

@@ -2,6 +2,7 @@
 #include "render_view.hpp"
 #include "view_navigation.hpp"
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QSurfaceFormat>
@@ -9,6 +10,12 @@
 #include <cmath>
 
 namespace spt::editor {
+
+QString view_title(render::View view) {
+    QString name = render::view_name(view);
+    if (!name.isEmpty()) name[0] = name[0].toUpper();
+    return name;
+}
 
 void use_render_gl_format() {
     QSurfaceFormat format;
@@ -24,6 +31,12 @@ RenderView::RenderView(render::View view, QWidget* parent) : QOpenGLWidget(paren
     setMinimumSize(80, 60);
     setAccessibleName(render::view_name(view));
     setObjectName(QString("view_") + render::view_name(view));
+    title_ = new QLabel(view_title(view), this);
+    title_->setObjectName("view_title");
+    title_->setAttribute(Qt::WA_TransparentForMouseEvents); // a drag that starts on it selects or pans
+    title_->setStyleSheet("QLabel { color: #303030; background: rgba(255, 255, 255, 170); padding: 1px 5px; }");
+    title_->adjustSize();
+    title_->move(4, 4);
 }
 
 RenderView::~RenderView() {
@@ -45,6 +58,8 @@ void RenderView::release_gl() {
 void RenderView::set_view(render::View view) {
     camera_.view = view;
     setAccessibleName(render::view_name(view));
+    title_->setText(view_title(view));
+    title_->adjustSize();
     frame_all();
 }
 

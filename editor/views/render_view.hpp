@@ -8,7 +8,12 @@
 #include <QPoint>
 #include <memory>
 
+class QLabel;
+
 namespace spt::editor {
+
+/// The name a view's corner shows: "Top", "Front", "Side" or "Camera".
+QString view_title(render::View view);
 
 /// Makes OpenGL 3.3 core with a 24-bit depth buffer the default surface format, as render/
 /// needs; call before the QApplication is made.
@@ -83,6 +88,9 @@ private:
     uint64_t frames_painted_ = 0;
     Drag drag_ = Drag::None;
     QPoint last_;
+    // The view's name in its top-left corner, as Blender's quad view shows it: a child widget
+    // that Qt composes over the picture, so the framebuffer stays what `spt render` draws.
+    QLabel* title_ = nullptr;
 };
 
 } // namespace spt::editor

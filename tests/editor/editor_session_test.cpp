@@ -6,12 +6,15 @@
 #include "spt/spt_file.hpp"
 #include "cost_panel.hpp"
 #include "tree_panel.hpp"
+#include "radius_box.hpp"
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -22,6 +25,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QUndoView>
 #include <QUrl>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -245,4 +249,67 @@ TEST(EditorSession, TheTreePanelShowsManyRowsBesideTheHistoryAndCostTabs) {
     auto* scroll = qobject_cast<QScrollArea*>(w->findChild<QDockWidget*>("cost_dock")->widget());
     ASSERT_TRUE(scroll);
     EXPECT_EQ(scroll->widget(), &w->cost_panel());
+}
+
+TEST(EditorSession, AStartWithNoFileSaysHowToOpenOneAndEveryViewIsNamed) {
+    // A first start showed four empty views, an "Opened" history with nothing opened and a
+    // sampling radius of 0.000001 that no node had.
+    TempDir dir("editor-session-empty");
+    editor::MainWindow w(test_start(dir));
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+    const char* names[4] = {"Top", "Front", "Side", "Camera"};
+    for (int i = 0; i < 4; ++i) {
+        auto* title = w.grid().view(i)->findChild<QLabel*>("view_title");
+        ASSERT_TRUE(title) << names[i];
+        EXPECT_EQ(title->text().toStdString(), names[i]);
+        EXPECT_TRUE(title->isVisible()) << names[i];
+        EXPECT_TRUE(title->testAttribute(Qt::WA_TransparentForMouseEvents)) << "a drag starting on it must still select";
+    }
+    const QLabel& hint = w.grid().empty_hint();
+    EXPECT_TRUE(hint.isVisible());
+    EXPECT_TRUE(hint.text().contains("Open a mesh or a .spt file")) << hint.text().toStdString();
+    auto* history = w.findChild<QUndoView*>();
+    ASSERT_TRUE(history);
+    EXPECT_EQ(history->emptyLabel().toStdString(), "No document");
+    auto* build = w.tree_panel().findChild<QPushButton*>("build_subtree");
+    auto* radius = w.tree_panel().findChild<QDoubleSpinBox*>("sampling_radius");
+    ASSERT_TRUE(build && radius);
+    EXPECT_FALSE(build->isEnabled());
+    EXPECT_FALSE(radius->isEnabled());
+    EXPECT_EQ(radius->text().toStdString(), "-");
+    EXPECT_FALSE(w.split()) << "nothing to split";
+    EXPECT_TRUE(w.last_message().contains("no document")) << w.last_message().toStdString();
+
+    const EditorFiles files = write_editor_files(dir);
+    w.open_file(files.spt);
+    ASSERT_TRUE(wait_ready(w)) << w.last_error().toStdString();
+    EXPECT_FALSE(hint.isVisible());
+    EXPECT_EQ(history->emptyLabel().toStdString(), "Opened torus.spt");
+    EXPECT_TRUE(build->isEnabled());
+    EXPECT_TRUE(radius->isEnabled());
+    EXPECT_EQ(radius->value(), double(w.document().tree().find(w.document().current())->ss_radius));
+    EXPECT_NE(radius->text().toStdString(), "-");
+}
+
+TEST(EditorSession, TheRadiusBoxKeepsRadiiOfModelsAThousandthOfAUnitAcrossAndTakesScientificNotation) {
+    // With six fixed decimals, a radius of 1.2e-7 showed, and was set, as 0.000001.
+    editor::RadiusBox box;
+    box.setValue(1.234567e-7);
+    EXPECT_EQ(box.value(), 1.234567e-7);
+    EXPECT_EQ(box.text().toStdString(), "1.23457e-07");
+    box.setValue(350.0);
+    EXPECT_EQ(box.text().toStdString(), "350");
+    box.show();
+    box.setFocus();
+    box.selectAll();
+    QTest::keyClicks(&box, "2.5e-8");
+    QTest::keyClick(&box, Qt::Key_Return);
+    EXPECT_EQ(box.value(), 2.5e-8);
+    box.selectAll();
+    QTest::keyClicks(&box, "abc"); // not a number: refused as typed, the value kept
+    QTest::keyClick(&box, Qt::Key_Return);
+    EXPECT_EQ(box.value(), 2.5e-8);
+    box.stepUp(); // a tenth of the leading digit
+    EXPECT_NEAR(box.value(), 2.6e-8, 1e-20);
 }
