@@ -245,9 +245,13 @@ int run_render(const RenderArgs& a) {
     frame.axes = overlays.count("axes") > 0;
     const bool show_spheres = overlays.count("spheres") > 0;
     const bool show_node = overlays.count("node") > 0;
+    // Geometry is uploaded relative to the model's local origin and placed back by its pose:
+    // far from the origin, float keeps its detail only so.
+    const Eigen::Vector3d origin = doc ? doc->samples.origin : mesh ? Renderer::drawing_origin(*mesh) : Eigen::Vector3d::Zero();
     if (mesh) {
         MeshItem item;
-        item.mesh = renderer->add_mesh(*mesh);
+        item.mesh = renderer->add_mesh(*mesh, origin);
+        item.pose = local_frame(origin);
         item.style.shading = a.shading == "flat" ? Shading::Flat : a.shading == "none" ? Shading::None : Shading::Smooth;
         item.style.wireframe = overlays.count("wire") > 0;
         item.style.points = overlays.count("points") > 0;
@@ -259,14 +263,17 @@ int run_render(const RenderArgs& a) {
     if (tree && (show_spheres || show_node)) {
         const CompactTree compact(*tree, doc->samples);
         const SphereSetHandle set = renderer->add_spheres(
-            sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level));
+            sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level, origin));
         if (show_node) {
-            for (const SphereItem& item : highlighted_node(set, renderer->sphere_count(set),
-                                                           sphere_range(compact, *tree, a.node), show_spheres))
+            for (SphereItem item : highlighted_node(set, renderer->sphere_count(set),
+                                                    sphere_range(compact, *tree, a.node), show_spheres)) {
+                item.pose = local_frame(origin);
                 frame.spheres.push_back(item);
+            }
         } else {
             SphereItem all;
             all.spheres = set;
+            all.pose = local_frame(origin);
             frame.spheres.push_back(all);
         }
     }

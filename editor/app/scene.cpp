@@ -26,6 +26,7 @@ void Scene::set_color_by(render::ColorBy by) {
 
 void Scene::rebuild_mesh() {
     data_.mesh = doc_.mesh();
+    data_.origin = doc_.samples().origin;
     ++data_.mesh_revision;
 }
 
@@ -35,7 +36,7 @@ void Scene::rebuild_tree() {
     sphere_of_sample_.assign(doc_.samples().size(), UINT32_MAX);
     if (doc_.has_tree()) {
         compact_ = std::make_unique<CompactTree>(doc_.tree(), doc_.samples());
-        data_.spheres = render::sampling_spheres(*compact_, doc_.tree(), color_by_);
+        data_.spheres = render::sampling_spheres(*compact_, doc_.tree(), color_by_, data_.origin);
         const uint32_t* sample = compact_->sample_index();
         for (uint32_t k = 0; k < uint32_t(compact_->sphere_count()); ++k)
             if (sample[k] < sphere_of_sample_.size()) sphere_of_sample_[sample[k]] = k;
@@ -73,6 +74,7 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
     if (data_.mesh && mesh.id) {
         render::MeshItem item;
         item.mesh = mesh;
+        item.pose = render::local_frame(data_.origin);
         // Sampling spheres lie inside the surface: they show through a see-through mesh.
         item.style.opacity = data_.spheres.empty() ? 1.0f : 0.3f;
         f.meshes.push_back(item);
@@ -84,6 +86,7 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         for (render::SphereItem item :
              render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true)) {
             item.marked_color = selection_color();
+            item.pose = render::local_frame(data_.origin);
             f.spheres.push_back(item);
         }
     }

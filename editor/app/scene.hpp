@@ -21,6 +21,9 @@ struct SceneData {
     render::SphereRange highlight;                  ///< the current node's spheres
     std::vector<uint32_t> selected;                 ///< indices into `spheres` of the selected samples
     std::vector<render::WireSphere> wires;          ///< bounding sphere of the current node
+    /// The mesh and `spheres` are relative to it (the document's local origin), drawn with
+    /// render::local_frame(origin): far from the origin float keeps their detail only so.
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
     uint64_t mesh_revision = 0;      ///< changes when the mesh changes
     uint64_t spheres_revision = 0;   ///< changes when `spheres` changes
     uint64_t selected_revision = 0;  ///< changes when `selected` changes

@@ -28,7 +28,8 @@ void ViewWidget::frame_selection() {
     if (doc_.selection().empty()) return frame_all();
     render::Bounds b;
     for (uint32_t i : scene_.data().selected)
-        b.add_sphere(scene_.data().spheres[i].sphere.center, scene_.data().spheres[i].sphere.radius);
+        b.add_sphere(render::local_frame(scene_.data().origin) * scene_.data().spheres[i].sphere.center,
+                     scene_.data().spheres[i].sphere.radius);
     const render::Camera fitted = render::fit_camera(view(), b);
     camera_mut().target = fitted.target;
     camera_mut().radius = fitted.radius;
@@ -45,7 +46,7 @@ void ViewWidget::upload(render::Renderer& renderer) {
     const SceneData& d = scene_.data();
     if (mesh_rev_ != d.mesh_revision) {
         renderer.remove_mesh(mesh_);
-        mesh_ = d.mesh ? renderer.add_mesh(*d.mesh) : render::MeshHandle{};
+        mesh_ = d.mesh ? renderer.add_mesh(*d.mesh, d.origin) : render::MeshHandle{};
         mesh_rev_ = d.mesh_revision;
     }
     if (spheres_rev_ != d.spheres_revision) {

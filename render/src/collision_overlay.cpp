@@ -8,11 +8,12 @@ namespace spt::render {
 
 std::vector<Sphere> world_spheres(const CompactTree& compact, const Eigen::Affine3f& pose) {
     std::vector<Sphere> out(compact.sphere_count());
-    const Eigen::Vector3f origin = compact.origin().cast<float>();
+    const Eigen::Vector3d origin = compact.origin();
     for (const CompactNode& n : compact.nodes()) {
         if (!n.is_active()) continue;
         for (uint32_t k = n.first; k < n.first + n.count; ++k)
-            out[k] = {pose * (origin + compact.sphere_centre(n, k)), n.ss_radius};
+            out[k] = {pose * Eigen::Vector3f((origin + compact.sphere_centre(n, k).cast<double>()).cast<float>()),
+                      n.ss_radius};
     }
     return out;
 }

@@ -42,9 +42,19 @@ void Renderer::Impl::draw_grid(const Bounds& b, float ground) {
     draw_lines(v, GL_LINES);
 }
 
+namespace {
+
+// View times pose in double: geometry far from the origin is uploaded relative to a point near
+// it (local_frame), and the view's and the pose's large translations cancel here, not in float.
+Eigen::Matrix4f model_view(const Eigen::Matrix4f& view, const Eigen::Affine3f& pose) {
+    return (view.cast<double>() * pose.matrix().cast<double>()).cast<float>();
+}
+
+} // namespace
+
 void Renderer::Impl::draw_mesh_faces(const GpuMesh& m, const MeshItem& item) {
     const MeshStyle& s = item.style;
-    const Eigen::Matrix4f mv = view * item.pose.matrix();
+    const Eigen::Matrix4f mv = model_view(view, item.pose);
     if (s.shading != Shading::None) {
         gl.UseProgram(prog.mesh.id);
         gl.UniformMatrix4fv(prog.mesh.model_view, 1, GL_FALSE, mv.data());
@@ -96,7 +106,7 @@ void Renderer::Impl::splat_sphere_items(const Frame& f) {
         x.first_index = item.first;
         x.count = std::min<uint32_t>(item.count, s.count - item.first);
         x.spheres = s.spheres.data() + item.first;
-        x.model_view = view * item.pose.matrix();
+        x.model_view = model_view(view, item.pose);
         if (item.color) x.override_color = true, x.color = {item.color->r, item.color->g, item.color->b, item.color->a};
         x.fade = std::clamp(item.fade, 0.0f, 1.0f);
         if (item.marked_color && s.mark_vbo) {

@@ -19,13 +19,19 @@ const std::string& Renderer::gl_renderer() const { return impl_->renderer_name; 
 
 DrawKind Renderer::last_draw_kind() const { return impl_->last_kind; }
 
-MeshHandle Renderer::add_mesh(const TriangleMesh& mesh) {
+Eigen::Vector3d Renderer::drawing_origin(const TriangleMesh& mesh) {
+    const auto [lo, hi] = mesh.bounds();
+    const double size = (hi - lo).maxCoeff(), farthest = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+    return farthest > 8 * size ? Eigen::Vector3d(0.5 * (lo + hi)) : Eigen::Vector3d::Zero();
+}
+
+MeshHandle Renderer::add_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& origin) {
     auto& gl = impl_->gl;
     Impl::GpuMesh m;
     std::vector<float> verts;
     verts.reserve(mesh.positions.size() * 6);
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        const Eigen::Vector3f p = mesh.positions[i].cast<float>();
+        const Eigen::Vector3f p = (mesh.positions[i] - origin).cast<float>();
         const Eigen::Vector3f n = i < mesh.normals.size() ? Eigen::Vector3f(mesh.normals[i].cast<float>()) : Eigen::Vector3f::Zero();
         verts.insert(verts.end(), {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()});
         m.bounds.add(p);

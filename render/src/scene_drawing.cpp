@@ -28,12 +28,13 @@ Color object_color(size_t i) {
     return palette[i % 6];
 }
 
+// A model's spheres in its local frame (drawn with local_frame(origin, pose)).
 std::vector<SphereInstance> spheres_of(const CollisionModel& m, const Color& color) {
     std::vector<SphereInstance> out;
     const CompactTree& t = m.tree();
     for (const CompactNode& n : t.nodes())
         for (uint32_t k = n.first; n.count && k < n.first + n.count; ++k)
-            out.push_back({{t.sphere_centre(n, k) + m.origin().cast<float>(), n.ss_radius}, color});
+            out.push_back({{t.sphere_centre(n, k), n.ss_radius}, color});
     return out;
 }
 
@@ -70,7 +71,7 @@ SceneDrawing::SceneDrawing(Renderer& renderer, const Scene& scene) : scene_(scen
             if (!is_spt_file(o.model_path)) {
                 TriangleMesh m = import_mesh(o.model_path).mesh;
                 for (Eigen::Vector3d& p : m.positions) p *= o.scale;
-                mesh = renderer.add_mesh(m);
+                mesh = renderer.add_mesh(m, o.model->origin()); // drawn in the model's local frame, as its spheres
             }
             const SphereSetHandle set = renderer.add_spheres(spheres_of(*o.model, object_color(first ? 0 : 1 + i % 5)));
             it = done.emplace(key, std::make_pair(mesh, set)).first;
@@ -102,20 +103,20 @@ Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step
         if (mesh_[i].id && !o.spheres) {
             MeshItem item;
             item.mesh = mesh_[i];
-            item.pose = affine(poses[i]);
+            item.pose = local_frame(scene_.objects[i].model->origin(), affine(poses[i]));
             item.style.color = object_color(i == 0 ? 0 : 1 + i % 5);
             f.meshes.push_back(item);
         } else {
             SphereItem s;
             s.spheres = set_[i];
-            s.pose = affine(poses[i]);
+            s.pose = local_frame(scene_.objects[i].model->origin(), affine(poses[i]));
             f.spheres.push_back(s);
         }
         if (o.ghost && i < ghost.size() && ghost[i].translation != poses[i].translation) {
             if (mesh_[i].id) {
                 MeshItem g;
                 g.mesh = mesh_[i];
-                g.pose = affine(ghost[i]);
+                g.pose = local_frame(scene_.objects[i].model->origin(), affine(ghost[i]));
                 g.style.opacity = 0.3f;
                 f.meshes.push_back(g);
             } else {

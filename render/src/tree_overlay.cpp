@@ -64,16 +64,17 @@ Color node_color(NodeId id) {
 
 Color highlight_color() { return {1.0f, 0.78f, 0.05f, 1}; }
 
-std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by) {
+std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by,
+                                             const Eigen::Vector3d& frame_origin) {
     const auto nodes = tree.nodes();
     std::vector<SphereInstance> out(compact.sphere_count());
-    const Eigen::Vector3f origin = compact.origin().cast<float>();
+    const Eigen::Vector3d origin = compact.origin() - frame_origin;
     for (const CompactNode& c : compact.nodes()) {
         if (!c.is_active()) continue;
         const NodeId id = c.tree_node < nodes.size() ? nodes[c.tree_node]->id : root_id();
         const Color color = by == ColorBy::Level ? level_color(node_depth(id)) : node_color(id);
         for (uint32_t k = c.first; k < c.first + c.count; ++k) {
-            out[k].sphere.center = origin + compact.sphere_centre(c, k);
+            out[k].sphere.center = (origin + compact.sphere_centre(c, k).cast<double>()).cast<float>();
             out[k].sphere.radius = c.ss_radius;
             out[k].color = color;
         }
@@ -119,7 +120,6 @@ std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size,
 
 std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, const Eigen::Vector3d& origin, NodeId id, int levels,
                                          const Color& color, const Eigen::Affine3f& pose) {
-    const Eigen::Vector3f o = origin.cast<float>();
     std::vector<WireSphere> out;
     const TreeNode* top = tree.find(id);
     if (!top) return out;
@@ -132,7 +132,7 @@ std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, const Eigen::
         if (!node) continue;
         const int below = node_depth(n) - top_depth;
         WireSphere w;
-        w.sphere.center = pose * (o + node->center);
+        w.sphere.center = pose * Eigen::Vector3f((origin + node->center.cast<double>()).cast<float>());
         w.sphere.radius = node->bv_radius;
         w.color = n == id ? color : level_color(node_depth(n));
         out.push_back(w);

@@ -60,6 +60,13 @@ struct MeshStyle {
     float point_size = 3;       ///< diameter of a vertex point, framebuffer pixels
 };
 
+/// The pose of geometry uploaded relative to `origin` (Renderer::add_mesh, sampling_spheres):
+/// `pose` after a move by origin. The renderer composes it with the view in double, so the
+/// large translations cancel there and the picture keeps the geometry's detail.
+inline Eigen::Affine3f local_frame(const Eigen::Vector3d& origin, const Eigen::Affine3f& pose = Eigen::Affine3f::Identity()) {
+    return pose * Eigen::Translation3f(origin.cast<float>());
+}
+
 /// A mesh placed in the world.
 struct MeshItem {
     MeshHandle mesh;  ///< the uploaded mesh; an unknown handle makes Renderer::draw throw

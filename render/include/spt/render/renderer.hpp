@@ -47,7 +47,13 @@ public:
 
     /// Uploads a mesh (positions and vertex normals, object frame, model units) and returns
     /// its handle; throws std::invalid_argument naming the mesh if a triangle index is out of range.
-    MeshHandle add_mesh(const TriangleMesh& mesh);
+    /// Positions are uploaded relative to `origin` (subtracted in double); draw the mesh with a
+    /// pose that adds it back (local_frame). Far from the origin float keeps a mesh's detail
+    /// only so: at 10^6 its spacing is 1/16 of a unit.
+    MeshHandle add_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& origin = Eigen::Vector3d::Zero());
+    /// An origin for add_mesh when no model's local origin is at hand: zero for a mesh near the
+    /// origin (its picture as before), the centre of its box for one farther than 8 sizes out.
+    static Eigen::Vector3d drawing_origin(const TriangleMesh& mesh);
     /// Frees an uploaded mesh; the handle becomes invalid. An unknown handle is ignored.
     void remove_mesh(MeshHandle mesh);
     /// Uploads solid spheres (object frame, model units) for instanced drawing and returns the set's handle.

@@ -23,8 +23,11 @@ Color node_color(NodeId id);
 Color highlight_color();
 
 /// Every sampling sphere of `compact` in the object frame (the layout's origin added), coloured by `by`; `tree` is
-/// the tree `compact` was built from (for node ids and depths).
-std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by);
+/// the tree `compact` was built from (for node ids and depths). Centres are relative to
+/// `frame_origin` (subtracted in double): pass the layout's origin and draw the set with
+/// local_frame(origin) to keep a model far from the origin sharp.
+std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by,
+                                             const Eigen::Vector3d& frame_origin = Eigen::Vector3d::Zero());
 
 /// A range [first, first + count) of sampling_spheres(), i.e. of the CompactTree's spheres.
 struct SphereRange {
