@@ -14,6 +14,12 @@ float nice_step(float x) {
     return (m >= 5 ? 5.0f : m >= 2 ? 2.0f : 1.0f) * p;
 }
 
+// View times pose in double: geometry far from the origin is uploaded relative to a point near
+// it (local_frame), and the view's and the pose's large translations cancel here, not in float.
+Eigen::Matrix4f model_view(const Eigen::Matrix4f& view, const Eigen::Affine3f& pose) {
+    return (view.cast<double>() * pose.matrix().cast<double>()).cast<float>();
+}
+
 } // namespace
 
 // The grid lies under the meshes and spheres (not under overlays such as bounding
@@ -27,30 +33,32 @@ void Renderer::Impl::draw_grid(const Bounds& b, float ground) {
     const float cx = std::round(c.x() / step) * step, cz = std::round(c.z() / step) * step;
     const float y = ground;
     const float ext = float(half) * step;
+    // Far from the origin the lines are made relative to the grid's centre and placed by a pose
+    // composed in double, as meshes are: in world floats they would snap to the float spacing
+    // there. Near it they stay in world floats, as the golden images have them.
+    const bool far = std::max({std::abs(cx), std::abs(cz), std::abs(y)}) > 8 * ext;
+    const Eigen::Vector3f at = far ? Eigen::Vector3f(cx, y, cz) : Eigen::Vector3f::Zero();
+    const long first_x = std::lround(cx / step), first_z = std::lround(cz / step);
     std::vector<LineVertex> v;
     const Color minor{0.80f, 0.81f, 0.84f, 1}, major{0.62f, 0.64f, 0.69f, 1};
     for (int i = -half; i <= half; ++i) {
-        const float x = cx + float(i) * step, z = cz + float(i) * step;
+        const float x = (far ? 0 : cx) + float(i) * step, z = (far ? 0 : cz) + float(i) * step;
+        const float lo_x = (far ? 0 : cx) - ext, hi_x = (far ? 0 : cx) + ext, lo_z = (far ? 0 : cz) - ext,
+                    hi_z = (far ? 0 : cz) + ext, h = far ? 0 : y;
         // Every fifth line from the world origin is darker, so scale can be read off.
-        const Color& cxcol = (std::lround(x / step) % 5 == 0) ? major : minor;
-        const Color& czcol = (std::lround(z / step) % 5 == 0) ? major : minor;
-        push_line_vertex(v, {x, y, cz - ext}, cxcol);
-        push_line_vertex(v, {x, y, cz + ext}, cxcol);
-        push_line_vertex(v, {cx - ext, y, z}, czcol);
-        push_line_vertex(v, {cx + ext, y, z}, czcol);
+        const Color& cxcol = ((first_x + i) % 5 == 0) ? major : minor;
+        const Color& czcol = ((first_z + i) % 5 == 0) ? major : minor;
+        push_line_vertex(v, {x, h, lo_z}, cxcol);
+        push_line_vertex(v, {x, h, hi_z}, cxcol);
+        push_line_vertex(v, {lo_x, h, z}, czcol);
+        push_line_vertex(v, {hi_x, h, z}, czcol);
     }
-    draw_lines(v, GL_LINES);
+    if (!far) return draw_lines(v, GL_LINES);
+    use_line_program((proj.cast<double>() * model_view(view, Eigen::Affine3f(Eigen::Translation3f(at))).cast<double>()).cast<float>());
+    gl.BindVertexArray(line_vao);
+    stream_lines(v);
+    gl.DrawArrays(GL_LINES, 0, GLsizei(v.size()));
 }
-
-namespace {
-
-// View times pose in double: geometry far from the origin is uploaded relative to a point near
-// it (local_frame), and the view's and the pose's large translations cancel here, not in float.
-Eigen::Matrix4f model_view(const Eigen::Matrix4f& view, const Eigen::Affine3f& pose) {
-    return (view.cast<double>() * pose.matrix().cast<double>()).cast<float>();
-}
-
-} // namespace
 
 void Renderer::Impl::draw_mesh_faces(const GpuMesh& m, const MeshItem& item) {
     const MeshStyle& s = item.style;

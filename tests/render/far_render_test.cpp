@@ -39,6 +39,8 @@ Frame model_frame(Renderer& r, const Model& m, bool world_floats = false) {
     const spt::CompactTree compact(m.doc.trees.front(), m.doc.samples);
     const Eigen::Vector3d origin = m.doc.samples.origin;
     Frame f;
+    // Without the grid: its extent and height follow the frame's bounds, which are float, so
+    // far out they can pick the next line or a ground a float spacing lower.
     f.grid = false;
     MeshItem mesh;
     mesh.mesh = r.add_mesh(m.mesh, origin);
