@@ -18,7 +18,7 @@ namespace {
 
 using test::TempDir;
 
-const Eigen::Vector3d kAway = Eigen::Vector3d(1, -0.6, 0.3).normalized();
+const Eigen::Vector3d kExported = Eigen::Vector3d(1, -0.6, 0.3).normalized();
 
 enum class Format { Obj, PlyAscii, PlyDoubleLittle, PlyDoubleBig, PlyFloat };
 
@@ -104,7 +104,7 @@ TEST(FarMeshFile, OneExportedAMillionUnitsOutImportsAsPreciselyAsAtTheOrigin) {
         TempDir near_dir("far-file-near"), far_dir("far-file-far");
         const ImportedMesh near = import_mesh(write(part, Eigen::Vector3d::Zero(), format, near_dir));
         for (double distance : {1e4, 1e5, 1e6}) {
-            const Eigen::Vector3d offset = distance * kAway;
+            const Eigen::Vector3d offset = distance * kExported;
             const ImportedMesh far = import_mesh(write(part, offset, format, far_dir));
             ASSERT_EQ(far.mesh.positions.size(), near.mesh.positions.size())
                 << format_name(format) << " at " << distance << ": vertices merged by rounding";
@@ -122,21 +122,21 @@ TEST(FarMeshFile, ItsSampledModelIsTheModelAtTheOriginMoved) {
     const TriangleMesh part = make_torus(1.0, 0.35, 40, 20);
     TempDir near_dir("far-model-near"), far_dir("far-model-far");
     const SptDocument near = load_or_convert(write(part, Eigen::Vector3d::Zero(), Format::Obj, near_dir));
-    const SptDocument far = load_or_convert(write(part, 1e6 * kAway, Format::Obj, far_dir));
+    const SptDocument far = load_or_convert(write(part, 1e6 * kExported, Format::Obj, far_dir));
     // The same samples as the part at the origin, as the far model made in code gets them
     // (FarFromOrigin.MeshExportedInWorldUnitsConvertsToAnEquivalentModel): the local origin is
     // rounded another way out there, so float sample coordinates round another way too.
     const double n0 = double(near.samples.size());
     EXPECT_NEAR(double(far.samples.size()), n0, 0.01 * n0);
     EXPECT_EQ(far.mesh.vertex_count, near.mesh.vertex_count);
-    EXPECT_LE((far.samples.origin - 1e6 * kAway).norm(), 2 * part.diagonal()) << "the local origin sits with the part";
+    EXPECT_LE((far.samples.origin - 1e6 * kExported).norm(), 2 * part.diagonal()) << "the local origin sits with the part";
 }
 
 TEST(FarMeshFile, FloatCoordinatesInTheFileItselfAreReadAsTheyAreAndNothingElseIsRewritten) {
     const TriangleMesh part = make_torus(1.0, 0.35, 40, 20);
     TempDir dir("far-file-float");
     // A float file holds no more than assimp reads: it imports (its vertices as rounded) without a rewrite.
-    const std::string path = write(part, 1e4 * kAway, Format::PlyFloat, dir);
+    const std::string path = write(part, 1e4 * kExported, Format::PlyFloat, dir);
     EXPECT_FALSE(detail::recentre_positions(path, nullptr).has_value());
     EXPECT_NO_THROW(import_mesh(path));
     // Near the origin nothing is rewritten: files read exactly as before.
