@@ -155,7 +155,12 @@ void MainWindow::build_menus() {
     QAction* undo = stack_.createUndoAction(this, "&Undo");
     undo->setShortcut(QKeySequence::Undo);
     QAction* redo = stack_.createRedoAction(this, "&Redo");
-    redo->setShortcuts({QKeySequence("Ctrl+Shift+Z"), QKeySequence::Redo});
+    // Ctrl+Shift+Z and the platform's redo keys, each once: on X11 the platform's list holds
+    // Ctrl+Shift+Z itself, and a sequence given twice is an ambiguous shortcut Qt never fires.
+    QList<QKeySequence> redo_keys{QKeySequence("Ctrl+Shift+Z")};
+    for (const QKeySequence& k : QKeySequence::keyBindings(QKeySequence::Redo))
+        if (!redo_keys.contains(k)) redo_keys.push_back(k);
+    redo->setShortcuts(redo_keys);
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();

@@ -2,7 +2,10 @@
 // them restores the original file byte for byte, redoing all gives the final file.
 #include "editor_support.hpp"
 #include "spt/selection.hpp"
+#include <QAction>
+#include <QTest>
 #include <QUndoStack>
+#include <map>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -97,4 +100,45 @@ TEST(EditHistory, FiveHundredRandomEditsUndoToTheOriginalBytesAndRedoToTheFinal)
     ASSERT_TRUE(w.save_to(QString::fromStdString(dir.file("final.spt"))));
     EXPECT_EQ(encode_spt(load_spt(dir.file("final.spt"))), final_bytes);
     std::cout << made << " edits (" << refused << " refused with a reason)\n";
+}
+
+TEST(EditHistory, CtrlZUndoesAndCtrlShiftZRedoesFromTheKeyboard) {
+    // Redo's keys were Ctrl+Shift+Z and the platform's redo keys, which on X11 hold Ctrl+Shift+Z
+    // again: a sequence given twice is an ambiguous shortcut, and Qt never fired it.
+    TempDir dir("edit-history-keys");
+    std::string error;
+    const auto w = open_editor(dir, write_editor_files(dir).spt, &error);
+    ASSERT_TRUE(w) << error;
+    editor::ViewWidget* view = w->grid().view(1);
+    view->setFocus();
+    // Half the root's samples by a mouse rectangle over the left half of the front view, then S.
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, QPoint(1, 1));
+    QTest::mouseMove(view, QPoint(view->width() / 2, view->height() - 2));
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, QPoint(view->width() / 2, view->height() - 2));
+    ASSERT_FALSE(w->document().selection().empty());
+    QTest::keyClick(view, Qt::Key_S);
+    ASSERT_EQ(w->undo_stack().count(), 1) << w->last_message().toStdString();
+    const size_t nodes = w->document().tree().node_count();
+    QTest::keyClick(view, Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(w->undo_stack().index(), 0);
+    EXPECT_EQ(w->document().tree().node_count(), 1u);
+    QTest::keyClick(view, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    EXPECT_EQ(w->undo_stack().index(), 1);
+    EXPECT_EQ(w->document().tree().node_count(), nodes);
+}
+
+TEST(EditHistory, NoTwoActionsOfTheWindowShareAKey) {
+    // Any key bound twice is ambiguous, and neither binding fires.
+    TempDir dir("edit-history-shortcuts");
+    editor::MainWindow w(test_start(dir));
+    std::map<QString, QString> owner;
+    for (const QAction* a : w.findChildren<QAction*>())
+        for (const QKeySequence& k : a->shortcuts()) {
+            const QString key = k.toString(QKeySequence::PortableText);
+            const auto [it, fresh] = owner.emplace(key, a->text());
+            EXPECT_TRUE(fresh) << key.toStdString() << " is bound by '" << it->second.toStdString() << "' and by '"
+                               << a->text().toStdString() << "'";
+        }
+    EXPECT_TRUE(owner.count("Ctrl+Shift+Z")) << "redo";
+    EXPECT_TRUE(owner.count("Ctrl+Z")) << "undo";
 }
