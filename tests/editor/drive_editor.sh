@@ -1,7 +1,7 @@
 #!/bin/bash
 # The editor as a user drives it, with xdotool under Xvfb: `spt-editor MESH -o OUT.spt`,
 # a drag in the top view, S, Ctrl+S, and the saved file holds the split (and its recipe
-# replays with `spt convert --recipe`). Then a second
+# replays with `spt convert --recipe`); Ctrl+Z and Ctrl+Shift+Z, each saved. Then a second
 # split, a recovery file, SIGKILL, and the next start recovers the edit.
 # usage: drive_editor.sh SPT_EDITOR SPT MESH WORKDIR   (run under xvfb-run)
 set -euo pipefail
@@ -35,6 +35,21 @@ echo "saved the split: $("$spt" info "$work/out.spt" | grep "^tree")"
 "$spt" convert "$mesh" --recipe "$work/out.spt" -o "$work/replayed.spt" 2> "$work/replay.log" || fail "spt convert --recipe failed: $(cat "$work/replay.log")"
 grep -q "1 of 1 splits replayed" "$work/replay.log" || fail "the recipe did not replay: $(cat "$work/replay.log")"
 [ "$(nodes_of "$work/replayed.spt")" = 3 ] || fail "the replayed file does not hold the split"
+
+# Undo and redo from the keyboard, each saved and read back.
+wait_nodes() {
+    for _ in $(seq 1 50); do [ "$(nodes_of "$1")" = "$2" ] && return 0; sleep 0.1; done
+    return 1
+}
+xdotool key --clearmodifiers ctrl+z
+sleep 0.3
+xdotool key --clearmodifiers ctrl+s
+wait_nodes "$work/out.spt" 1 || fail "Ctrl+Z, Ctrl+S did not save the unsplit tree: $("$spt" info "$work/out.spt")"
+xdotool key --clearmodifiers ctrl+shift+z
+sleep 0.3
+xdotool key --clearmodifiers ctrl+s
+wait_nodes "$work/out.spt" 3 || fail "Ctrl+Shift+Z, Ctrl+S did not save the split again: $("$spt" info "$work/out.spt")"
+echo "undid and redid the split from the keyboard"
 
 # A second split (the right child is current now), left unsaved; the recovery file follows.
 drag 250 60 280 430
