@@ -101,6 +101,23 @@ TEST(Simulation, MotionBeyondTheRepresentableRangeIsRefusedAndTheStateKept) {
     EXPECT_TRUE(fall.poses()[0].translation.allFinite());
 }
 
+TEST(Simulation, AStepWhoseTimeOverflowsIsRefusedAndNoInfinityWritten) {
+    const spt::test::SceneDir dir;
+    // dt is finite, and so is step 1's time; step 2's, 2 dt, is not.
+    const Scene s = scene(dir, R"({"spt_scene": 1, "dt": 1e308, "objects": [{"name": "a", "model": "ball.obj"}]})");
+    Simulation sim(s, parse_effect_list("motion", "test"));
+    EXPECT_EQ(sim.step().time, 1e308);
+    try {
+        sim.step();
+        FAIL() << "a step at time 2e308 was taken";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+        EXPECT_NE(std::string(e.what()).find("step 2"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("dt"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(sim.steps_done(), 1);
+}
+
 // Balls on a jittered 3 x 3 x 3 lattice, 1.1 apart, over a floor, thrown at each other.
 std::string ball_cloud(int n, unsigned seed) {
     std::mt19937 rng(seed);

@@ -10,6 +10,7 @@
 #include "spt/error.hpp"
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <thread>
 
@@ -87,6 +88,11 @@ void Simulation::move() {
 }
 
 const StepResult& Simulation::step() {
+    // Refused before anything changes, as a move beyond the range is: a step's time is written
+    // out, and no infinity ever is.
+    if (!std::isfinite(double(steps_ + 1) * scene_.dt))
+        throw Error(ErrorKind::BadInput, scene_.file + ": the time of step " + std::to_string(steps_ + 1) +
+                                             " is beyond the largest double: dt is too large");
     StepResult& r = result_;
     r.contacts.clear();
     r.counters = {};
