@@ -5,6 +5,7 @@
 #include "test_support.hpp"
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <gtest/gtest.h>
 
 using namespace spt;
@@ -218,6 +219,49 @@ TEST(MeshPrepare, NonFiniteCoordinateIsBadInput) {
         EXPECT_EQ(e.kind(), ErrorKind::BadInput);
         EXPECT_NE(std::string(e.what()).find("nan.obj"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("vertex 3"), std::string::npos);
+    }
+}
+
+TEST(MeshImport, ANaNOrInfinityInTheFileIsNamedWithItsVertexNotLostByTheReader) {
+    // assimp's invalid-data step used to drop the whole mesh ("No meshes remaining").
+    TempDir dir("nan-file");
+    std::ofstream(dir.file("nan.obj")) << "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n";
+    {
+        std::ofstream ply(dir.file("inf.ply"), std::ios::binary);
+        ply << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+        const float v[9] = {0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::infinity(), 0};
+        ply.write(reinterpret_cast<const char*>(v), sizeof v);
+        const unsigned char n = 3;
+        const int32_t f[3] = {0, 1, 2};
+        ply.write(reinterpret_cast<const char*>(&n), 1);
+        ply.write(reinterpret_cast<const char*>(f), sizeof f);
+    }
+    for (const char* name : {"nan.obj", "inf.ply"}) {
+        try {
+            import_mesh(dir.file(name));
+            FAIL() << name << " was imported";
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+            EXPECT_NE(m.find(name), std::string::npos) << m;
+            EXPECT_NE(m.find("not finite"), std::string::npos) << m;
+            EXPECT_NE(m.find(std::string(name) == "nan.obj" ? "vertex 1 " : "vertex 2 "), std::string::npos) << m;
+        }
+    }
+}
+
+TEST(MeshImport, ACoordinateBeyondTheRangeIsNamedWithItsVertexAndValue) {
+    TempDir dir("huge-file");
+    std::ofstream(dir.file("huge.obj")) << "v 0 0 0\nv 1e30 0 0\nv 0 1 0\nf 1 2 3\n";
+    try {
+        import_mesh(dir.file("huge.obj"));
+        FAIL() << "a vertex at 1e30 was imported";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+        EXPECT_NE(m.find("vertex 1 (counting from 0 as read) at (1e+30, 0, 0)"), std::string::npos) << m;
+        EXPECT_NE(m.find("beyond 1e16"), std::string::npos) << m;
     }
 }
 

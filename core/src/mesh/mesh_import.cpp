@@ -69,8 +69,9 @@ RawMesh read_raw(const std::string& path, const ImportOptions& options, std::opt
         importer.SetIOHandler(io); // the importer owns it
     }
     // No vertex joining here: assimp keeps seams split by normals, so we weld by position ourselves.
-    const aiScene* scene = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData);
+    // No aiProcess_FindInvalidData: it drops a mesh with one NaN position ("No meshes remaining"),
+    // where prepare_mesh names the vertex; the normals and UVs it mends are not read.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
     // A cancelled read looks like a truncated file to the loader: the flag says which it was.
     detail::stop_if_cancelled(options.cancel, "importing", path);
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode) {

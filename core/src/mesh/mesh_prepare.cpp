@@ -195,11 +195,20 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     if (positions.size() > size_t(INT32_MAX)) // welding numbers vertices in int32
         throw_bad_input(m.name, "more than 2^31 - 1 vertices");
 
+    // The index counts vertices as the reader made them (an OBJ's corners in face order), which
+    // need not be the file's numbering; a finite vertex's coordinates say which it is (a node's
+    // transform has already turned one infinity into NaNs).
+    auto bad_vertex = [&](size_t i, bool with_coordinates, const char* what) {
+        std::ostringstream os;
+        os << "vertex " << i << " (counting from 0 as read)";
+        if (with_coordinates) os << " at (" << positions[i].x() << ", " << positions[i].y() << ", " << positions[i].z() << ")";
+        os << ": " << what;
+        throw_bad_input(m.name, os.str());
+    };
     for (size_t i = 0; i < positions.size(); ++i) {
-        if (!positions[i].allFinite())
-            throw_bad_input(m.name, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        if (!positions[i].allFinite()) bad_vertex(i, false, "a coordinate is not finite (NaN or infinity)");
         if (positions[i].cwiseAbs().maxCoeff() > kMaxMeshCoordinate)
-            throw_bad_input(m.name, "vertex " + std::to_string(i) + " has a coordinate beyond 1e16 in magnitude");
+            bad_vertex(i, true, "a coordinate is beyond 1e16 in magnitude");
     }
     for (size_t f = 0; f < triangles.size(); ++f)
         for (uint32_t v : triangles[f])
