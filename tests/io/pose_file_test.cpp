@@ -54,5 +54,20 @@ TEST(PoseFile, BadLineIsBadInputNamingFileAndLine) {
     }
 }
 
+TEST(PoseFile, AByteOrderMarkCommasAndCrlfReadAsTheSamePoses) {
+    std::istringstream plain("0.5 0 0 1 0 0 0\n1 2 3 0 1 0 0 0 -1 0\n");
+    std::istringstream saved("\xEF\xBB\xBF# from a spreadsheet\r\n0.5,0,0,1,0,0,0\r\n1, 2, 3, 0, 1, 0, 0, 0, -1, 0\r\n");
+    const std::vector<PoseLine> a = parse_poses(plain, "plain.txt"), b = parse_poses(saved, "saved.csv");
+    ASSERT_EQ(a.size(), 2u);
+    ASSERT_EQ(b.size(), 2u);
+    for (size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(a[i].pose.translation, b[i].pose.translation) << i;
+        EXPECT_EQ(a[i].pose.rotation.coeffs(), b[i].pose.rotation.coeffs()) << i;
+        EXPECT_EQ(a[i].direction.has_value(), b[i].direction.has_value()) << i;
+    }
+    EXPECT_EQ(*b[1].direction, Eigen::Vector3d(0, -1, 0));
+    EXPECT_EQ(b[1].line, 3u);
+}
+
 } // namespace
 } // namespace spt

@@ -21,7 +21,8 @@ struct PoseLine {
     size_t line = 0; ///< 1-based line number in the file
 };
 
-/// Reads a pose file; throws Error(BadInput) "FILE:LINE: problem" on the first bad line:
+/// Reads a pose file (numbers separated by spaces, tabs or commas; a leading UTF-8 byte order
+/// mark skipped); throws Error(BadInput) "FILE:LINE: problem" on the first bad line:
 /// not 7 or 10 finite numbers, a translation beyond kMaxCoordinate, a zero quaternion.
 /// Any other quaternion is normalised; any finite direction is kept (zero: no motion).
 std::vector<PoseLine> read_pose_file(const std::string& path);

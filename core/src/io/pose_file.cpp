@@ -1,6 +1,7 @@
 // Pose files: one pose a line, tx ty tz qw qx qy qz [dx dy dz].
 #include "spt/pose_file.hpp"
 #include "spt/error.hpp"
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -18,6 +19,10 @@ std::vector<PoseLine> parse_poses(std::istream& in, const std::string& path) {
     std::vector<PoseLine> out;
     std::string text;
     for (size_t line = 1; std::getline(in, text); ++line) {
+        // A file saved by an editor that marks UTF-8, or exported from a spreadsheet: the mark is
+        // skipped and commas separate as spaces do.
+        if (line == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+        std::replace(text.begin(), text.end(), ',', ' ');
         const size_t first = text.find_first_not_of(" \t\r");
         if (first == std::string::npos || text[first] == '#') continue;
         std::istringstream s(text);
