@@ -38,26 +38,23 @@ void Renderer::Impl::draw_grid(const Bounds& b, float ground) {
     // there. Near it they stay in world floats, as the golden images have them.
     const bool far = std::max({std::abs(cx), std::abs(cz), std::abs(y)}) > 8 * ext;
     const Eigen::Vector3f at = far ? Eigen::Vector3f(cx, y, cz) : Eigen::Vector3f::Zero();
+    const Eigen::Vector3f base = Eigen::Vector3f(cx, y, cz) - at; // the grid's centre as uploaded
     const long first_x = std::lround(cx / step), first_z = std::lround(cz / step);
     std::vector<LineVertex> v;
     const Color minor{0.80f, 0.81f, 0.84f, 1}, major{0.62f, 0.64f, 0.69f, 1};
     for (int i = -half; i <= half; ++i) {
-        const float x = (far ? 0 : cx) + float(i) * step, z = (far ? 0 : cz) + float(i) * step;
-        const float lo_x = (far ? 0 : cx) - ext, hi_x = (far ? 0 : cx) + ext, lo_z = (far ? 0 : cz) - ext,
-                    hi_z = (far ? 0 : cz) + ext, h = far ? 0 : y;
+        const float x = base.x() + float(i) * step, z = base.z() + float(i) * step;
         // Every fifth line from the world origin is darker, so scale can be read off.
         const Color& cxcol = ((first_x + i) % 5 == 0) ? major : minor;
         const Color& czcol = ((first_z + i) % 5 == 0) ? major : minor;
-        push_line_vertex(v, {x, h, lo_z}, cxcol);
-        push_line_vertex(v, {x, h, hi_z}, cxcol);
-        push_line_vertex(v, {lo_x, h, z}, czcol);
-        push_line_vertex(v, {hi_x, h, z}, czcol);
+        push_line_vertex(v, {x, base.y(), base.z() - ext}, cxcol);
+        push_line_vertex(v, {x, base.y(), base.z() + ext}, cxcol);
+        push_line_vertex(v, {base.x() - ext, base.y(), z}, czcol);
+        push_line_vertex(v, {base.x() + ext, base.y(), z}, czcol);
     }
     if (!far) return draw_lines(v, GL_LINES);
-    use_line_program((proj.cast<double>() * model_view(view, Eigen::Affine3f(Eigen::Translation3f(at))).cast<double>()).cast<float>());
-    gl.BindVertexArray(line_vao);
-    stream_lines(v);
-    gl.DrawArrays(GL_LINES, 0, GLsizei(v.size()));
+    draw_lines(v, GL_LINES,
+               (proj.cast<double>() * model_view(view, Eigen::Affine3f(Eigen::Translation3f(at))).cast<double>()).cast<float>());
 }
 
 void Renderer::Impl::draw_mesh_faces(const GpuMesh& m, const MeshItem& item) {

@@ -20,9 +20,9 @@ const std::string& Renderer::gl_renderer() const { return impl_->renderer_name; 
 DrawKind Renderer::last_draw_kind() const { return impl_->last_kind; }
 
 Eigen::Vector3d Renderer::drawing_origin(const TriangleMesh& mesh) {
+    if (!mesh.far_for_float()) return Eigen::Vector3d::Zero();
     const auto [lo, hi] = mesh.bounds();
-    const double size = (hi - lo).maxCoeff(), farthest = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
-    return farthest > 8 * size ? Eigen::Vector3d(0.5 * (lo + hi)) : Eigen::Vector3d::Zero();
+    return 0.5 * (lo + hi);
 }
 
 MeshHandle Renderer::add_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& origin) {

@@ -164,4 +164,12 @@ void Renderer::Impl::draw_lines(const std::vector<LineVertex>& v, GLenum mode, f
     gl.DrawArrays(mode, 0, GLsizei(v.size()));
 }
 
+void Renderer::Impl::draw_lines(const std::vector<LineVertex>& v, GLenum mode, const Eigen::Matrix4f& mvp) {
+    if (v.empty()) return;
+    use_line_program(mvp);
+    gl.BindVertexArray(line_vao);
+    stream_lines(v);
+    gl.DrawArrays(mode, 0, GLsizei(v.size()));
+}
+
 } // namespace spt::render

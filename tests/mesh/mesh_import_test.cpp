@@ -265,6 +265,15 @@ TEST(MeshImport, ACoordinateBeyondTheRangeIsNamedWithItsVertexAndValue) {
     }
 }
 
+TEST(MeshBounds, FarForFloatBeyondEightSizesFromTheOrigin) {
+    TriangleMesh m = meshgen::prepare(meshgen::box(1, 1, 1, 1), "box").mesh; // 1 across, about the origin
+    EXPECT_FALSE(m.far_for_float());
+    for (Eigen::Vector3d& p : m.positions) p += Eigen::Vector3d(7.4, 0, 0); // farthest 7.9: within 8 sizes
+    EXPECT_FALSE(m.far_for_float());
+    for (Eigen::Vector3d& p : m.positions) p += Eigen::Vector3d(0, 0, -1e6);
+    EXPECT_TRUE(m.far_for_float());
+}
+
 TEST(MeshImport, MissingFileNamesThePath) {
     try {
         import_mesh("/nonexistent/thing.obj");

@@ -33,6 +33,9 @@ struct TriangleMesh {
     std::pair<Eigen::Vector3d, Eigen::Vector3d> bounds() const;
     /// Length of the bounding-box diagonal, model units.
     double diagonal() const;
+    /// Whether float coordinates lose the mesh's detail where it lies: its farthest coordinate is
+    /// beyond 8 times its largest side (then it is read, sampled and drawn relative to a point near it).
+    bool far_for_float() const;
     /// Whether triangle f is a later copy of an earlier face (is_copy), to be left out.
     bool copies_earlier_face(size_t f) const { return f < is_copy.size() && is_copy[f]; }
     /// Stable 64-bit hash of positions (as float32) and triangles; identifies the mesh in .spt files.

@@ -1,6 +1,7 @@
-// TriangleMesh bounds, diagonal and content hash.
+// TriangleMesh bounds, diagonal, distance from the origin and content hash.
 #include "spt/mesh.hpp"
 #include "base/hash.hpp"
+#include "mesh/recentre.hpp"
 
 namespace spt {
 
@@ -17,6 +18,11 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> TriangleMesh::bounds() const {
 double TriangleMesh::diagonal() const {
     auto [lo, hi] = bounds();
     return (hi - lo).norm();
+}
+
+bool TriangleMesh::far_for_float() const {
+    const auto [lo, hi] = bounds();
+    return detail::far_for_float(lo, hi);
 }
 
 uint64_t TriangleMesh::content_hash() const {

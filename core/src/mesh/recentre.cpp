@@ -33,16 +33,15 @@ bool parse_number(const std::string& text, size_t& pos, size_t line_end, Token& 
     return pos == line_end || space(text[pos]) || text[pos] == '\r';
 }
 
-// The file with each run of three tokens replaced by its value minus origin, shortest round trip.
-std::string rewrite(const std::string& text, const std::vector<Token>& xyz, const Eigen::Vector3d& origin) {
+// The file with each token replaced by its value, shortest round trip; `tokens` in file order.
+std::string rewrite(const std::string& text, const std::vector<Token>& tokens) {
     std::string out;
     out.reserve(text.size() + text.size() / 4);
     size_t at = 0;
     char buf[64];
-    for (size_t k = 0; k < xyz.size(); ++k) {
-        const Token& t = xyz[k];
+    for (const Token& t : tokens) {
         out.append(text, at, t.begin - at);
-        const auto r = std::to_chars(buf, buf + sizeof buf, t.value - origin[int(k % 3)]);
+        const auto r = std::to_chars(buf, buf + sizeof buf, t.value);
         out.append(buf, r.ptr);
         at = t.end;
     }
@@ -56,13 +55,18 @@ struct Box {
     Eigen::Vector3d centre() const { return 0.5 * (lo + hi); }
 };
 
-std::optional<RecentredFile> finish(const std::string& text, const std::vector<Token>& xyz) {
+// `xyz`: each vertex's x, y and z tokens in turn. When the box is far out, the file with each
+// made relative to the box's centre.
+std::optional<RecentredFile> finish(const std::string& text, std::vector<Token> xyz) {
     if (xyz.empty()) return std::nullopt;
     Box box;
     for (size_t k = 0; k + 2 < xyz.size(); k += 3) box.add({xyz[k].value, xyz[k + 1].value, xyz[k + 2].value});
     if (!far_for_float(box.lo, box.hi)) return std::nullopt;
     const Eigen::Vector3d origin = box.centre();
-    return RecentredFile{rewrite(text, xyz, origin), origin};
+    for (size_t k = 0; k < xyz.size(); ++k) xyz[k].value -= origin[int(k % 3)];
+    // A PLY record may hold x, y and z in any order: the rewrite goes through the file in order.
+    std::sort(xyz.begin(), xyz.end(), [](const Token& a, const Token& b) { return a.begin < b.begin; });
+    return RecentredFile{rewrite(text, xyz), origin};
 }
 
 // OBJ: every "v x y z ..." line's first three numbers (what follows them, w or a colour, stays).
@@ -89,7 +93,7 @@ std::optional<RecentredFile> recentre_obj(const std::string& text, const std::at
         }
         pos = end + 1;
     }
-    return finish(text, xyz);
+    return finish(text, std::move(xyz));
 }
 
 // PLY's header, as far as the vertex element goes.
@@ -185,19 +189,7 @@ std::optional<RecentredFile> recentre_ply_ascii(const std::string& text, const P
         for (int k = 0; k < 3; ++k) xyz.push_back(t[size_t(k)]);
         pos = end + 1;
     }
-    // x, y and z may come in any order in a record: the rewrite needs them in file order.
-    if (xyz.empty()) return std::nullopt;
-    Box box;
-    for (size_t k = 0; k + 2 < xyz.size(); k += 3) box.add({xyz[k].value, xyz[k + 1].value, xyz[k + 2].value});
-    if (!far_for_float(box.lo, box.hi)) return std::nullopt;
-    const Eigen::Vector3d origin = box.centre();
-    std::vector<Token> ordered(xyz.size());
-    for (size_t k = 0; k < xyz.size(); ++k) {
-        ordered[k] = xyz[k];
-        ordered[k].value -= origin[int(k % 3)];
-    }
-    std::sort(ordered.begin(), ordered.end(), [](const Token& a, const Token& b) { return a.begin < b.begin; });
-    return RecentredFile{rewrite(text, ordered, Eigen::Vector3d::Zero()), origin};
+    return finish(text, std::move(xyz));
 }
 
 double load_double(const char* p, bool big) {

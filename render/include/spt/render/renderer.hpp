@@ -52,7 +52,7 @@ public:
     /// only so: at 10^6 its spacing is 1/16 of a unit.
     MeshHandle add_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& origin = Eigen::Vector3d::Zero());
     /// An origin for add_mesh when no model's local origin is at hand: zero for a mesh near the
-    /// origin (its picture as before), the centre of its box for one farther than 8 sizes out.
+    /// origin (its picture as before), the centre of its box for one far out (TriangleMesh::far_for_float).
     static Eigen::Vector3d drawing_origin(const TriangleMesh& mesh);
     /// Frees an uploaded mesh; the handle becomes invalid. An unknown handle is ignored.
     void remove_mesh(MeshHandle mesh);
