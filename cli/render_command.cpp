@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -94,6 +95,18 @@ std::string output_name(const std::string& pattern, int frame) {
     return out;
 }
 
+// Writes frame f's picture to the pattern's file, making its directory first ('-o out/{frame}.png'
+// in a fresh folder works as it reads).
+void write_frame(const Image& image, const std::string& pattern, int frame) {
+    const std::string path = output_name(pattern, frame);
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!dir.empty() && !std::filesystem::is_directory(dir, ec) && !std::filesystem::create_directories(dir, ec) && ec)
+        throw Error(ErrorKind::CannotWrite, path + ": cannot write: cannot make its directory " + dir.string() + ": " +
+                                                ec.message());
+    write_png(image, path);
+}
+
 View parse_view(const std::string& v) {
     if (v == "top") return View::Top;
     if (v == "front") return View::Front;
@@ -135,7 +148,7 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
         frame.grid = names.count("grid") > 0;
         frame.axes = names.count("axes") > 0;
         renderer->draw(frame, camera, Viewport{0, 0, width, height}, context->framebuffer());
-        write_png(context->read_pixels(), output_name(a.output, f));
+        write_frame(context->read_pixels(), a.output, f);
     }
     renderer.reset(); // GL objects go before their context
     return 0;
@@ -297,8 +310,8 @@ int run_render(const RenderArgs& a) {
     context.reset();
     timer.step("release context");
 
-    // Scenes do not exist yet: a static mesh looks the same in every frame.
-    for (int f : frames) write_png(image, output_name(a.output, f));
+    // A mesh or a tree alone does not move: every frame is the same picture.
+    for (int f : frames) write_frame(image, a.output, f);
     timer.step("write png");
     return 0;
 }

@@ -180,9 +180,16 @@ TEST_F(RenderCli, spt_without_trees_exits_2) {
 }
 
 TEST_F(RenderCli, unwritable_output_exits_3) {
-    const CliRun r = spt("render figure.obj -o no/such/dir/out.png");
+    // A folder cannot be made under a file.
+    const CliRun r = spt("render figure.obj -o figure.obj/dir/out.png");
     EXPECT_EQ(r.code, 3) << r.err;
-    EXPECT_NE(r.err.find("no/such/dir/out.png"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("figure.obj/dir/out.png"), std::string::npos) << r.err;
+}
+
+TEST_F(RenderCli, frames_go_into_a_folder_made_for_them) {
+    const CliRun r = spt("render figure.obj --size 64x64 --frames 0:1 -o 'new/frames/f{frame}.png'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f : {0, 1}) EXPECT_TRUE(fs::exists(dir / "new" / "frames" / ("f" + std::to_string(f) + ".png"))) << f;
 }
 
 TEST_F(RenderCli, frames_number_the_outputs) {
