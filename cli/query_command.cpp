@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -61,7 +63,7 @@ int run_query(const QueryArgs& args) {
     std::FILE* out = stdout;
     if (!args.output.empty()) {
         out = std::fopen(args.output.c_str(), "w");
-        if (!out) throw Error(ErrorKind::CannotWrite, args.output + ": cannot open for writing");
+        if (!out) throw Error(ErrorKind::CannotWrite, args.output + ": cannot open for writing: " + std::strerror(errno));
     }
     std::fprintf(out, "pose,collide,depth,backtrack,node_pairs,sphere_tests,ns\n");
     QueryScratch scratch;

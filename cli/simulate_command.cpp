@@ -2,7 +2,9 @@
 #include "commands.hpp"
 #include "spt/error.hpp"
 #include "spt/simulation.hpp"
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <memory>
 #include <unistd.h>
@@ -23,7 +25,7 @@ public:
     explicit Output(const std::string& path) : path_(path) {
         if (path.empty()) return;
         f_ = std::fopen(path.c_str(), "w");
-        if (!f_) throw Error(ErrorKind::CannotWrite, path + ": cannot open for writing");
+        if (!f_) throw Error(ErrorKind::CannotWrite, path + ": cannot open for writing: " + std::strerror(errno));
     }
     ~Output() {
         if (f_ && f_ != stdout) std::fclose(f_);
