@@ -42,10 +42,11 @@ CountersPanel::CountersPanel(QWidget* parent) : QWidget(parent) {
 
 void CountersPanel::show_step(const StepResult* step, EffectSet effects, uint64_t state_hash) {
     const std::string names = effects.names();
+    // An empty list is written as the shell needs it, not as a dangling option.
     effects_->setText(QString("Effects simulated: %1.\nSame numbers as `spt simulate --effects %2`; ns_* are "
                               "nanoseconds of this run.")
                           .arg(names.empty() ? "none" : QString::fromStdString(names))
-                          .arg(QString::fromStdString(names)));
+                          .arg(names.empty() ? "''" : QString::fromStdString(names)));
     const StepCounters c = step ? step->counters : StepCounters{};
     const QStringList values = {
         QString::number(step ? step->step : 0),
