@@ -1,6 +1,7 @@
 // Meshes with hard features made in code: thin parts, open and non-manifold surfaces, soups.
 #include "mesh/hard_shapes.hpp"
 #include "mesh/shapes.hpp"
+#include <Eigen/Geometry>
 #include <cmath>
 #include <random>
 
@@ -11,9 +12,9 @@ namespace {
 struct Parts {
     std::vector<Eigen::Vector3d> p;
     std::vector<Triangle> t;
-    void add(const TriangleMesh& m, const Eigen::Vector3d& shift) {
+    void add(const TriangleMesh& m, const Eigen::Vector3d& shift, const Eigen::Matrix3d& turn = Eigen::Matrix3d::Identity()) {
         const auto base = uint32_t(p.size());
-        for (const auto& q : m.positions) p.push_back(q + shift);
+        for (const auto& q : m.positions) p.push_back(turn * (q + shift));
         for (const auto& tri : m.triangles) t.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
     }
     uint32_t vertex(const Eigen::Vector3d& q) {
@@ -56,6 +57,15 @@ TriangleMesh make_plate_with_fin() {
     parts.add(make_box({1, 1, 0.1}, 4), Eigen::Vector3d::Zero());
     parts.add(make_box({0.01, 0.8, 0.5}, 4), Eigen::Vector3d(0, 0, 0.55));
     return parts.finish("plate with fin");
+}
+
+TriangleMesh make_rotor(int blades, double thickness) {
+    Parts parts;
+    parts.add(make_box({0.15, 0.15, 0.15}, 2), Eigen::Vector3d::Zero());
+    for (int k = 0; k < blades; ++k)
+        parts.add(make_box({0.5, 0.1, 0.5 * thickness}, 2), Eigen::Vector3d(0.65, 0, 0),
+                  Eigen::AngleAxisd(2 * kPi * k / blades, Eigen::Vector3d::UnitY()).toRotationMatrix());
+    return parts.finish("rotor");
 }
 
 TriangleMesh make_body_with_ears() {

@@ -15,6 +15,9 @@ TriangleMesh make_wedge(double w, double h, double l);
 /// A 2 x 2 x 0.2 plate (z from -0.1 to 0.1) with a fin 0.02 thick, 1.6 long and about 1 tall
 /// standing on it along y: two closed boxes, the fin sunk 0.05 into the plate.
 TriangleMesh make_plate_with_fin();
+/// A hub (a cube of half 0.15) with `blades` closed blades 1 long, 0.2 wide and `thickness` thick
+/// around the y axis, from 0.15 to 1.15 out, sunk 0.05 into the hub: 1 + blades closed boxes.
+TriangleMesh make_rotor(int blades, double thickness);
 /// A unit cube body (half 0.5) with two ears, plates 0.02 thick sticking out 0.45 along +x and -x
 /// (sunk 0.05 into the body): three closed boxes.
 TriangleMesh make_body_with_ears();
