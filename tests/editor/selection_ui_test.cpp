@@ -1,6 +1,6 @@
 // Selection driven by real mouse events on each view equals core's reference computation,
 // in replace, add, subtract and visible-only modes, at the scale factor the run sets
-// (ctest runs it at QT_SCALE_FACTOR 1 and 2).
+// (ctest runs it at QT_SCALE_FACTOR 1, 1.5 and 2).
 #include "editor_support.hpp"
 #include "spt/selection.hpp"
 #include <QTest>
