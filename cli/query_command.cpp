@@ -8,8 +8,8 @@
 #include "spt/response.hpp"
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iostream>

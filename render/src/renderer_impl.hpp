@@ -111,7 +111,8 @@ struct Renderer::Impl {
     void use_line_program(const Eigen::Matrix4f& mvp, float point_size = 1, bool round = false);
     void draw_lines(const std::vector<LineVertex>& v, GLenum mode, float point_size = 1, bool round = false);
     // The same, placed by `mvp` instead of the view (lines uploaded relative to a point far out).
-    void draw_lines(const std::vector<LineVertex>& v, GLenum mode, const Eigen::Matrix4f& mvp);
+    void draw_lines(const std::vector<LineVertex>& v, GLenum mode, const Eigen::Matrix4f& mvp, float point_size = 1,
+                    bool round = false);
 
     // The scene: ground grid, meshes, sampling spheres (draw_scene.cpp).
     void draw_grid(const Bounds& b, float ground);

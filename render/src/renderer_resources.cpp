@@ -157,16 +157,13 @@ void Renderer::Impl::use_line_program(const Eigen::Matrix4f& mvp, float point_si
 }
 
 void Renderer::Impl::draw_lines(const std::vector<LineVertex>& v, GLenum mode, float point_size, bool round) {
-    if (v.empty()) return;
-    use_line_program(proj * view, point_size, round);
-    gl.BindVertexArray(line_vao);
-    stream_lines(v);
-    gl.DrawArrays(mode, 0, GLsizei(v.size()));
+    draw_lines(v, mode, proj * view, point_size, round);
 }
 
-void Renderer::Impl::draw_lines(const std::vector<LineVertex>& v, GLenum mode, const Eigen::Matrix4f& mvp) {
+void Renderer::Impl::draw_lines(const std::vector<LineVertex>& v, GLenum mode, const Eigen::Matrix4f& mvp,
+                                float point_size, bool round) {
     if (v.empty()) return;
-    use_line_program(mvp);
+    use_line_program(mvp, point_size, round);
     gl.BindVertexArray(line_vao);
     stream_lines(v);
     gl.DrawArrays(mode, 0, GLsizei(v.size()));

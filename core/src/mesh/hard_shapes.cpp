@@ -63,7 +63,7 @@ TriangleMesh make_rotor(int blades, double thickness) {
     Parts parts;
     parts.add(make_box({0.15, 0.15, 0.15}, 2), Eigen::Vector3d::Zero());
     for (int k = 0; k < blades; ++k)
-        parts.add(make_box({0.5, 0.1, 0.5 * thickness}, 2), Eigen::Vector3d(0.65, 0, 0),
+        parts.add(make_box({0.5, 0.1, 0.5 * thickness}, 2), Eigen::Vector3d(0.6, 0, 0),
                   Eigen::AngleAxisd(2 * kPi * k / blades, Eigen::Vector3d::UnitY()).toRotationMatrix());
     return parts.finish("rotor");
 }

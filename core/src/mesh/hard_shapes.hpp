@@ -16,7 +16,7 @@ TriangleMesh make_wedge(double w, double h, double l);
 /// standing on it along y: two closed boxes, the fin sunk 0.05 into the plate.
 TriangleMesh make_plate_with_fin();
 /// A hub (a cube of half 0.15) with `blades` closed blades 1 long, 0.2 wide and `thickness` thick
-/// around the y axis, from 0.15 to 1.15 out, sunk 0.05 into the hub: 1 + blades closed boxes.
+/// around the y axis, from 0.1 to 1.1 out, sunk 0.05 into the hub: 1 + blades closed boxes.
 TriangleMesh make_rotor(int blades, double thickness);
 /// A unit cube body (half 0.5) with two ears, plates 0.02 thick sticking out 0.45 along +x and -x
 /// (sunk 0.05 into the body): three closed boxes.
