@@ -86,7 +86,7 @@ public:
     const std::vector<BroadSphere>& broad_spheres() const { return spheres_; }
 
 private:
-    void move();
+    void move(double t1); // to the poses at time t1, the end of the step (seconds)
     void run_contacts(StepCounters& c);
     void respond(StepCounters& c);
     bool respond_pair(const PairContact& pc, const std::vector<SpherePair>& start_pairs, QueryScratch& scratch);

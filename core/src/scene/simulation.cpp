@@ -60,8 +60,8 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads)
 
 Simulation::~Simulation() = default;
 
-void Simulation::move() {
-    const double dt = scene_.dt, t1 = double(steps_ + 1) * dt;
+void Simulation::move(double t1) {
+    const double dt = scene_.dt;
     const bool gravity = effects_.has(Effect::Gravity);
     for (size_t i = 0; i < poses_.size(); ++i) {
         const SceneObject& o = scene_.objects[i];
@@ -88,9 +88,10 @@ void Simulation::move() {
 }
 
 const StepResult& Simulation::step() {
-    // Refused before anything changes, as a move beyond the range is: a step's time is written
-    // out, and no infinity ever is.
-    if (!std::isfinite(double(steps_ + 1) * scene_.dt))
+    // The time at the step's end, for the paths and the result. Refused before anything changes,
+    // as a move beyond the range is: a step's time is written out, and no infinity ever is.
+    const double t1 = double(steps_ + 1) * scene_.dt;
+    if (!std::isfinite(t1))
         throw Error(ErrorKind::BadInput, scene_.file + ": the time of step " + std::to_string(steps_ + 1) +
                                              " is beyond the largest double: dt is too large");
     StepResult& r = result_;
@@ -100,7 +101,7 @@ const StepResult& Simulation::step() {
     if (effects_.has(Effect::Motion)) {
         const std::vector<Eigen::Vector3d> velocity_before = velocity_;
         try {
-            move();
+            move(t1);
         } catch (const Error&) {
             poses_ = previous_, velocity_ = velocity_before; // refused: the state stays that of the last step
             throw;
@@ -108,7 +109,7 @@ const StepResult& Simulation::step() {
     }
     ++steps_;
     r.step = steps_;
-    r.time = double(steps_) * scene_.dt;
+    r.time = t1;
     if (effects_.has(Effect::Contacts)) run_contacts(r.counters);
     ghost_ = poses_;
     if (effects_.has(Effect::Response)) respond(r.counters);
