@@ -101,7 +101,8 @@ void write_frame(const Image& image, const std::string& pattern, int frame) {
     const std::string path = output_name(pattern, frame);
     const std::filesystem::path dir = std::filesystem::path(path).parent_path();
     std::error_code ec;
-    if (!dir.empty() && !std::filesystem::is_directory(dir, ec) && !std::filesystem::create_directories(dir, ec) && ec)
+    // An existing folder is not an error (false, ec clear); a file in its place is.
+    if (!dir.empty() && !std::filesystem::create_directories(dir, ec) && ec)
         throw Error(ErrorKind::CannotWrite, path + ": cannot write: cannot make its directory " + dir.string() + ": " +
                                                 ec.message());
     write_png(image, path);
