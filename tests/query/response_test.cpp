@@ -3,6 +3,7 @@
 #include "spt/response.hpp"
 #include "query/query_run.hpp"
 #include "query/backtrack_from.hpp"
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace spt {
@@ -126,6 +127,41 @@ TEST(Backtrack, StartingFromTheDepthQuerysPairsGivesTheSameDistanceBitForBit) {
         }
     }
     EXPECT_GT(compared, 150);
+}
+
+TEST(Backtrack, ALimitBelowTheDistanceStopsTheSearchAndOneAboveItChangesNothing) {
+    // A scene's response asks only whether a pair must go back further than its own motion: the
+    // search stops once it knows, and answers as before, bit for bit, when it is not further.
+    std::mt19937 rng(23);
+    QueryScratch s;
+    int stopped_early = 0, compared = 0;
+    for (int it = 0; it < 60; ++it) {
+        const Pose p = test::random_pose(rng, 0.4 + 0.02 * it);
+        const Eigen::Vector3d d = test::random_unit(rng) * 0.3;
+        for (QueryLevel level : {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact}) {
+            for (BacktrackRule rule : {BacktrackRule::Exact, BacktrackRule::Paper}) {
+                QueryOptions o;
+                o.level = level;
+                const BacktrackResult full = backtrack_relative(torus().model, torus().model, p, d, o, rule, s);
+                if (!(full.distance > 0)) continue;
+                EXPECT_FALSE(full.beyond);
+                for (double limit : {full.distance, std::nextafter(full.distance, INFINITY), 1.5 * full.distance}) {
+                    const BacktrackResult r = backtrack_relative(torus().model, torus().model, p, d, o, rule, s, limit);
+                    EXPECT_FALSE(r.beyond) << it << " level " << int(level) << " rule " << int(rule);
+                    EXPECT_EQ(r.distance, full.distance) << it << " level " << int(level);
+                    EXPECT_EQ(r.queries, full.queries) << it << " level " << int(level);
+                    ++compared;
+                }
+                const BacktrackResult r = backtrack_relative(torus().model, torus().model, p, d, o, rule, s, 0.3 * full.distance);
+                EXPECT_TRUE(r.beyond) << it;
+                EXPECT_GT(r.distance, 0.3 * full.distance) << it;
+                EXPECT_LE(r.queries, full.queries) << it;
+                stopped_early += r.queries < full.queries;
+            }
+        }
+    }
+    EXPECT_GT(compared, 100);
+    EXPECT_GT(stopped_early, 10);
 }
 
 TEST(Backtrack, ZeroMotionDirectionMovesNothing) {

@@ -2,6 +2,7 @@
 /// Collision response (paper §3-4-3): how far B must move back against its
 /// motion until the model no longer collides.
 #include "spt/query.hpp"
+#include <limits>
 
 namespace spt {
 
@@ -11,11 +12,15 @@ enum class BacktrackRule {
     Paper, ///< the paper's rule: the deepest sampling-sphere penetration (exact only along the contact normal)
 };
 
+/// No limit on how far a backtrack searches.
+inline constexpr double kNoBacktrackLimit = std::numeric_limits<double>::infinity();
+
 /// Result of a backtrack.
 struct BacktrackResult {
     double distance = 0;   ///< model units along -motion; 0 without collision or without motion
     int queries = 0;       ///< collision queries run
     bool converged = true; ///< false if the iteration limit stopped the search
+    bool beyond = false;   ///< the distance exceeds max_distance: then `distance` may be only a lower bound
 };
 
 /// Distance B must move along -motion (motion: B's movement relative to A, world
@@ -24,14 +29,17 @@ struct BacktrackResult {
 /// overlapping pair and repeats from the largest root until no pair overlaps, so the
 /// answer is exact for the sphere model (rounded up by 1e-6 of the pair's reach so a
 /// float query at the answer agrees). Level `exact`: steps of 1% of B's diagonal, then
-/// bisection to 1e-6 of the diagonal.
+/// bisection to 1e-6 of the diagonal. A search that finds the distance is above
+/// `max_distance` (model units) stops there with `beyond` set; below it, the answer is the
+/// same, bit for bit, as without a limit.
 BacktrackResult backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                           const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
-                          QueryScratch& scratch);
+                          QueryScratch& scratch, double max_distance = kNoBacktrackLimit);
 
 /// Same with B's pose and motion given in A's frame.
 BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                    const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
-                                   BacktrackRule rule, QueryScratch& scratch);
+                                   BacktrackRule rule, QueryScratch& scratch,
+                                   double max_distance = kNoBacktrackLimit);
 
 } // namespace spt

@@ -13,9 +13,10 @@ constexpr int kMaxSteps = 10200;
 
 // Steps of 1% of the larger diagonal from `start` (where the model collides), then bisection
 // to 1e-6 of it: for the exact level, and for a sphere model held by containment alone.
+// A step that starts past `max_distance` ends the search: the answer lies beyond it.
 BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                              const Eigen::Vector3d& back, const QueryOptions& options, QueryScratch& scratch,
-                             double start = 0, int queries = 0) {
+                             double max_distance, double start = 0, int queries = 0) {
     BacktrackResult r;
     r.queries = queries;
     QueryOptions q = options;
@@ -35,6 +36,11 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
     double lo = start, hi = start + step;
     for (int k = 0; collides(hi); ++k) {
         lo = hi, hi += step;
+        if (lo > max_distance) { // collides at lo: the answer is past it
+            r.distance = lo;
+            r.beyond = true;
+            return r;
+        }
         if (k >= kMaxSteps || !(hi > lo)) {
             r.converged = false;
             break;
@@ -46,6 +52,7 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
         (collides(mid) ? lo : hi) = mid;
     }
     r.distance = hi;
+    r.beyond = hi > max_distance;
     return r;
 }
 
@@ -54,9 +61,11 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
 // of that pair's reach past it) and look again. Each look asks only for the largest root
 // (collide_exit), not for every overlapping pair.
 // `start_pairs`: the pairs at s = 0 when the caller has them (then that query is not run).
+// A jump past `max_distance` ends the search: the answer is at least that jump.
 BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                               const Eigen::Vector3d& back, const QueryOptions& options,
-                              const std::vector<SpherePair>* start_pairs, QueryScratch& scratch) {
+                              const std::vector<SpherePair>* start_pairs, QueryScratch& scratch,
+                              double max_distance) {
     BacktrackResult r;
     const bool bounds = options.level == QueryLevel::Bounds;
     double s = 0;
@@ -90,10 +99,15 @@ BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, 
                 return r;
             }
             // Held by containment alone (no sphere pairs to solve): step out instead.
-            if (!exit.found) return by_bisection(a, b, b_in_a, back, options, scratch, s, r.queries);
+            if (!exit.found) return by_bisection(a, b, b_in_a, back, options, scratch, max_distance, s, r.queries);
         }
         const double next = s + std::max(0.0, exit.root) + 1e-6 * exit.reach;
         if (!(next > s) || !std::isfinite(next)) break; // s no longer moves: report unconverged
+        if (next > max_distance) {
+            r.distance = next;
+            r.beyond = true;
+            return r;
+        }
         s = next;
     }
     r.converged = false;
@@ -112,7 +126,7 @@ Eigen::Vector3d back_direction(const Eigen::Vector3d& motion) {
 // backtrack_relative; `start_pairs` (may be null) as for backtrack_from_pairs.
 BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                          const Eigen::Vector3d& motion_in_a, const QueryOptions& options, BacktrackRule rule,
-                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch) {
+                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance) {
     BacktrackResult r;
     const Eigen::Vector3d back = back_direction(motion_in_a);
     if (back.isZero()) return r; // no motion: no direction to move back along
@@ -122,35 +136,37 @@ BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const
         const QueryResult res = collide_relative(a, b, b_in_a, q, scratch);
         r.queries = 1;
         r.distance = res.collide ? std::max(0.0, res.deepest.depth) : 0;
+        r.beyond = r.distance > max_distance;
         return r;
     }
-    if (options.level == QueryLevel::Exact) return by_bisection(a, b, b_in_a, back, options, scratch);
-    return by_exit_roots(a, b, b_in_a, back, options, start_pairs, scratch);
+    if (options.level == QueryLevel::Exact) return by_bisection(a, b, b_in_a, back, options, scratch, max_distance);
+    return by_exit_roots(a, b, b_in_a, back, options, start_pairs, scratch, max_distance);
 }
 
 // backtrack; `start_pairs` (may be null) as for backtrack_from_pairs.
 BacktrackResult in_world(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                          const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
-                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch) {
+                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance) {
     check_pose(pose_a, "pose of A");
     check_pose(pose_b, "pose of B");
     const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
     const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
-    return relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, start_pairs, scratch);
+    return relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, start_pairs, scratch,
+                    max_distance);
 }
 
 } // namespace
 
 BacktrackResult backtrack_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                    const Eigen::Vector3d& motion_in_a, const QueryOptions& options,
-                                   BacktrackRule rule, QueryScratch& scratch) {
-    return relative(a, b, b_in_a, motion_in_a, options, rule, nullptr, scratch);
+                                   BacktrackRule rule, QueryScratch& scratch, double max_distance) {
+    return relative(a, b, b_in_a, motion_in_a, options, rule, nullptr, scratch, max_distance);
 }
 
 BacktrackResult backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                           const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
-                          QueryScratch& scratch) {
-    return in_world(a, pose_a, b, pose_b, motion, options, rule, nullptr, scratch);
+                          QueryScratch& scratch, double max_distance) {
+    return in_world(a, pose_a, b, pose_b, motion, options, rule, nullptr, scratch, max_distance);
 }
 
 } // namespace spt
@@ -159,8 +175,9 @@ namespace spt::detail {
 
 BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,
                                      const Pose& pose_b, const Eigen::Vector3d& motion, const QueryOptions& options,
-                                     const std::vector<SpherePair>& start_pairs, QueryScratch& scratch) {
-    return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, &start_pairs, scratch);
+                                     const std::vector<SpherePair>& start_pairs, QueryScratch& scratch,
+                                     double max_distance) {
+    return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, &start_pairs, scratch, max_distance);
 }
 
 } // namespace spt::detail

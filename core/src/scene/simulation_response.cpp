@@ -78,26 +78,26 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     Eigen::Vector3d motion = (poses_[b].translation - previous_[b].translation) -
                              (poses_[a].translation - previous_[a].translation);
     const double size = ma.extent() + mb.extent();
-    bool along_normal = !(motion.norm() > 1e-12 * size);
-    if (along_normal) motion = -pc.normal;
+    const bool still = !(motion.norm() > 1e-12 * size);
+    if (still) motion = -pc.normal;
     // Depth's pairs stand for the first backtrack query while no earlier pair has moved these two
     // (at these poses they serve any direction).
     const bool reuse = !start_pairs.empty() && scene_.response.rule == BacktrackRule::Exact &&
                        detail::same_pose(poses_[a], ghost_[a]) && detail::same_pose(poses_[b], ghost_[b]);
-    auto back_along = [&](const Eigen::Vector3d& m) {
-        return reuse ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, start_pairs, scratch)
-                     : backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch);
+    auto back_along = [&](const Eigen::Vector3d& m, double limit) {
+        return reuse ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, start_pairs, scratch, limit)
+                     : backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
     };
-    BacktrackResult back = back_along(motion);
     // Further back than the step's own motion: the pair already overlapped where the step began
     // (pushed in by another pair's response, or never parted), so undoing the motion is not what
     // parts it; pushed along the motion it would come out of the far side (a pebble pressed into
-    // a floor and then rising would sink through it). It leaves along the contact normal instead.
-    // The slack is far above the backtrack's rounding up (a millionth of a reach a look).
-    if (!along_normal && back.distance > motion.norm() + 1e-4 * size) {
-        along_normal = true;
+    // a floor and then rising would sink through it). It leaves along the contact normal instead,
+    // and the search along the motion stops as soon as it is past that limit. The slack is far
+    // above the backtrack's rounding up (a millionth of a reach a look).
+    BacktrackResult back = back_along(motion, still ? kNoBacktrackLimit : motion.norm() + 1e-4 * size);
+    if (back.beyond) {
         motion = -pc.normal;
-        back = back_along(motion);
+        back = back_along(motion, kNoBacktrackLimit);
     }
     bool acted = false;
     if (back.distance > 0) {
