@@ -6,7 +6,7 @@ SPT := $(BUILD)/cli/spt
 # time from a clean tree, which is every CI run; UNITY=OFF builds file by file.
 UNITY ?= ON
 
-.PHONY: all deps configure build demo test bench resources clean fuzz sanitize
+.PHONY: all deps configure build demo test bench figures resources clean fuzz sanitize
 
 all: build
 
@@ -65,6 +65,10 @@ sanitize: deps
 
 bench: build
 	@cmake --build $(BUILD) --target bench
+
+# Every figure of docs/benchmarks.md, measured again into bench-out/ (a few minutes; a quiet machine).
+figures: build
+	@bash tools/bench-all.sh $(BUILD) bench-out
 
 clean:
 	rm -rf $(BUILD)

@@ -62,6 +62,11 @@ row "small mesh (1.3k vertices)" \
   "$SPT" render "$work/figure.obj" --size 512x512 -o "$work/e.png"
 row "small mesh, quad layout with spheres" \
   "$SPT" render "$work/figure.obj" --view quad --overlay spheres,grid,axes --size 512x512 -o "$work/f.png"
+# What a fresh machine or user pays once: llvmpipe compiles every shader with LLVM.
+row "first case, Mesa's shader cache off" env MESA_SHADER_CACHE_DISABLE=true \
+  "$SPT" render "$work/torus100k.ply" --tree "$work/torus100k.spt" --overlay spheres,grid,axes --size 512x512 -o "$work/g.png"
+row "small mesh, Mesa's shader cache off" env MESA_SHADER_CACHE_DISABLE=true \
+  "$SPT" render "$work/figure.obj" --size 512x512 -o "$work/h.png"
 echo
 echo "steps of the first case (--timings):"
 "$SPT" render "$work/torus100k.ply" --tree "$work/torus100k.spt" --overlay spheres,grid,axes --size 512x512 \
