@@ -1,6 +1,7 @@
 // The kinematic response (paper §3-4-3): colliding pairs moved back along their relative
 // motion by the scene's rule, velocities reflected about the contact normal. Not a solver.
 #include "query/backtrack_from.hpp"
+#include "query/scratch.hpp"
 #include "base/parallel.hpp"
 #include "scene/same_pose.hpp"
 #include "spt/error.hpp"
@@ -80,13 +81,24 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     const double size = ma.extent() + mb.extent();
     const bool still = !(motion.norm() > 1e-12 * size);
     if (still) motion = -pc.normal;
-    // Depth's pairs stand for the first backtrack query while no earlier pair has moved these two
-    // (at these poses they serve any direction).
-    const bool reuse = !start_pairs.empty() && scene_.response.rule == BacktrackRule::Exact &&
-                       detail::same_pose(poses_[a], ghost_[a]) && detail::same_pose(poses_[b], ghost_[b]);
+    // The backtrack's first look is an `all` query at these poses, whose pairs serve any direction:
+    // depth's while no earlier pair has moved these two, else one run here, since a pair that
+    // overlapped before the step backtracks twice from these poses (rule Exact, levels bounds and
+    // spheres, where backtrack_from_pairs gives backtrack's answer bit for bit).
+    const bool from_pairs = scene_.response.rule == BacktrackRule::Exact && q.level != QueryLevel::Exact;
+    const bool unmoved = detail::same_pose(poses_[a], ghost_[a]) && detail::same_pose(poses_[b], ghost_[b]);
+    std::vector<SpherePair> own; // the scratch's buffer, taken for the two backtracks and given back
+    if (from_pairs && !(unmoved && !start_pairs.empty()) && !still) {
+        QueryOptions all = q;
+        all.mode = QueryMode::All;
+        collide(ma, poses_[a], mb, poses_[b], all, scratch);
+        own.swap(scratch.buffers().pairs);
+    }
+    const std::vector<SpherePair>& pairs = own.empty() && unmoved ? start_pairs : own;
     auto back_along = [&](const Eigen::Vector3d& m, double limit) {
-        return reuse ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, start_pairs, scratch, limit)
-                     : backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
+        return from_pairs && !pairs.empty()
+                   ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, pairs, scratch, limit)
+                   : backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
     };
     // Further back than the step's own motion: the pair already overlapped where the step began
     // (pushed in by another pair's response, or never parted), so undoing the motion is not what
@@ -99,6 +111,7 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
         motion = -pc.normal;
         back = back_along(motion, kNoBacktrackLimit);
     }
+    if (!own.empty()) own.swap(scratch.buffers().pairs); // its capacity back for the next query
     bool acted = false;
     if (back.distance > 0) {
         const Eigen::Vector3d away = motion.normalized() * back.distance; // B moves by -away relative to A
