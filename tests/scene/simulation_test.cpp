@@ -304,7 +304,7 @@ TEST(Simulation, ResponseEqualsPairsOneAfterTheOtherInPairOrderOnEveryThreadCoun
 
 // A ball sunk into a static floor (as a later pair's response can leave it) and moving
 // up, or sideways, slower than it is sunk: undoing its motion does not part them, and moving it
-// back along its motion until they part would take it out of the plate's underside or far side.
+// back along its motion until they part would take it out of the floor's underside or far side.
 // It leaves upwards, along the contact normal, whichever way it was moving.
 TEST(Simulation, AnObjectAlreadySunkIntoAFloorLeavesAlongTheNormalNotThroughTheFloor) {
     const spt::test::SceneDir dir;
