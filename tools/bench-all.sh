@@ -2,7 +2,7 @@
 # Runs every measurement docs/benchmarks.md quotes, one after another, into OUT_DIR.
 # usage: tools/bench-all.sh [BUILD_DIR] [OUT_DIR]     (default: build, bench-out)
 # Needs a Release build with the benchmarks (cmake --build BUILD) and, for the editor,
-# xvfb-run. About 4 minutes on 2 cores; run it on a quiet machine: nothing here is
+# xvfb-run. About 3 to 4 minutes on 2 cores; run it on a quiet machine: nothing here is
 # pinned, and everything else running shows in the figures.
 set -euo pipefail
 BUILD=$(realpath "${1:-build}")

@@ -87,17 +87,20 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     // spheres, where backtrack_from_pairs gives backtrack's answer bit for bit).
     const bool from_pairs = scene_.response.rule == BacktrackRule::Exact && q.level != QueryLevel::Exact;
     const bool unmoved = detail::same_pose(poses_[a], ghost_[a]) && detail::same_pose(poses_[b], ghost_[b]);
+    const std::vector<SpherePair>* pairs = nullptr; // none: each backtrack makes its own first look
     std::vector<SpherePair> own; // the scratch's buffer, taken for the two backtracks and given back
-    if (from_pairs && !(unmoved && !start_pairs.empty()) && !still) {
+    if (from_pairs && unmoved && !start_pairs.empty()) {
+        pairs = &start_pairs;
+    } else if (from_pairs && !still) {
         QueryOptions all = q;
         all.mode = QueryMode::All;
         collide(ma, poses_[a], mb, poses_[b], all, scratch);
         own.swap(scratch.buffers().pairs);
+        pairs = &own;
     }
-    const std::vector<SpherePair>& pairs = own.empty() && unmoved ? start_pairs : own;
     auto back_along = [&](const Eigen::Vector3d& m, double limit) {
-        return from_pairs && !pairs.empty()
-                   ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, pairs, scratch, limit)
+        return pairs && !pairs->empty()
+                   ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, *pairs, scratch, limit)
                    : backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
     };
     // Further back than the step's own motion: the pair already overlapped where the step began
@@ -111,7 +114,7 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
         motion = -pc.normal;
         back = back_along(motion, kNoBacktrackLimit);
     }
-    if (!own.empty()) own.swap(scratch.buffers().pairs); // its capacity back for the next query
+    if (pairs == &own) own.swap(scratch.buffers().pairs); // its capacity back for the next query
     bool acted = false;
     if (back.distance > 0) {
         const Eigen::Vector3d away = motion.normalized() * back.distance; // B moves by -away relative to A
