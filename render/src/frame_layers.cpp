@@ -212,10 +212,9 @@ void Renderer::Impl::composite(const Viewport& vp, GLuint fbo) {
     begin_full_view(vp, fbo, true);
     const detail::CompositeProgram& c = prog.composite;
     gl.UseProgram(c.id);
-    bind_layers(c.layers);
-    bind_unit(6, GL_TEXTURE_BUFFER, l.marks_texture, c.marks);
-    if (l.mark_set) gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sphere_sets.at(l.mark_set).mark_vbo);
-    gl.Uniform1i(c.use_marks, l.mark_set ? 1 : 0);
+    bind_unit(0, GL_TEXTURE_2D, l.base, c.base);
+    bind_unit(1, GL_TEXTURE_2D, l.cover, c.cover);
+    bind_unit(2, GL_TEXTURE_2D, l.transmittance, c.transmittance);
     gl.Uniform2i(c.origin, vp.x, vp.y);
     end_full_view();
 }

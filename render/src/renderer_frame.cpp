@@ -124,7 +124,8 @@ void Renderer::Impl::draw(const Frame& f, const Camera& cam, const Viewport& vp,
     case Reuse::Composite: last_kind = DrawKind::Composited; break;
     }
     // A frame drawn again with its marks (changed or not) chooses between its two final
-    // pictures; a new frame is put together once, without making them.
+    // pictures; a new frame is put together once, without making them (its base already holds
+    // the spheres in the colours of their current marks).
     if (last_kind != DrawKind::Full && layers.mark_set)
         recolour(vp, fbo);
     else

@@ -31,7 +31,7 @@ struct Renderer::Impl {
         Bounds bounds;
     };
     // A sphere set: its spheres kept for the CPU splat (sphere_splat.hpp), its marks also in GL
-    // for the composite.
+    // for the recolour.
     struct GpuSphereSet {
         std::vector<GpuSphere> spheres;
         GLuint mark_vbo = 0; // one byte a vertex, three a sphere (255 marked), made with the set

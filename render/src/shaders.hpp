@@ -45,8 +45,7 @@ struct LayerSamplers {
 
 struct CompositeProgram {
     GLuint id = 0;
-    LayerSamplers layers;
-    GLint marks = -1, use_marks = -1, origin = -1;
+    GLint base = -1, cover = -1, transmittance = -1, origin = -1;
 };
 
 struct FinalsProgram {

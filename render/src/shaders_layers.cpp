@@ -50,24 +50,18 @@ void main() {
 )";
 
 // out = cover + transmittance * base: the see-through passes "over" the base, as blending them one
-// by one onto it would (in half floats, rounded to the target once). A base pixel of a sphere drawn with marks takes
-// the colour the sphere pass stored for its current mark, so a change of marks needs no drawing.
-const char* kCompositeFs = R"(
-uniform usamplerBuffer u_marks;
-uniform int u_use_marks;
+// by one onto it would (in half floats, rounded to the target once). The base's spheres were
+// splatted with the marks of this very frame; a later change of marks goes through the finals
+// and the recolour below instead, so the composite never reads the marks.
+const char* kCompositeFs = R"(#version 330 core
+uniform sampler2D u_base;
+uniform sampler2D u_cover;
+uniform sampler2D u_transmittance;
 uniform ivec2 u_origin;
 out vec4 frag_color;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy) - u_origin;
-    uint id = u_use_marks == 1 ? texelFetch(u_ids, p, 0).r : 0u;
-    vec4 base;
-    if (id == 0u)
-        base = texelFetch(u_base, p, 0);
-    else if (texelFetch(u_marks, int(3u * (id - 1u))).r != 0u)
-        base = texelFetch(u_marked, p, 0);
-    else
-        base = texelFetch(u_plain, p, 0);
-    frag_color = texelFetch(u_cover, p, 0) + texelFetch(u_transmittance, p, 0).r * base;
+    frag_color = texelFetch(u_cover, p, 0) + texelFetch(u_transmittance, p, 0).r * texelFetch(u_base, p, 0);
 }
 )";
 
@@ -120,11 +114,10 @@ void build_layer_programs(const GlFunctions& gl, Programs& p) {
     s.marked = loc(s.id, "u_marked");
     s.ids = loc(s.id, "u_ids");
     CompositeProgram& c = p.composite;
-    const std::string composite = std::string(kLayerSamplersFs) + kCompositeFs;
-    c.id = link_program(gl, kFullViewVs, composite.c_str(), "composite");
-    c.layers = layers(c.id);
-    c.marks = loc(c.id, "u_marks");
-    c.use_marks = loc(c.id, "u_use_marks");
+    c.id = link_program(gl, kFullViewVs, kCompositeFs, "composite");
+    c.base = loc(c.id, "u_base");
+    c.cover = loc(c.id, "u_cover");
+    c.transmittance = loc(c.id, "u_transmittance");
     c.origin = loc(c.id, "u_origin");
     FinalsProgram& f = p.finals;
     const std::string finals = std::string(kLayerSamplersFs) + kFinalsFs;
