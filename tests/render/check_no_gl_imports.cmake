@@ -1,10 +1,15 @@
-# Fails if a binary imports a gl* symbol, i.e. calls GL without the loader.
-# Usage: cmake -DFILES="a|b|c" [-DNM=nm] -P check_no_gl_imports.cmake
+# Fails if a binary imports a gl* symbol, i.e. calls GL without the loader, or
+# needs a GL implementation (OSMesa, EGL, GL) at start instead of opening it
+# when a backend is asked for (render/src/gl_library.hpp).
+# Usage: cmake -DFILES="a|b|c" [-DNM=nm] [-DOBJDUMP=objdump] -P check_no_gl_imports.cmake
 # A direct GL call could bind to the wrong library and render a blank image
 # (DESIGN.md §4). To show that the check can see imports at all, the files
-# together must import a *GetProcAddress function.
+# together must import dlsym, through which the backends reach their libraries.
 if(NOT NM)
   set(NM nm)
+endif()
+if(NOT OBJDUMP)
+  set(OBJDUMP objdump)
 endif()
 string(REPLACE "|" ";" files "${FILES}")
 set(found_loader FALSE)
@@ -18,11 +23,19 @@ foreach(f IN LISTS files)
     string(REPLACE "\n" "" direct "${direct}")
     message(FATAL_ERROR "${f} calls GL directly:${direct}\nLoad these through the GL function table (render/src/gl_functions.hpp) instead.")
   endif()
-  if(out MATCHES "GetProcAddress")
+  if(out MATCHES "[ \t\n]dlsym")
     set(found_loader TRUE)
+  endif()
+  execute_process(COMMAND ${OBJDUMP} -p ${f} OUTPUT_VARIABLE headers RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${OBJDUMP} failed on ${f}")
+  endif()
+  string(REGEX MATCHALL "NEEDED +lib(OSMesa|EGL|GL|GLX|OpenGL|LLVM)[^\n]*" gl_needed "${headers}")
+  if(gl_needed)
+    message(FATAL_ERROR "${f} loads a GL implementation at start: ${gl_needed}\nOpen it through GlLibrary when its backend is asked for.")
   endif()
 endforeach()
 if(NOT found_loader)
-  message(FATAL_ERROR "no *GetProcAddress import found in ${FILES}: the check cannot see imports")
+  message(FATAL_ERROR "no dlsym import found in ${FILES}: the check cannot see imports")
 endif()
-message(STATUS "no direct gl* imports in ${FILES}")
+message(STATUS "no direct gl* imports and no GL library needed at start in ${FILES}")
