@@ -2,11 +2,13 @@
 // Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write (docs/cli.md).
 #include "commands.hpp"
 #include "spt/error.hpp"
+#include "spt/huge_page_heap.hpp"
 #include "spt/version.hpp"
 #include <iostream>
 #include <map>
 
 int main(int argc, char** argv) {
+    spt::reexec_with_huge_page_heap(argv);
     CLI::App app{"spt: collision detection with sampling trees"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "spt " SPT_VERSION_STRING);
