@@ -47,6 +47,7 @@ bool huge_page_restart_built_in() {
 
 } // namespace detail
 
+#if defined(SPT_HUGE_PAGE_RESTART)
 namespace {
 
 // "[never]", or no file (no THP in this kernel): madvise would be refused.
@@ -57,6 +58,7 @@ bool kernel_offers_huge_pages() {
 }
 
 } // namespace
+#endif
 
 void reexec_with_huge_page_heap(char** argv) {
 #if defined(SPT_HUGE_PAGE_RESTART)
