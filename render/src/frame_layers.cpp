@@ -208,13 +208,10 @@ void Renderer::Impl::recolour(const Viewport& vp, GLuint fbo) {
 }
 
 void Renderer::Impl::composite(const Viewport& vp, GLuint fbo) {
-    FrameLayers& l = layers;
     begin_full_view(vp, fbo, true);
     const detail::CompositeProgram& c = prog.composite;
     gl.UseProgram(c.id);
-    bind_unit(0, GL_TEXTURE_2D, l.base, c.base);
-    bind_unit(1, GL_TEXTURE_2D, l.cover, c.cover);
-    bind_unit(2, GL_TEXTURE_2D, l.transmittance, c.transmittance);
+    bind_layers(c.layers);
     gl.Uniform2i(c.origin, vp.x, vp.y);
     end_full_view();
 }

@@ -36,16 +36,16 @@ struct CircleProgram {
     GLint view = -1, projection = -1, ortho = -1, alpha = -1;
 };
 
-// A view's layers put together: the overlay layer over the base layer, marked spheres in their
-// current colour (shaders_layers.cpp).
 // The six layer textures a full-view pass reads (frame_layers.cpp binds them to units 0-5).
 struct LayerSamplers {
     GLint base = -1, cover = -1, transmittance = -1, ids = -1, plain = -1, marked = -1;
 };
 
+// A view's layers put together: the overlay layer over the base layer (shaders_layers.cpp).
 struct CompositeProgram {
     GLuint id = 0;
-    GLint base = -1, cover = -1, transmittance = -1, origin = -1;
+    LayerSamplers layers; // reads base, cover and transmittance; the rest stay unused (-1)
+    GLint origin = -1;
 };
 
 struct FinalsProgram {

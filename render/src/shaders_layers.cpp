@@ -53,10 +53,7 @@ void main() {
 // by one onto it would (in half floats, rounded to the target once). The base's spheres were
 // splatted with the marks of this very frame; a later change of marks goes through the finals
 // and the recolour below instead, so the composite never reads the marks.
-const char* kCompositeFs = R"(#version 330 core
-uniform sampler2D u_base;
-uniform sampler2D u_cover;
-uniform sampler2D u_transmittance;
+const char* kCompositeFs = R"(
 uniform ivec2 u_origin;
 out vec4 frag_color;
 void main() {
@@ -114,10 +111,9 @@ void build_layer_programs(const GlFunctions& gl, Programs& p) {
     s.marked = loc(s.id, "u_marked");
     s.ids = loc(s.id, "u_ids");
     CompositeProgram& c = p.composite;
-    c.id = link_program(gl, kFullViewVs, kCompositeFs, "composite");
-    c.base = loc(c.id, "u_base");
-    c.cover = loc(c.id, "u_cover");
-    c.transmittance = loc(c.id, "u_transmittance");
+    const std::string composite = std::string(kLayerSamplersFs) + kCompositeFs;
+    c.id = link_program(gl, kFullViewVs, composite.c_str(), "composite");
+    c.layers = layers(c.id);
     c.origin = loc(c.id, "u_origin");
     FinalsProgram& f = p.finals;
     const std::string finals = std::string(kLayerSamplersFs) + kFinalsFs;

@@ -6,30 +6,38 @@
 using spt::detail::HeapEnvironment;
 using spt::detail::huge_page_tunables;
 
+namespace {
+bool offers() { return true; }
+bool refuses() { return false; }
+bool g_kernel_asked = false;
+bool offers_and_counts() { g_kernel_asked = true; return true; }
+} // namespace
+
 TEST(HugePageHeap, CleanEnvironmentStartsAgainWithTheTunable) {
-    EXPECT_EQ(huge_page_tunables({nullptr, nullptr, nullptr, true}), "glibc.malloc.hugetlb=1");
-    EXPECT_EQ(huge_page_tunables({"", nullptr, nullptr, true}), "glibc.malloc.hugetlb=1");
+    EXPECT_EQ(huge_page_tunables({nullptr, nullptr, nullptr, offers}), "glibc.malloc.hugetlb=1");
+    EXPECT_EQ(huge_page_tunables({"", nullptr, nullptr, offers}), "glibc.malloc.hugetlb=1");
 }
 
 TEST(HugePageHeap, UserTunablesAreKeptAndTheHugePageOneAppended) {
-    EXPECT_EQ(huge_page_tunables({"glibc.malloc.arena_max=2", nullptr, nullptr, true}),
+    EXPECT_EQ(huge_page_tunables({"glibc.malloc.arena_max=2", nullptr, nullptr, offers}),
               "glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1");
 }
 
 TEST(HugePageHeap, SecondStartOrUserChoiceIsNotOverriddenSoNoLoop) {
-    EXPECT_EQ(huge_page_tunables({"glibc.malloc.hugetlb=1", nullptr, nullptr, true}), std::nullopt);
-    EXPECT_EQ(huge_page_tunables({"glibc.malloc.hugetlb=0", nullptr, nullptr, true}), std::nullopt);
-    EXPECT_EQ(huge_page_tunables({"glibc.malloc.arena_max=2:glibc.malloc.hugetlb=2", nullptr, nullptr, true}),
+    EXPECT_EQ(huge_page_tunables({"glibc.malloc.hugetlb=1", nullptr, nullptr, offers_and_counts}), std::nullopt);
+    EXPECT_FALSE(g_kernel_asked) << "the second start read the kernel's setting";
+    EXPECT_EQ(huge_page_tunables({"glibc.malloc.hugetlb=0", nullptr, nullptr, offers}), std::nullopt);
+    EXPECT_EQ(huge_page_tunables({"glibc.malloc.arena_max=2:glibc.malloc.hugetlb=2", nullptr, nullptr, offers}),
               std::nullopt);
 }
 
 TEST(HugePageHeap, OptOutKernelWithoutHugePagesAndValgrindRunAsTheyAre) {
-    EXPECT_EQ(huge_page_tunables({nullptr, "0", nullptr, true}), std::nullopt);
-    EXPECT_EQ(huge_page_tunables({nullptr, nullptr, nullptr, false}), std::nullopt);
-    EXPECT_EQ(huge_page_tunables({nullptr, nullptr, "/usr/libexec/valgrind/vgpreload_core-amd64-linux.so", true}),
+    EXPECT_EQ(huge_page_tunables({nullptr, "0", nullptr, offers}), std::nullopt);
+    EXPECT_EQ(huge_page_tunables({nullptr, nullptr, nullptr, refuses}), std::nullopt);
+    EXPECT_EQ(huge_page_tunables({nullptr, nullptr, "/usr/libexec/valgrind/vgpreload_core-amd64-linux.so", offers}),
               std::nullopt);
     // Anything but "0" leaves it on; another preload (heaptrack, a profiler) is started again with it.
-    EXPECT_EQ(huge_page_tunables({nullptr, "1", "libheaptrack_preload.so", true}), "glibc.malloc.hugetlb=1");
+    EXPECT_EQ(huge_page_tunables({nullptr, "1", "libheaptrack_preload.so", offers}), "glibc.malloc.hugetlb=1");
 }
 
 namespace {

@@ -32,7 +32,7 @@ std::optional<std::string> huge_page_tunables(const HeapEnvironment& env) {
     if (env.glibc_tunables && std::strstr(env.glibc_tunables, kTunable)) return std::nullopt;
     // Valgrind's /proc/self/exe is valgrind itself, and its malloc is its own.
     if (env.ld_preload && std::strstr(env.ld_preload, "vgpreload")) return std::nullopt;
-    if (!env.kernel_offers_huge_pages) return std::nullopt;
+    if (!env.kernel_offers_huge_pages || !env.kernel_offers_huge_pages()) return std::nullopt;
     const std::string before = env.glibc_tunables ? env.glibc_tunables : "";
     return (before.empty() ? "" : before + ":") + kTunable + "=1";
 }
@@ -65,7 +65,7 @@ void reexec_with_huge_page_heap(char** argv) {
     if (!argv || !argv[0]) return;
     const char* tunables = std::getenv("GLIBC_TUNABLES");
     const auto with = detail::huge_page_tunables(
-        {tunables, std::getenv("SPT_HUGE_PAGE_HEAP"), std::getenv("LD_PRELOAD"), kernel_offers_huge_pages()});
+        {tunables, std::getenv("SPT_HUGE_PAGE_HEAP"), std::getenv("LD_PRELOAD"), kernel_offers_huge_pages});
     if (!with) return;
     const std::string before = tunables ? tunables : "";
     if (setenv("GLIBC_TUNABLES", with->c_str(), 1) != 0) return;

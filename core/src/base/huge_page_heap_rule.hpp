@@ -6,12 +6,14 @@
 
 namespace spt::detail {
 
-/// What the environment says, read once; a null pointer is an unset variable.
+/// What the environment says; a null pointer is an unset variable.
 struct HeapEnvironment {
     const char* glibc_tunables = nullptr; ///< GLIBC_TUNABLES
     const char* opt_out = nullptr;        ///< SPT_HUGE_PAGE_HEAP ("0" turns the restart off)
     const char* ld_preload = nullptr;     ///< LD_PRELOAD
-    bool kernel_offers_huge_pages = false; ///< transparent huge pages not "[never]"
+    /// Whether transparent huge pages are not "[never]"; asked last, so that a second start, which
+    /// the tunable already tells apart, reads no file.
+    bool (*kernel_offers_huge_pages)() = nullptr;
 };
 
 /// The GLIBC_TUNABLES value to start again with (the user's settings kept, the huge-page one
