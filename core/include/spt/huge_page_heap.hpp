@@ -1,9 +1,8 @@
 #pragma once
 // Programs built on spt allocate and first touch hundreds of megabytes (a mesh's import, its
 // samples and trees, a renderer's buffers). The kernel fills fresh memory a 4 KiB page at a time,
-// one fault a page; where a fault is dear (virtual machines that trap it: 9 us a page measured on
-// our 2-core machines, against well under 1 us on bare metal) that alone can be half of a
-// command's time. glibc's malloc asks for 2 MiB pages when GLIBC_TUNABLES holds
+// one fault a page; where a fault is dear (virtual machines that trap it: about 10 us a fault on
+// our 2-core machines, docs/benchmarks.md) that alone can be half of a command's time. glibc's malloc asks for 2 MiB pages when GLIBC_TUNABLES holds
 // glibc.malloc.hugetlb=1, but reads it only when a program starts: so the program starts again.
 
 namespace spt {
