@@ -6,7 +6,7 @@ SPT := $(BUILD)/cli/spt
 # time from a clean tree, which is every CI run; UNITY=OFF builds file by file.
 UNITY ?= ON
 
-.PHONY: all deps configure build demo test bench figures resources clean fuzz sanitize
+.PHONY: all deps configure build demo test bench figures resources clean fuzz sanitize core-only deb deb-check
 
 all: build
 
@@ -62,6 +62,22 @@ sanitize: deps
 	  -E '$(SANITIZE_SKIP)|$(SANITIZE_NO_LEAKS)'
 	@if [ '$(SANITIZE_ONLY)' = '.' ] && [ -z '$(SANITIZE_LABELS)' ]; then cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
 	  $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -R '$(SANITIZE_NO_LEAKS)' -E '$(SANITIZE_SKIP)'; fi
+
+# The library and the commands that need no drawing, configured as a server without Qt or OpenGL
+# would be (docs/library.md); ctest adds a check that nothing built links either.
+CORE_BUILD ?= build-core
+core-only: deps
+	@cmake -S . -B $(CORE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=$(UNITY) \
+	  -DSPT_BUILD_EDITOR=OFF -DSPT_BUILD_RENDER=OFF -DSPT_BUILD_BENCH=OFF -DCMAKE_DISABLE_FIND_PACKAGE_Qt6=ON > /dev/null
+	@cmake --build $(CORE_BUILD) -j $(JOBS)
+	@cd $(CORE_BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# spt_VERSION_amd64.deb in $(BUILD) (docs/library.md); deb-check installs it with apt-get, runs it,
+# builds examples/ against it and removes it again (CI runs it).
+deb: build
+	@cd $(BUILD) && cpack -G DEB
+deb-check: build
+	@bash tools/check-deb.sh $(BUILD)
 
 bench: build
 	@cmake --build $(BUILD) --target bench

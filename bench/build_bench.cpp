@@ -3,7 +3,6 @@
 #include "meshgen.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
-#include "spt/huge_page_heap.hpp"
 #include "sampling/surface_samples.hpp"
 #include <algorithm>
 #include <chrono>
@@ -29,7 +28,6 @@ template <class F> double best_seconds(int reps, F&& f) {
 } // namespace
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv); // as the programs it measures
     std::vector<int> sides = {100, 316, 1000}; // nu = nv: 10k, ~100k, 1M vertices
     int threads = 1; // sampling and building; `--threads N` last on the line
     if (argc > 2 && std::strcmp(argv[argc - 2], "--threads") == 0) threads = std::max(1, std::atoi(argv[argc - 1])), argc -= 2;

@@ -1,4 +1,5 @@
 // spt convert IN... [-o OUT.spt | --out-dir DIR] [options]
+#include "exit_code.hpp"
 #include "commands.hpp"
 #include "number_checks.hpp"
 #include "process_pool.hpp"
@@ -50,30 +51,25 @@ long peak_mib() {
     return u.ru_maxrss / 1024;
 }
 
-// The trees of the recipe file, over the new samples: trees with a recipe replayed split by
-// split (steps that no longer select are reported), the others built automatically.
+// The trees of the recipe file over the new samples, with a line on each.
 void replay_trees(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions& build, const std::string& recipe,
                   const std::string& in) {
-    const SptDocument old = load_spt(recipe);
-    doc.trees.clear();
-    for (const SamplingTree& t : old.trees) {
-        if (t.recipe().empty()) {
-            doc.trees.push_back(build_tree(t.name(), doc.samples, build));
-            std::cerr << "  recipe: tree '" << t.name() << "' of " << recipe << " has no recipe; built automatically\n";
+    for (const TreeReplay& r : spt::replay_trees(doc, mesh, load_spt(recipe), build)) {
+        if (r.built_automatically) {
+            std::cerr << "  recipe: tree '" << r.tree << "' of " << recipe << " has no recipe; built automatically\n";
             continue;
         }
-        ReplayReport report;
-        doc.trees.push_back(replay_recipe(t, doc.samples, mesh, &report));
-        std::cerr << "  recipe: tree '" << t.name() << "': " << report.replayed << " of " << t.recipe().size()
+        std::cerr << "  recipe: tree '" << r.tree << "': " << r.report.replayed << " of " << r.steps
                   << " splits replayed on " << in << "\n";
-        for (const std::string& why : report.skipped) std::cerr << "  recipe: not replayed: " << why << "\n";
+        for (const std::string& why : r.report.skipped) std::cerr << "  recipe: not replayed: " << why << "\n";
     }
 }
 
 // Converts one file; runs in a worker process. Prints one summary line and the report.
 int convert_one(const std::string& in, const std::string& out, const ConvertArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
-    // The worker converts one file and exits. By default glibc maps each large array afresh and
+    // The worker converts one file and exits. Where the programs' heap is glibc's
+    // (SPT_ALLOCATOR=system; mimalloc and jemalloc ignore this), it maps each large array afresh and
     // unmaps it when freed, so every array costs a page fault a page; kept on the heap, a freed
     // array's pages serve the next ones (at 1M vertices about 0.3 s less system time, for 20 MB
     // more peak memory).
@@ -99,18 +95,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     if (a.append) {
         // Another tree over the samples already in the file (the paper keeps one per motion).
         doc = load_spt(out);
-        const std::string mismatch = check_mesh_matches(doc.mesh, m.mesh);
-        if (!mismatch.empty()) throw Error(ErrorKind::BadInput, out + ": " + mismatch + " (" + in + ")");
-        auto same = std::find_if(doc.trees.begin(), doc.trees.end(), [&](const SamplingTree& t) { return t.name() == a.tree_name; });
-        if (same != doc.trees.end() && !a.force)
-            throw Error(ErrorKind::CannotWrite, out + ": already has a tree named '" + a.tree_name + "'; use --force to replace it");
-        if (same != doc.trees.end()) doc.trees.erase(same);
-        BuildOptions build = opt.build;
-        for (size_t i = 0; i < doc.samples.size() && !build.radius_coherent; ++i)
-            build.radius_coherent = doc.samples.is_face_sample(i); // keep the tolerance guarantee
-        doc.trees.push_back(build_tree(a.tree_name, doc.samples, build));
-        for (size_t i = 0; i < doc.samples.size(); ++i)
-            ++(doc.samples.is_face_sample(i) ? st.face_samples : st.vertex_samples);
+        append_tree(doc, m.mesh, a.tree_name, opt.build, a.force, out, &st);
     } else {
         doc = make_document(m.mesh, opt, &st);
     }
@@ -233,7 +218,7 @@ int run_convert(const ConvertArgs& a) {
             return convert_one(a.inputs[i], out, args);
         } catch (const Error& e) {
             std::cerr << e.what() << "\n";
-            return int(e.kind());
+            return spt::cli::exit_code(e.kind());
         }
     };
     auto done = [&](size_t i, const JobOutcome& o) {

@@ -1,14 +1,13 @@
 // spt: command-line front end. Messages go to stderr; results to stdout or files.
 // Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write (docs/cli.md).
+#include "exit_code.hpp"
 #include "commands.hpp"
 #include "spt/error.hpp"
-#include "spt/huge_page_heap.hpp"
 #include "spt/version.hpp"
 #include <iostream>
 #include <map>
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv);
     CLI::App app{"spt: collision detection with sampling trees"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "spt " SPT_VERSION_STRING);
@@ -24,6 +23,8 @@ int main(int argc, char** argv) {
     add(spt::cli::add_simulate_command);
 #ifdef SPT_HAVE_RENDER
     add(spt::cli::add_render_command);
+#else
+    add(spt::cli::add_render_left_out);
 #endif
     try {
         app.parse(argc, argv);
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
             if (sub->parsed()) return action();
     } catch (const spt::Error& e) {
         std::cerr << "spt: error: " << e.what() << "\n";
-        return int(e.kind());
+        return spt::cli::exit_code(e.kind());
     } catch (const std::bad_alloc&) {
         std::cerr << "spt: error: out of memory\n";
         return 2;

@@ -53,6 +53,6 @@ int main(int argc, char** argv) {
         return 0;
     } catch (const spt::Error& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
-        return int(e.kind());
+        return e.kind() == spt::ErrorKind::BadInput ? 2 : 1; // this program's exit codes
     }
 }

@@ -1,4 +1,5 @@
 // Plot files: the CSV and PNG of each mesh, and redrawing PNGs from their CSVs.
+#include "exit_code.hpp"
 #include "plot_files.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
@@ -33,20 +34,20 @@ int replot(const std::filesystem::path& dir, const std::string& stem, const std:
             std::string png = fs::path(csv).replace_extension(".png").string(), error;
             if (!draw_plot(png, data.mesh, data.points, error)) {
                 std::cerr << "error: " << error << "\n";
-                status = std::max(status, int(spt::ErrorKind::CannotWrite));
+                status = std::max(status, spt::cli::exit_code(spt::ErrorKind::CannotWrite));
                 continue;
             }
             std::cerr << "redrew " << png << " (" << data.points.size() << " points)\n";
             ++drawn;
         } catch (const spt::Error& e) {
             std::cerr << "error: " << e.what() << "\n";
-            status = std::max(status, int(e.kind()));
+            status = std::max(status, spt::cli::exit_code(e.kind()));
         }
     }
     if (drawn == 0 && status == 0) {
         std::cerr << "error: no plot CSV " << (dir / (stem + "-*.csv")).string()
                   << (mesh.empty() ? "" : " of mesh '" + mesh + "'") << " to redraw\n";
-        return int(spt::ErrorKind::BadInput);
+        return spt::cli::exit_code(spt::ErrorKind::BadInput);
     }
     return status;
 }

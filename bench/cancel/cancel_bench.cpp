@@ -4,7 +4,6 @@
 // Prints a Markdown table; docs/benchmarks.md quotes it with this command.
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
-#include "spt/huge_page_heap.hpp"
 #include "spt/mesh.hpp"
 #include <algorithm>
 #include <chrono>
@@ -27,7 +26,6 @@ int usage(const char* why) {
 } // namespace
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv); // as the programs it measures
     if (argc < 2 || argc > 3 || std::string(argv[1]) == "--help") return usage("a mesh file is needed");
     const std::string mesh = argv[1];
     char* end = nullptr;

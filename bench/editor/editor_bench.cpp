@@ -2,7 +2,6 @@
 // mesh (through and visible only), and redrawing all four views of a 100k-triangle mesh with
 // 50k sampling spheres in a 1280x800 window. Needs an X server: run under xvfb-run.
 #include "spt/recipe.hpp"
-#include "spt/huge_page_heap.hpp"
 #include "main_window.hpp"
 #include "view_widget.hpp"
 #include "mesh/shapes.hpp"
@@ -227,7 +226,6 @@ double selection_drawn_ms(editor::MainWindow& w, int runs) {
 } // namespace
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv); // as the programs it measures
     spt::editor::use_render_gl_format();
     QApplication app(argc, argv);
     editor::StartOptions start;

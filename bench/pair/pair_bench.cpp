@@ -2,6 +2,7 @@
 // allowed) at random poses inside A's bounding box, as FCL's own test suite poses them.
 // Prints how often each level agrees with the exact level and the median time of each,
 // next to FCL in the same run. Figures and commands: docs/hard-cases.md.
+#include "exit_code.hpp"
 #include "peers.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
@@ -150,6 +151,6 @@ int main(int argc, char** argv) {
         return 0;
     } catch (const Error& e) {
         std::fprintf(stderr, "pair_bench: %s\n", e.what());
-        return int(e.kind());
+        return spt::cli::exit_code(e.kind());
     }
 }

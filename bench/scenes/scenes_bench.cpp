@@ -1,7 +1,6 @@
 // spt-bench-scenes: broad phase and whole-step times for scenes of 100 to 10,000 objects
 // (docs/benchmarks.md). Usage: spt-bench-scenes [--quick]
 #include "spt/simulation.hpp"
-#include "spt/huge_page_heap.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -131,7 +130,6 @@ void pile_table(const Scene& pile, int steps) {
 } // namespace
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv); // as the programs it measures
     const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
     const Scene pile = load_scene(std::string(SPT_SOURCE_DIR) + "/resources/scenes/pile.json");
     std::printf("## Broad phase, moving spheres (median of %d steps)\n\n", quick ? 20 : 100);

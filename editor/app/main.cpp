@@ -1,7 +1,6 @@
 // spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS]: the four-view sampling editor.
 #include "app_start.hpp"
 #include "main_window.hpp"
-#include "spt/huge_page_heap.hpp"
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTimer>
@@ -22,7 +21,6 @@ void describe(QCommandLineParser& parser) {
 } // namespace
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv);
     QCommandLineParser parser;
     describe(parser);
     if (spt::editor::asks_for_help(spt::editor::arguments_before_app(argc, argv))) { // no display needed

@@ -2,12 +2,10 @@
 #include "app_start.hpp"
 #include "viewer_options.hpp"
 #include "viewer_window.hpp"
-#include "spt/huge_page_heap.hpp"
 #include <QApplication>
 #include <cstdio>
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv);
     if (spt::editor::asks_for_help(spt::editor::arguments_before_app(argc, argv))) { // no display needed
         std::fputs(qPrintable(spt::editor::viewer_usage()), stdout);
         return 0;

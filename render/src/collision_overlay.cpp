@@ -12,7 +12,7 @@ std::vector<Sphere> world_spheres(const CompactTree& compact, const Eigen::Affin
     for (const CompactNode& n : compact.nodes()) {
         if (!n.is_active()) continue;
         for (uint32_t k = n.first; k < n.first + n.count; ++k)
-            out[k] = {pose * Eigen::Vector3f((origin + compact.sphere_centre(n, k).cast<double>()).cast<float>()),
+            out[k] = {pose * Eigen::Vector3f((origin + compact.sphere_center(n, k).cast<double>()).cast<float>()),
                       n.ss_radius};
     }
     return out;

@@ -34,7 +34,7 @@ std::vector<SphereInstance> spheres_of(const CollisionModel& m, const Color& col
     const CompactTree& t = m.tree();
     for (const CompactNode& n : t.nodes())
         for (uint32_t k = n.first; n.count && k < n.first + n.count; ++k)
-            out.push_back({{t.sphere_centre(n, k), n.ss_radius}, color});
+            out.push_back({{t.sphere_center(n, k), n.ss_radius}, color});
     return out;
 }
 
@@ -146,9 +146,9 @@ Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step
                 for (const spt::SpherePair& sp : c.pairs) {
                     const CompactNode &na = ma.tree().nodes()[sp.node_a], &nb = mb.tree().nodes()[sp.node_b];
                     SpherePair p;
-                    p.a = {poses[c.a].apply(ma.origin() + ma.tree().sphere_centre(na, sp.a).cast<double>()).cast<float>(),
+                    p.a = {poses[c.a].apply(ma.origin() + ma.tree().sphere_center(na, sp.a).cast<double>()).cast<float>(),
                            na.ss_radius};
-                    p.b = {poses[c.b].apply(mb.origin() + mb.tree().sphere_centre(nb, sp.b).cast<double>()).cast<float>(),
+                    p.b = {poses[c.b].apply(mb.origin() + mb.tree().sphere_center(nb, sp.b).cast<double>()).cast<float>(),
                            nb.ss_radius};
                     const Eigen::Vector3f d = p.b.center - p.a.center;
                     p.normal = d.norm() > 0 ? Eigen::Vector3f(d.normalized()) : Eigen::Vector3f::UnitY();

@@ -74,7 +74,7 @@ std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const S
         const NodeId id = c.tree_node < nodes.size() ? nodes[c.tree_node]->id : root_id();
         const Color color = by == ColorBy::Level ? level_color(node_depth(id)) : node_color(id);
         for (uint32_t k = c.first; k < c.first + c.count; ++k) {
-            out[k].sphere.center = (origin + compact.sphere_centre(c, k).cast<double>()).cast<float>();
+            out[k].sphere.center = (origin + compact.sphere_center(c, k).cast<double>()).cast<float>();
             out[k].sphere.radius = c.ss_radius;
             out[k].color = color;
         }

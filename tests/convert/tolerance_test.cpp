@@ -76,7 +76,7 @@ double largest_uncovered_depth(const TriangleMesh& mesh, const SptDocument& doc,
     for (const TreeNode* n : doc.trees[0].active_nodes())
         for (uint32_t i : n->samples)
             spheres.push_back({doc.samples.origin +
-                                   doc.samples.sphere_centre(i, n->ss_radius).cast<double>(),
+                                   doc.samples.sphere_center(i, n->ss_radius).cast<double>(),
                                double(n->ss_radius)});
     const SphereGrid grid(spheres, cap);
     std::mt19937 rng(11);

@@ -41,7 +41,7 @@ TEST(OpenMeshes, EverySphereOfAnOpenPartIsCentredOnTheSurfaceWithinTheAllowance)
             for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k) {
                 const uint32_t i = t.sample_index()[k];
                 one_sided += !o->doc.samples.is_two_sided(i);
-                off_surface += t.sphere_centre(n, k) != o->doc.samples.points[i];
+                off_surface += t.sphere_center(n, k) != o->doc.samples.points[i];
             }
         }
         EXPECT_EQ(one_sided, 0u) << subject.name;

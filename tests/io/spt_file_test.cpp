@@ -101,7 +101,7 @@ TEST(SptFile, TwoSidedSamplesOfAnOpenPartRoundTripAndStayCentredWithoutTheMesh) 
     const CompactTree& tree = model.tree();
     for (const CompactNode& n : tree.nodes())
         for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k)
-            ASSERT_EQ(tree.sphere_centre(n, k), back.samples.points[tree.sample_index()[k]]);
+            ASSERT_EQ(tree.sphere_center(n, k), back.samples.points[tree.sample_index()[k]]);
     // A small cube inside the cup: open parts enclose nothing, with or without the mesh.
     const SptDocument cube = make_document(meshgen::prepare(meshgen::box(0.2, 0.2, 0.2, 1), "cube.obj").mesh);
     QueryScratch s;

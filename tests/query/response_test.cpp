@@ -65,7 +65,7 @@ TEST(Backtrack, PrunedExitSearchFindsTheLargestRootOfEveryOverlappingPair) {
             auto centre = [&](const CompactTree& t, uint32_t node, uint32_t k) -> Eigen::Vector3d {
                 const CompactNode& n = t.nodes()[bounds ? k : node];
                 return bounds ? Eigen::Vector3f(n.center[0], n.center[1], n.center[2]).cast<double>()
-                              : t.sphere_centre(n, k).cast<double>();
+                              : t.sphere_center(n, k).cast<double>();
             };
             const Eigen::Matrix3d rot = unit_rotation(p.rotation).toRotationMatrix();
             const Eigen::Vector3d t = local_translation(a, b, rot, p.translation);

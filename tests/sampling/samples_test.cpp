@@ -33,8 +33,9 @@ TEST(Samples, SnappedNormalSurvivesEncodingUnchanged) {
 }
 
 TEST(Samples, SphereTouchesTheSurfaceFromInside) {
-    const Eigen::Vector3f p(1, 2, 3), n(0, 0, 1);
-    EXPECT_EQ(sphere_center(p, n, 0.5f), Eigen::Vector3f(1, 2, 2.5f));
+    SampleSet s;
+    s.add({1, 2, 3}, {0, 0, 1}, 0, 1);
+    EXPECT_EQ(s.sphere_center(0, 0.5f), Eigen::Vector3f(1, 2, 2.5f));
 }
 
 TEST(Samples, LengthsStoreAsBfloat16CapsRoundedDown) {
@@ -172,7 +173,7 @@ TEST(Samples, EverySampleOfAnOpenPartIsTwoSidedAndCentredOnTheSurface) {
     ASSERT_GT(s.size(), 0u);
     for (size_t i = 0; i < s.size(); ++i) {
         EXPECT_TRUE(s.is_two_sided(i));
-        EXPECT_EQ(s.sphere_centre(i, 0.3f), s.points[i]);
+        EXPECT_EQ(s.sphere_center(i, 0.3f), s.points[i]);
         EXPECT_LT(s.source_index(i), sheet.positions.size());
     }
 }

@@ -2,6 +2,8 @@
 // replayed on a changed mesh (vertices moved, re-triangulated) the splits come out the same
 // by region; a step that selects nothing any more is reported.
 #include "mesh/shapes.hpp"
+#include "spt/convert.hpp"
+#include "spt/error.hpp"
 #include "spt/recipe.hpp"
 #include "spt/selection.hpp"
 #include "spt/spt_file.hpp"
@@ -124,4 +126,55 @@ TEST(Recipe, AStepThatSelectsNothingIsReportedNotGuessed) {
     EXPECT_NE(report.skipped.front().find("step 3"), std::string::npos) << report.skipped.front();
     EXPECT_NE(report.skipped.front().find("none"), std::string::npos) << report.skipped.front();
     EXPECT_TRUE(replayed.find(7)->active);
+}
+
+TEST(Recipe, ReplayTreesReplaysTreesWithARecipeAndBuildsTheOthers) {
+    const Authored old = authored(40, 20, 0.0);
+    SptDocument recipes = old.doc;
+    recipes.trees.push_back(unsplit_tree("plain", old.doc.samples)); // no recipe
+    Authored changed = authored(57, 23, 0.02);
+    BuildOptions build;
+    build.leaf_size = 16;
+    const std::vector<TreeReplay> done = replay_trees(changed.doc, changed.mesh, recipes, build);
+    ASSERT_EQ(done.size(), 2u);
+    EXPECT_EQ(done[0].tree, "walking");
+    EXPECT_FALSE(done[0].built_automatically);
+    EXPECT_EQ(done[0].steps, 2u);
+    EXPECT_EQ(done[0].report.replayed, 2u);
+    EXPECT_TRUE(done[1].built_automatically);
+    ASSERT_EQ(changed.doc.trees.size(), 2u);
+    EXPECT_EQ(changed.doc.trees[0].recipe().size(), 2u);
+    EXPECT_EQ(changed.doc.trees[1].name(), "plain");
+    for (const TreeNode* n : changed.doc.trees[1].active_nodes()) EXPECT_LE(n->samples.size(), 16u);
+    for (const SamplingTree& t : changed.doc.trees) EXPECT_EQ(t.validate(uint32_t(changed.doc.samples.size())), "");
+}
+
+TEST(Recipe, AppendTreeAddsANamedTreeAndReplacesItOnlyWhenAsked) {
+    Authored a = authored(40, 20, 0.0);
+    BuildOptions build;
+    build.leaf_size = 2;
+    ConvertStats st;
+    const SamplingTree& walk = append_tree(a.doc, a.mesh, "walk", build, false, "t.spt", &st);
+    EXPECT_EQ(walk.name(), "walk");
+    for (const TreeNode* n : walk.active_nodes()) EXPECT_LE(n->samples.size(), 2u);
+    EXPECT_EQ(st.vertex_samples + st.face_samples, a.doc.samples.size());
+    ASSERT_EQ(a.doc.trees.size(), 2u);
+    try {
+        append_tree(a.doc, a.mesh, "walk", build, false, "t.spt");
+        ADD_FAILURE() << "the same name was taken without replace";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::CannotWrite);
+        EXPECT_NE(std::string(e.what()).find("t.spt"), std::string::npos) << e.what();
+    }
+    append_tree(a.doc, a.mesh, "walk", BuildOptions{}, true, "t.spt");
+    EXPECT_EQ(a.doc.trees.size(), 2u);
+    // Another mesh: refused, the document as it was.
+    const Authored other = authored(57, 23, 0.02);
+    try {
+        append_tree(a.doc, other.mesh, "x", build, false, "t.spt");
+        ADD_FAILURE() << "a tree was added over another mesh's samples";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    }
+    EXPECT_EQ(a.doc.trees.size(), 2u);
 }

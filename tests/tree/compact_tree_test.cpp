@@ -32,11 +32,11 @@ TEST(CompactTree, LeftChildFollowsParentAndRightIsIndexed) {
         }
         for (uint32_t k = 0; k < n.count; ++k) {
             const uint32_t sample = c.sample_index()[n.first + k];
-            const Eigen::Vector3f ctr = s.sphere_centre(sample, src.ss_radius);
-            EXPECT_EQ(c.sphere_centre(n, n.first + k), ctr);
-            EXPECT_EQ(c.centres(n)[k], ctr.x()); // block: x's, y's, z's
-            EXPECT_EQ(c.centres(n)[n.count + k], ctr.y());
-            EXPECT_EQ(c.centres(n)[2 * n.count + k], ctr.z());
+            const Eigen::Vector3f ctr = s.sphere_center(sample, src.ss_radius);
+            EXPECT_EQ(c.sphere_center(n, n.first + k), ctr);
+            EXPECT_EQ(c.centers(n)[k], ctr.x()); // block: x's, y's, z's
+            EXPECT_EQ(c.centers(n)[n.count + k], ctr.y());
+            EXPECT_EQ(c.centers(n)[2 * n.count + k], ctr.z());
             EXPECT_NEAR(c.nx()[n.first + k] / 127.0f, s.normals[sample].x(), 0.005f);
         }
         spheres += n.count;
@@ -80,7 +80,7 @@ TEST(CompactTree, NodeDiscHoldsTheDiscOfEverySphereBelowIt) {
                 }
                 for (uint32_t k = m.first; k < m.first + m.count; ++k) {
                     const Eigen::Vector3f ns = Eigen::Vector3f(c.nx()[k], c.ny()[k], c.nz()[k]).normalized();
-                    const Eigen::Vector3f cs = c.sphere_centre(m, k);
+                    const Eigen::Vector3f cs = c.sphere_center(m, k);
                     const float reach = std::abs(n.dot(cs - centre)) + m.ss_radius * n.cross(ns).norm() +
                                         detail::kDiscHalfThickness * m.ss_radius;
                     ASSERT_LE(reach, d[3]) << mesh.name << " node " << i << " sphere " << k;

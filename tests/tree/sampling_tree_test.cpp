@@ -92,7 +92,7 @@ TEST(Split, EveryBoundingSphereStillHoldsItsSpheresAfterEdits) {
     ASSERT_TRUE(t.merge(3, s));
     for (const TreeNode* leaf : t.active_nodes())
         for (uint32_t i : leaf->samples) {
-            const Eigen::Vector3d c = s.sphere_centre(i, leaf->ss_radius).cast<double>();
+            const Eigen::Vector3d c = s.sphere_center(i, leaf->ss_radius).cast<double>();
             for (NodeId id = leaf->id; id != 0; id = parent_of(id)) {
                 const TreeNode& n = *t.find(id);
                 EXPECT_LE((c - n.center.cast<double>()).norm() + leaf->ss_radius, double(n.bv_radius))

@@ -95,7 +95,7 @@ TEST(TightBounds, EveryNodeContainsEverySamplingSphereBelowIt) {
             size_t checked = 0;
             for (const TreeNode* leaf : t.active_nodes())
                 for (uint32_t i : leaf->samples) {
-                    const Eigen::Vector3d c = s.sphere_centre(i, leaf->ss_radius).cast<double>();
+                    const Eigen::Vector3d c = s.sphere_center(i, leaf->ss_radius).cast<double>();
                     for (NodeId id = leaf->id; id != 0; id = parent_of(id)) {
                         const TreeNode& n = *t.find(id);
                         const double reach = (c - n.center.cast<double>()).norm() + leaf->ss_radius;
@@ -119,7 +119,7 @@ TEST(TightBounds, AreNoLargerThanThePaperBoundsGrownToContainment) {
     size_t paper_misses = 0;
     for (const TreeNode* leaf : p.active_nodes())
         for (uint32_t i : leaf->samples) {
-            const Eigen::Vector3f c = s.sphere_centre(i, leaf->ss_radius);
+            const Eigen::Vector3f c = s.sphere_center(i, leaf->ss_radius);
             if ((c - leaf->center).norm() + leaf->ss_radius > leaf->bv_radius) ++paper_misses;
         }
     EXPECT_GT(paper_misses, 0u) << "the paper bounds were expected to miss some spheres";

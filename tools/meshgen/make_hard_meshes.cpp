@@ -1,5 +1,6 @@
 // Writes the open, non-manifold and thin meshes of the hard-case suite (core's
 // mesh/hard_shapes) as OBJ, for the pair benchmark. Usage: spt-make-hard-meshes OUT_DIR
+#include "exit_code.hpp"
 #include "meshgen.hpp"
 #include "out_dir_argument.hpp"
 #include "mesh/hard_shapes.hpp"
@@ -33,7 +34,7 @@ int main(int argc, char** argv) {
         write(spt::make_plate_with_fin(), dir / "plate_with_fin.obj");
     } catch (const spt::Error& e) {
         std::cerr << e.what() << "\n";
-        return int(e.kind());
+        return spt::cli::exit_code(e.kind());
     }
     return 0;
 }

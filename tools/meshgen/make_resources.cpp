@@ -2,6 +2,7 @@
 // --big also writes torus_1m.ply (1,000,000 vertices) and the same torus as an unindexed
 // binary STL, torus_1m.stl (6,000,000 corners to weld), for the conversion benchmark; they are
 // not bundled.
+#include "exit_code.hpp"
 #include "meshgen.hpp"
 #include "out_dir_argument.hpp"
 #include "spt/error.hpp"
@@ -33,7 +34,7 @@ int main(int argc, char** argv) {
         }
     } catch (const spt::Error& e) {
         std::cerr << e.what() << "\n";
-        return int(e.kind());
+        return spt::cli::exit_code(e.kind());
     }
     return 0;
 }

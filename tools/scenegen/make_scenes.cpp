@@ -1,5 +1,6 @@
 // Writes the scenes bundled in resources/scenes/ and the meshes and .spt files they use.
 // Usage: spt-make-scenes OUT_DIR. Scenes name the bundled meshes as ../meshes/NAME.
+#include "exit_code.hpp"
 #include "meshgen.hpp"
 #include "out_dir_argument.hpp"
 #include "spt/convert.hpp"
@@ -186,7 +187,7 @@ int main(int argc, char** argv) {
         pile(dir);
     } catch (const Error& e) {
         std::cerr << e.what() << "\n";
-        return int(e.kind());
+        return spt::cli::exit_code(e.kind());
     }
     return 0;
 }

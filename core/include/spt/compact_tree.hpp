@@ -39,10 +39,10 @@ public:
     const std::vector<CompactNode>& nodes() const { return nodes_; }
     /// Centres of active node n's spheres: n.count x's, then n.count y's, then n.count z's.
     /// The array is padded by 8 floats so 8-wide loads from any block stay inside it.
-    const float* centres(const CompactNode& n) const { return centres_.data() + 3 * size_t(n.first); }
+    const float* centers(const CompactNode& n) const { return centers_.data() + 3 * size_t(n.first); }
     /// Centre of sphere k of active node n (n.first <= k < n.first + n.count).
-    Eigen::Vector3f sphere_centre(const CompactNode& n, uint32_t k) const {
-        const float* c = centres(n) + (k - n.first);
+    Eigen::Vector3f sphere_center(const CompactNode& n, uint32_t k) const {
+        const float* c = centers(n) + (k - n.first);
         return {c[0], c[n.count], c[2 * n.count]};
     }
     /// x of each sphere's sample normal as snorm8 (value/127), sphere order.
@@ -69,7 +69,7 @@ public:
 private:
     Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
     std::vector<CompactNode> nodes_;
-    std::vector<float> centres_;
+    std::vector<float> centers_;
     std::vector<int8_t> nx_, ny_, nz_;
     std::vector<uint8_t> two_sided_; // empty when no sphere is
     std::vector<float> node_disc_;   // empty when no sphere is two-sided

@@ -1,12 +1,14 @@
 #pragma once
 /// Mesh to sampling-tree document in one call: what `spt convert` and tools that
 /// accept a mesh in place of a .spt file do.
+#include "spt/recipe.hpp"
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"
 #include <atomic>
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace spt {
 
@@ -65,6 +67,31 @@ struct ConvertStats {
 /// Samples `mesh` and builds one tree over the samples.
 SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& options = {},
                           ConvertStats* stats = nullptr);
+
+/// One tree that replay_trees made.
+struct TreeReplay {
+    std::string tree;                 ///< its name, as in the recipe document
+    bool built_automatically = false; ///< the recipe document's tree had no recipe: built with the options
+    size_t steps = 0;                 ///< authoring steps in its recipe
+    ReplayReport report;              ///< what replaying them did (nothing when built automatically)
+};
+
+/// Replaces `doc`'s trees with the trees of `recipes` (an authored document of an earlier mesh)
+/// over `doc`'s samples of `mesh`: a tree with an authoring recipe is replayed split by split,
+/// one without is built with `build`. One entry per tree, in order; on an exception `doc` is
+/// unchanged. What `spt convert NEW_MESH --recipe OLD.spt` does after sampling.
+std::vector<TreeReplay> replay_trees(SptDocument& doc, const TriangleMesh& mesh, const SptDocument& recipes,
+                                     const BuildOptions& build);
+
+/// Builds another tree named `name` over the samples already in `doc` (the paper keeps one a
+/// kind of motion) and adds it, replacing one of that name only if `replace`. `mesh` must be
+/// the document's mesh (else BadInput); a tree of that name without `replace` is CannotWrite;
+/// `path` names the document in messages. Face samples keep the tree radius-coherent, so a
+/// tolerance the samples were made for still holds. `stats` gets the sample counts and the
+/// build time. What `spt convert MESH -o DOC.spt --append --tree-name NAME` does.
+const SamplingTree& append_tree(SptDocument& doc, const TriangleMesh& mesh, const std::string& name,
+                                BuildOptions build, bool replace, const std::string& path,
+                                ConvertStats* stats = nullptr);
 
 /// Reads a .spt file, or imports a mesh and converts it with default options.
 SptDocument load_or_convert(const std::string& path, const ConvertOptions& options = {});

@@ -1,20 +1,21 @@
 #pragma once
-/// Errors raised by the spt library. Every error names what failed and why;
-/// the command-line tools map the kind to a documented exit code.
+/// Errors raised by the spt library. Every error names what failed and why; a front end decides
+/// what each kind means to its user (the `spt` command's exit codes: cli/exit_code.hpp).
 #include <stdexcept>
 #include <string>
 
 namespace spt {
 
-/// What kind of failure an Error is; values are the command-line exit codes.
-enum class ErrorKind : int { Usage = 1, BadInput = 2, CannotWrite = 3 };
+/// What kind of failure an Error is: the caller asked for something impossible (Usage), an input
+/// is unreadable or wrong (BadInput), or an output cannot be written (CannotWrite).
+enum class ErrorKind { Usage, BadInput, CannotWrite };
 
 /// Exception carrying a kind and a message that names the file and the problem.
 class Error : public std::runtime_error {
 public:
     /// Makes an error of `kind` with a complete, user-facing message.
     Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
-    /// The kind of failure; also the process exit code for command-line tools.
+    /// The kind of failure.
     ErrorKind kind() const { return kind_; }
 
 private:

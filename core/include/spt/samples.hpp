@@ -44,7 +44,7 @@ struct SampleSet {
     /// Vertex or triangle index of sample i, without the face and two-sided bits.
     uint32_t source_index(size_t i) const { return sources[i] & kMaxSourceIndex; }
     /// Centre of sample i's sampling sphere of radius r, local frame: p - r*n, or p if two-sided.
-    Eigen::Vector3f sphere_centre(size_t i, float r) const {
+    Eigen::Vector3f sphere_center(size_t i, float r) const {
         return is_two_sided(i) ? points[i] : Eigen::Vector3f(points[i] - r * normals[i]);
     }
     /// Appends every sample of `other`, whose origin must be this set's.
@@ -54,12 +54,6 @@ struct SampleSet {
     void add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t source, float spacing,
              float max_radius = INFINITY);
 };
-
-/// Centre of the one-sided sampling sphere of radius r at surface point p with outward normal n
-/// (SampleSet::sphere_centre also knows two-sided samples).
-inline Eigen::Vector3f sphere_center(const Eigen::Vector3f& p, const Eigen::Vector3f& n, float r) {
-    return p - r * n;
-}
 
 /// How a node's sampling-sphere radius is chosen.
 struct RadiusRule {

@@ -97,12 +97,10 @@ public:
     /// Replaces the recipe (loaders).
     void set_recipe(std::vector<RecipeStep> recipe) { recipe_ = std::move(recipe); }
 
-    /// Mutable node access for builders and loaders.
-    TreeNode* find_mutable(NodeId id);
-    /// Inserts or replaces a node (builders and loaders).
-    void put(TreeNode node);
-
 private:
+    // Edits go through split, merge, set_radius and build_subtree, which keep the tree valid.
+    TreeNode* find_mutable(NodeId id);
+    void put(TreeNode node);
     void refresh_path(NodeId from, const SampleSet& samples, BoundsMethod method);
     void remove_subtree(NodeId id);
     std::string name_;

@@ -8,7 +8,6 @@
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
-#include "spt/huge_page_heap.hpp"
 #include "spt/mesh.hpp"
 #include "spt/node_id.hpp"
 #include "spt/pose.hpp"

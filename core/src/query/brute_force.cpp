@@ -39,7 +39,7 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
         std::vector<uint32_t> node_a(na), node_b(nb);
         for (uint32_t i = 0; i < an.size(); ++i)
             for (uint32_t k = an[i].first; an[i].is_active() && k < an[i].first + an[i].count; ++k) {
-                const Eigen::Vector3f c = a.tree().sphere_centre(an[i], k);
+                const Eigen::Vector3f c = a.tree().sphere_center(an[i], k);
                 ax[k] = c.x(), ay[k] = c.y(), az[k] = c.z(), ra[k] = an[i].ss_radius, node_a[k] = i;
             }
         // In sphere order: what a leaf's move spills past its count, the next leaf overwrites.

@@ -121,7 +121,7 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     for (const CompactNode& n : tree_.nodes()) {
         if (!n.is_active()) continue;
         max_leaf_ = std::max(max_leaf_, n.count);
-        for (uint32_t k = n.first; k < n.first + n.count; ++k) grow(tree_.sphere_centre(n, k).cast<double>(), n.ss_radius);
+        for (uint32_t k = n.first; k < n.first + n.count; ++k) grow(tree_.sphere_center(n, k).cast<double>(), n.ss_radius);
     }
     const auto& nodes = tree_.nodes();
     bounds_reach_.assign(nodes.size(), 0);

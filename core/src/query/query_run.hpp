@@ -79,7 +79,7 @@ inline Eigen::Vector3d pair_centre(const CompactTree& t, bool bounds, uint32_t n
         const CompactNode& n = t.nodes()[k];
         return Eigen::Vector3f(n.center[0], n.center[1], n.center[2]).cast<double>();
     }
-    return t.sphere_centre(t.nodes()[node], k).cast<double>();
+    return t.sphere_center(t.nodes()[node], k).cast<double>();
 }
 
 // Keeps pair (root, reach) if it beats or ties the search's best.

@@ -25,7 +25,7 @@ void tree_anchors(const CompactTree& tree, std::vector<Eigen::Vector3f>& out) {
             continue;
         }
         while (!nodes[i].is_active()) ++i; // the left child follows its parent
-        out.push_back(tree.sphere_centre(nodes[i], nodes[i].first));
+        out.push_back(tree.sphere_center(nodes[i], nodes[i].first));
     }
 }
 

@@ -65,7 +65,7 @@ bool inside_by_nearest_sample(const CompactTree& tree, const std::vector<uint8_t
             if (!wall.empty() && !wall[k]) continue;
             const Eigen::Vector3f normal =
                 Eigen::Vector3f(tree.nx()[k], tree.ny()[k], tree.nz()[k]).normalized();
-            const Eigen::Vector3f point = tree.sphere_centre(n, k) + n.ss_radius * normal;
+            const Eigen::Vector3f point = tree.sphere_center(n, k) + n.ss_radius * normal;
             const double d = (qf - point).norm();
             if (d >= best) continue;
             best = d;
@@ -174,7 +174,7 @@ SolidGrid SolidGrid::of_spheres(const CompactTree& tree, const std::vector<uint8
     for (const CompactNode& n : tree.nodes())
         for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k) {
             if (!is_wall(k)) continue;
-            const Eigen::Vector3d c = tree.sphere_centre(n, k).cast<double>();
+            const Eigen::Vector3d c = tree.sphere_center(n, k).cast<double>();
             box.extend(c - Eigen::Vector3d::Constant(n.ss_radius)), box.extend(c + Eigen::Vector3d::Constant(n.ss_radius));
         }
     if (box.isEmpty()) return g;
@@ -182,7 +182,7 @@ SolidGrid SolidGrid::of_spheres(const CompactTree& tree, const std::vector<uint8
     for (const CompactNode& n : tree.nodes())
         for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k) {
             if (!is_wall(k)) continue;
-            const Eigen::Vector3d c = tree.sphere_centre(n, k).cast<double>();
+            const Eigen::Vector3d c = tree.sphere_center(n, k).cast<double>();
             const double r = n.ss_radius;
             g.mark(c - Eigen::Vector3d::Constant(r), c + Eigen::Vector3d::Constant(r),
                    [&](const Eigen::Vector3d& centre, double h) {

@@ -21,7 +21,7 @@ Eigen::Vector3f QueryRun::b_node_centre(uint32_t j) const {
 
 void QueryRun::move_leaf(uint32_t j, float* x, float* y, float* z) const {
     const CompactNode& n = B.tree().nodes()[j];
-    const float* c = B.tree().centres(n);
+    const float* c = B.tree().centers(n);
     const float *bx = c, *by = c + n.count, *bz = c + 2 * n.count;
     // Four spheres at a time; the last group reads past the block into the next one (or
     // the array's padding) and writes up to 3 floats past count, which callers allow.
@@ -108,7 +108,7 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
         bx = s.moved_b.data(), by = bx + lb, bz = by + lb;
         move_leaf(j, bx, by, bz);
     }
-    const float* block_a = ta.centres(na);
+    const float* block_a = ta.centers(na);
     const float *ax = block_a, *ay = block_a + na.count, *az = block_a + 2 * na.count;
     uint32_t count_a = na.count, count_b = nb.count;
     const bool cull = o.normal_culling;

@@ -13,7 +13,7 @@ Eigen::Vector3d surface_normal(const CompactTree& t, uint32_t sphere) {
 
 Eigen::Vector3d centre(const CollisionModel& m, const Pose& p, uint32_t node, uint32_t sphere) {
     const CompactTree& t = m.tree();
-    return p.apply(m.origin() + t.sphere_centre(t.nodes()[node], sphere).cast<double>());
+    return p.apply(m.origin() + t.sphere_center(t.nodes()[node], sphere).cast<double>());
 }
 
 } // namespace

@@ -45,7 +45,7 @@ void bound(const CollisionModel& m, const TriangleMesh* mesh, Cached& c) {
     for (const CompactNode& n : t.nodes()) {
         if (n.count == 0) continue;
         for (uint32_t k = n.first; k < n.first + n.count; ++k)
-            r = std::max(r, (t.sphere_centre(n, k).cast<double>() + m.origin() - c.center).norm() + n.ss_radius);
+            r = std::max(r, (t.sphere_center(n, k).cast<double>() + m.origin() - c.center).norm() + n.ss_radius);
     }
     if (mesh)
         for (const Eigen::Vector3d& v : mesh->positions) r = std::max(r, (v - c.center).norm());

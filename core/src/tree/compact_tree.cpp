@@ -51,7 +51,7 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
         if (k < src.size() && src[k].id == right_child(src[i].id)) right[i] = uint32_t(k);
     }
     const size_t padded = total + 8;
-    centres_.assign(3 * total + 8, 0);
+    centers_.assign(3 * total + 8, 0);
     nx_.assign(padded, 0), ny_.assign(padded, 0), nz_.assign(padded, 0);
     sample_index_.assign(total, 0);
     nodes_.reserve(all.size());
@@ -72,10 +72,10 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
         if (n.active) {
             c.first = uint32_t(sphere);
             c.count = n.count;
-            float* block = centres_.data() + 3 * sphere;
+            float* block = centers_.data() + 3 * sphere;
             for (uint32_t k = 0; k < c.count; ++k) {
                 const uint32_t s = n.samples[k];
-                const Eigen::Vector3f ctr = samples.sphere_centre(s, c.ss_radius);
+                const Eigen::Vector3f ctr = samples.sphere_center(s, c.ss_radius);
                 block[k] = ctr.x(), block[c.count + k] = ctr.y(), block[2 * c.count + k] = ctr.z();
                 nx_[sphere] = to_snorm8(samples.normals[s].x());
                 ny_[sphere] = to_snorm8(samples.normals[s].y());
@@ -118,7 +118,7 @@ void CompactTree::build_node_discs() {
             for (uint32_t k = node.first; k < node.first + node.count; ++k) {
                 const Eigen::Vector3f n(nx_[k], ny_[k], nz_[k]);
                 if (!two_sided_[k] || !(n.squaredNorm() > 0)) return false; // a ball (QueryRun::shapes_touch)
-                parts.push_back({sphere_centre(node, k), n.normalized(), node.ss_radius,
+                parts.push_back({sphere_center(node, k), n.normalized(), node.ss_radius,
                                  detail::kDiscHalfThickness * node.ss_radius});
             }
             return true;
@@ -149,7 +149,7 @@ void CompactTree::build_node_discs() {
 }
 
 size_t CompactTree::memory_bytes() const {
-    return nodes_.capacity() * sizeof(CompactNode) + centres_.capacity() * sizeof(float) +
+    return nodes_.capacity() * sizeof(CompactNode) + centers_.capacity() * sizeof(float) +
            (nx_.capacity() + ny_.capacity() + nz_.capacity()) + two_sided_.capacity() +
            node_disc_.capacity() * sizeof(float) + sample_index_.capacity() * sizeof(uint32_t);
 }

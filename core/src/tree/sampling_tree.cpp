@@ -86,7 +86,7 @@ void bound_samples(TreeNode& node, const std::vector<uint32_t>& members, const S
     std::vector<float> r(members.size(), node.ss_radius);
     for (size_t i = 0; i < members.size(); ++i) {
         p[i] = samples.points[members[i]];
-        c[i] = samples.sphere_centre(members[i], node.ss_radius);
+        c[i] = samples.sphere_center(members[i], node.ss_radius);
     }
     detail::bound_run(node, c.data(), r.data(), p.data(), members.size(), hint, method);
 }
@@ -99,7 +99,7 @@ void put_spheres(const TreeNode& n, const SampleSet& samples, Eigen::Vector3f* c
     for (size_t k = 0; k < n.samples.size(); ++k) {
         const uint32_t s = n.samples[k];
         if (p) p[k] = samples.points[s];
-        c[k] = samples.sphere_centre(s, n.ss_radius);
+        c[k] = samples.sphere_center(s, n.ss_radius);
         r[k] = n.ss_radius;
     }
 }
@@ -238,14 +238,15 @@ struct BoundsPass {
 };
 
 // Appends node `id` and, depth first, the nodes below it; returns its index (kNone if missing).
-uint32_t add_subtree(SamplingTree& tree, NodeId id, NodeArray& out) {
-    TreeNode* n = tree.find_mutable(id);
-    if (!n) return NodeArray::kNone;
+uint32_t add_subtree(std::map<NodeId, TreeNode>& nodes, NodeId id, NodeArray& out) {
+    const auto it = nodes.find(id);
+    if (it == nodes.end()) return NodeArray::kNone;
+    TreeNode* n = &it->second;
     const uint32_t i = out.add(n);
     if (!n->active) {
-        const uint32_t l = add_subtree(tree, left_child(id), out);
+        const uint32_t l = add_subtree(nodes, left_child(id), out);
         out.left[i] = l;
-        const uint32_t r = add_subtree(tree, right_child(id), out);
+        const uint32_t r = add_subtree(nodes, right_child(id), out);
         out.right[i] = r;
     }
     return i;
@@ -273,14 +274,14 @@ void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod meth
 
 void SamplingTree::assign_radii(const SampleSet& samples, const RadiusRule& rule) {
     NodeArray array;
-    add_subtree(*this, root_id(), array);
+    add_subtree(nodes_, root_id(), array);
     spt::assign_radii(array, samples, rule);
 }
 
 void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method) {
     NodeArray array;
     array.node.reserve(nodes_.size()), array.left.reserve(nodes_.size()), array.right.reserve(nodes_.size());
-    add_subtree(*this, root_id(), array);
+    add_subtree(nodes_, root_id(), array);
     spt::compute_bounds(array, samples, method);
 }
 
