@@ -1,7 +1,7 @@
 // The sampling spheres of a view: ray-cast on the CPU (sphere_splat.hpp), then written into the
 // base layer with their depth by one full-view pass.
 #include "renderer_impl.hpp"
-#include "base/parallel.hpp"
+#include "spt/task_system.hpp"
 
 namespace spt::render {
 namespace {
@@ -19,7 +19,7 @@ void upload(const detail::GlFunctions& gl, GLuint texture, GLenum format, GLenum
 } // namespace
 
 void Renderer::Impl::draw_splat() {
-    splat.run(spt::detail::machine_threads());
+    splat.run(spt::hardware_threads());
     const detail::SphereSplat& s = splat;
     if (s.x0() >= s.x1()) return;
     const FrameLayers& l = layers;

@@ -1,6 +1,6 @@
 // Sampling spheres ray-cast on the CPU: the sums of the GL impostor shader they replace, per pixel.
 #include "sphere_splat.hpp"
-#include "base/parallel.hpp"
+#include "spt/task_system.hpp"
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
@@ -254,7 +254,7 @@ void SphereSplat::run(int threads) {
             i += n;
         }
     };
-    spt::detail::parallel_for(size_t(parts), parts, [&](size_t k, int) { place_part(int(k)); });
+    spt::run_parallel(parts, [&](int k) { place_part(k); });
     // Bands of rows, each drawn by one thread in queue order: every pixel sees the spheres in
     // the same order whatever the number of bands.
     const int bands = placed_.size() < 2048 ? 1 : std::clamp(threads, 1, std::max(1, height_ / 16));
@@ -266,7 +266,7 @@ void SphereSplat::run(int threads) {
         Box& b = boxes[size_t(k)];
         rows(int(int64_t(height_) * k / bands), int(int64_t(height_) * (k + 1) / bands), b.x0, b.x1, b.y0, b.y1);
     };
-    spt::detail::parallel_for(size_t(bands), bands, [&](size_t k, int) { band(int(k)); });
+    spt::run_parallel(bands, [&](int k) { band(k); });
     x0_ = width_, x1_ = 0, y0_ = height_, y1_ = 0;
     for (const Box& b : boxes)
         x0_ = std::min(x0_, b.x0), x1_ = std::max(x1_, b.x1), y0_ = std::min(y0_, b.y0), y1_ = std::max(y1_, b.y1);

@@ -1,4 +1,5 @@
 // The simulation: effect gating, determinism across threads, response depth, continuous detection.
+#include "host_task_system.hpp"
 #include "scene_fixture.hpp"
 #include "spt/error.hpp"
 #include "spt/simulation.hpp"
@@ -132,8 +133,9 @@ std::string ball_cloud(int n, unsigned seed) {
     return R"({"spt_scene": 1, "dt": 0.01, "response": {"restitution": 0.5}, "objects": [)" + objects + "]}";
 }
 
-std::vector<uint64_t> hashes(const Scene& s, const EffectSet& fx, int threads, int steps, uint64_t* collisions) {
-    Simulation sim(s, fx, threads);
+std::vector<uint64_t> hashes(const Scene& s, const EffectSet& fx, int threads, int steps, uint64_t* collisions,
+                             TaskSystem* tasks = nullptr) {
+    Simulation sim(s, fx, threads, tasks);
     std::vector<uint64_t> h;
     for (int i = 0; i < steps; ++i) {
         const StepResult& r = sim.step();
@@ -143,7 +145,8 @@ std::vector<uint64_t> hashes(const Scene& s, const EffectSet& fx, int threads, i
     return h;
 }
 
-TEST(Simulation, SameStateHashesOnEveryRunAndForEveryThreadCount) {
+// Also on a host's own threads (its jobs on them and on the stepping thread).
+TEST(Simulation, SameStateHashesOnEveryRunForEveryThreadCountAndOnAHostsTaskSystem) {
     const spt::test::SceneDir dir;
     const Scene s = scene(dir, ball_cloud(27, 3));
     const EffectSet fx = parse_effect_list("motion,gravity,contacts,depth,pairs,response,ccd", "test");
@@ -153,6 +156,10 @@ TEST(Simulation, SameStateHashesOnEveryRunAndForEveryThreadCount) {
     EXPECT_EQ(hashes(s, fx, 1, 60, &collisions), one);
     EXPECT_EQ(hashes(s, fx, 2, 60, &collisions), one);
     EXPECT_EQ(hashes(s, fx, 4, 60, &collisions), one);
+    spt::test::HostTaskSystem host(3);
+    EXPECT_EQ(hashes(s, fx, 4, 60, &collisions, &host), one);
+    EXPECT_EQ(hashes(s, fx, 2, 60, &collisions, &host), one);
+    EXPECT_GT(host.runs.load(), 0) << "the host's task system was not used";
 }
 
 // With pairs and depth both on, depth takes its contact from the pairs effect's `all` query

@@ -7,6 +7,7 @@
 #include "spt/broad_phase.hpp"
 #include "spt/query_scratch.hpp"
 #include "spt/scene.hpp"
+#include "spt/task_system.hpp"
 #include <memory>
 #include <vector>
 
@@ -53,15 +54,14 @@ struct StepResult {
 /// 64-bit FNV-1a over every pose's translation x, y, z and rotation w, x, y, z as double bits, in order.
 uint64_t state_hash(const std::vector<Pose>& poses);
 
-/// Threads worth giving a simulation on this machine: its hardware threads, at least 1.
-int hardware_threads();
-
 /// The scene in motion.
 class Simulation {
 public:
-    /// Simulates `scene` with `effects` (normally scene.effects) on `threads` threads (>= 1).
-    /// Throws Error(BadInput) if `exact` is asked of an object without a mesh.
-    Simulation(Scene scene, EffectSet effects, int threads = 1);
+    /// Simulates `scene` with `effects` (normally scene.effects), each parallel stage split into
+    /// `threads` jobs (>= 1; at most that many run at once) run on the host's `tasks` if given (it
+    /// must outlive the simulation), else on the library's pool. Throws Error(BadInput) if
+    /// `exact` is asked of an object without a mesh.
+    Simulation(Scene scene, EffectSet effects, int threads = 1, TaskSystem* tasks = nullptr);
     ~Simulation();
     Simulation(const Simulation&) = delete;
     Simulation& operator=(const Simulation&) = delete;
@@ -94,6 +94,7 @@ private:
     Scene scene_;
     EffectSet effects_;
     int threads_;
+    TaskSystem* tasks_;
     int steps_ = 0;
     std::vector<Pose> poses_, previous_, ghost_;
     std::vector<Eigen::Vector3d> velocity_, angular_;

@@ -22,6 +22,7 @@
 #include "spt/selection.hpp"
 #include "spt/simulation.hpp"
 #include "spt/split_recipe.hpp"
+#include "spt/task_system.hpp"
 #include "spt/spt_file.hpp"
 #include "spt/tree_builder.hpp"
 #include "spt/tree_cost.hpp"

@@ -1,23 +1,32 @@
 #pragma once
 // Runs f(i, worker) for i in [0, n) on up to `threads` threads. Results must be written
 // per i so that the outcome does not depend on which worker ran which i.
+#include "spt/task_system.hpp"
 #include <algorithm>
 #include <atomic>
 #include <exception>
 #include <mutex>
-#include <system_error>
 #include <thread>
-#include <vector>
 
 namespace spt::detail {
 
-/// Runs f(i, worker) for every i in [0, n) on up to `threads` threads. An exception thrown by f
-/// on any thread (out of memory, a refused input) stops the items not yet begun and is thrown
-/// again on the calling thread once every worker has stopped, as on one thread (an exception
-/// leaving a std::thread would end the process). Items start in increasing order of i (a worker
-/// takes the next when it is free), so an item may wait for an earlier one without a deadlock.
+// Calls job(w) for every w in [0, count) on the host's `tasks`, or, when null, on the library's
+// pool (oneTBB, made at the first call; parallel_pool.cpp), and returns when all have returned.
+// The calling thread runs jobs too. job must not throw.
+void run_jobs(int count, TaskSystem* tasks, const std::function<void(int)>& job);
+
+// Whether the library's pool has been made (tests: work on 1 thread never makes it).
+bool pool_started();
+
+/// Runs f(i, worker) for every i in [0, n) as min(threads, n) jobs, on the host's `tasks` if
+/// given, else on the library's pool; worker is the job's index, < min(threads, n), and a job
+/// runs one item at a time, so per-worker scratch indexed by it is never shared. An exception
+/// thrown by f (out of memory, a refused input) stops the items not yet begun and is thrown
+/// again on the calling thread once every job has returned, as on one thread. Items start in
+/// increasing order of i (a job takes the next when it is free), so an item may wait for an
+/// earlier one without a deadlock, however late a job starts.
 template <class F>
-void parallel_for(size_t n, int threads, F&& f) {
+void parallel_for(size_t n, int threads, F&& f, TaskSystem* tasks = nullptr) {
     if (threads <= 1 || n < 2) {
         for (size_t i = 0; i < n; ++i) f(i, 0);
         return;
@@ -34,20 +43,8 @@ void parallel_for(size_t n, int threads, F&& f) {
             if (!error) error = std::current_exception();
         }
     };
-    const int count = int(std::min<size_t>(size_t(threads), n));
-    std::vector<std::thread> pool;
-    pool.reserve(size_t(count)); // no allocation between starting a thread and joining it
-    // A thread that cannot be started (a process limit) leaves its share to the others: the work
-    // is taken item by item, so it all gets done, on this thread if need be.
-    for (int w = 1; w < count; ++w) {
-        try {
-            pool.emplace_back(work, w);
-        } catch (const std::system_error&) {
-            break;
-        }
-    }
-    work(0);
-    for (std::thread& t : pool) t.join();
+    // One captured pointer: kept inside std::function, no allocation a call.
+    run_jobs(int(std::min<size_t>(size_t(threads), n)), tasks, [&work](int w) { work(w); });
     if (error) std::rethrow_exception(error);
 }
 
@@ -64,7 +61,7 @@ inline int pinned_threads = 0;
 
 // Threads for work that a caller waits on (a selection, a depth map): the machine's cores.
 inline int machine_threads() {
-    return pinned_threads > 0 ? pinned_threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    return pinned_threads > 0 ? pinned_threads : hardware_threads();
 }
 
 // Pins machine_threads() to `n` while it lives (tests only: the count is global).

@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <thread>
 
 namespace spt {
 namespace {
@@ -29,8 +28,6 @@ void add(QueryCounters& to, const QueryCounters& c) {
 
 } // namespace
 
-int hardware_threads() { return int(std::max(1u, std::thread::hardware_concurrency())); }
-
 uint64_t state_hash(const std::vector<Pose>& poses) {
     uint64_t h = 0xcbf29ce484222325ull;
     for (const Pose& p : poses) {
@@ -41,8 +38,8 @@ uint64_t state_hash(const std::vector<Pose>& poses) {
     return h;
 }
 
-Simulation::Simulation(Scene scene, EffectSet effects, int threads)
-    : scene_(std::move(scene)), effects_(effects), threads_(std::max(1, threads)) {
+Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* tasks)
+    : scene_(std::move(scene)), effects_(effects), threads_(std::max(1, threads)), tasks_(tasks) {
     const bool exact = effects_.has(Effect::Exact) || scene_.level == QueryLevel::Exact;
     for (size_t i = 0; i < scene_.objects.size(); ++i) {
         const SceneObject& o = scene_.objects[i];
@@ -159,7 +156,7 @@ void Simulation::run_contacts(StepCounters& c) {
             work[k].ccd_hit = res.hit;
             work[k].toi = res.hit ? res.toi : 1.0;
             work[k].ccd_band = 2e-4 * model(p.b).diagonal(); // twice first_contact's default tolerance
-        });
+        }, tasks_);
         // Dynamic objects stop at their earliest time of impact; paths and static objects keep their poses.
         std::vector<double> stop(n, 1.0);
         for (size_t k = 0; k < cand.size(); ++k) {
@@ -196,7 +193,7 @@ void Simulation::run_contacts(StepCounters& c) {
             work[k].pairs = s.pairs();
             work[k].all_collide = all.collide, work[k].all_point = all.deepest.point;
         }
-    });
+    }, tasks_);
     c.ns_narrow = ns_since(t0);
 
     std::vector<size_t> colliding;
@@ -231,7 +228,7 @@ void Simulation::run_contacts(StepCounters& c) {
                 else // taken from the scratch, which clears what it gets back at its next query
                     start_pairs_[j].swap(s.buffers().pairs);
             }
-        });
+        }, tasks_);
         c.depth_queries = colliding.size();
         c.ns_depth = ns_since(t0);
     }

@@ -59,7 +59,7 @@ void Simulation::respond(StepCounters& c) {
             throw;
         }
         done[k].store(1, std::memory_order_release);
-    });
+    }, tasks_);
     for (uint8_t x : acted) c.responses += x;
     c.ns_response = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
 }
