@@ -3,6 +3,7 @@
 #include "mesh/hard_shapes.hpp"
 #include "sampling/surface_samples.hpp"
 #include "spt/convert.hpp"
+#include "host_task_system.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
 
@@ -42,6 +43,33 @@ TEST(ConvertThreads, AutomaticToleranceAndOpenPartsGiveTheSameFileOnEveryThreadC
     TriangleMesh box = make_open_box(Eigen::Vector3d(1, 0.5, 0.7), 12);
     box.name = "open box";
     expect_same_bytes_on_every_thread_count(box);
+}
+
+// A host's task system (ConvertOptions::tasks, ImportOptions::tasks) runs the sampling, the
+// tree's build and its bounds, and the mesh's preparation, with the same bytes as one thread.
+TEST(ConvertThreads, AHostsTaskSystemRunsTheImportAndConversionWithTheSameFile) {
+    const meshgen::RawMesh raw = meshgen::torus(1, 0.35, 400, 200); // enough for parallel subtrees and bounds
+    ImportOptions one_import;
+    one_import.threads = 1;
+    const TriangleMesh one_mesh = prepare_mesh("torus", raw.positions, raw.triangles, one_import).mesh;
+    test::HostTaskSystem host(3);
+    ImportOptions host_import;
+    host_import.threads = 3;
+    host_import.tasks = &host;
+    const TriangleMesh host_mesh = prepare_mesh("torus", raw.positions, raw.triangles, host_import).mesh;
+    EXPECT_EQ(host_mesh.positions, one_mesh.positions);
+    EXPECT_EQ(host_mesh.triangles, one_mesh.triangles);
+    const int after_import = host.runs.load();
+    EXPECT_GT(after_import, 0) << "the mesh was prepared without the host";
+    for (const std::optional<double> tolerance : {std::optional<double>{}, std::optional<double>(0.01)}) {
+        ConvertOptions on_host;
+        on_host.threads = 4;
+        on_host.tolerance = tolerance;
+        on_host.tasks = &host;
+        const int before = host.runs.load();
+        EXPECT_EQ(encode_spt(make_document(one_mesh, on_host)), converted(one_mesh, 1, tolerance));
+        EXPECT_GT(host.runs.load(), before + 2) << "sampling and tree building ran without the host";
+    }
 }
 
 TEST(ConvertThreads, FaceSamplesOfEveryFaceComeInFaceOrderWhateverTheThreads) {

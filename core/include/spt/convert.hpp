@@ -30,6 +30,9 @@ struct ConvertOptions {
     /// Threads that sample vertices and faces (0: the machine's cores). The document is the
     /// same, byte for byte, whatever the count.
     int threads = 0;
+    /// A host's threads for the sampling and the tree (spt/task_system.hpp); null: the library's
+    /// pool. Overrides build.tasks.
+    TaskSystem* tasks = nullptr;
     /// Another thread sets it to stop the conversion: make_document looks at it as each stage
     /// starts, every 4,096 vertices or faces while sampling, and through the tree builder
     /// (BuildOptions::cancel), and throws Cancelled. Null: never stops.

@@ -2,6 +2,7 @@
 /// Triangle meshes as spt uses them: welded, indexed, consistently wound,
 /// with angle-weighted vertex normals. Units are the model's own; the frame
 /// is the file's root frame with every node transform applied.
+#include "spt/task_system.hpp"
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
@@ -75,6 +76,7 @@ struct ImportOptions {
     double weld_tolerance = 1e-6; ///< weld distance, as a fraction of the bounding-box diagonal
     bool fix_orientation = true;  ///< re-wind inconsistent faces, turn inside-out closed parts around
     int threads = 0;              ///< threads to prepare the mesh on (0: the machine's cores); the mesh is the same on any count
+    TaskSystem* tasks = nullptr;  ///< a host's threads to run that work on (spt/task_system.hpp); null: the library's pool
     /// Another thread sets it to stop the import: assimp's reading of the file then ends within
     /// one buffered read (a file read whole is still parsed to its end), and preparing the mesh
     /// looks at it as it welds and after each step; throws Cancelled. Null: never stops.

@@ -1,6 +1,7 @@
 #pragma once
 /// Automatic construction of sampling trees (the paper's future work, §4).
 #include "spt/sampling_tree.hpp"
+#include "spt/task_system.hpp"
 #include <atomic>
 
 namespace spt {
@@ -22,6 +23,8 @@ struct BuildOptions {
     bool radius_coherent = false;
     /// Threads the builder may use (1: the calling thread only); the tree is the same on any count.
     int threads = 1;
+    /// A host's threads to run that work on (spt/task_system.hpp); null: the library's pool.
+    TaskSystem* tasks = nullptr;
     /// Another thread sets it to stop the build: looked at as each node of 1,024 samples or
     /// more is split and before the radii and the bounds; throws Cancelled. Null: never stops.
     const std::atomic<bool>* cancel = nullptr;

@@ -97,10 +97,10 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     detail::parallel_for(2, threads, [&](size_t k, int) {
         if (k == 0) limiter_made = std::make_unique<const RadiusLimiter>(mesh, protrusion, two_sided_radius);
         else info = info_of(mesh);
-    });
+    }, options.tasks);
     const RadiusLimiter& limiter = *limiter_made;
     stage(options, mesh, nullptr);
-    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius, threads, options.cancel);
+    const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius, threads, options.cancel, options.tasks);
     if (vertex_samples.size() == 0) throw_bad_input(mesh.name, "no vertex has a computable normal; nothing to sample");
     st.vertex_samples = vertex_samples.size();
     const RadiusRule& rule = options.build.radius;
@@ -114,6 +114,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
         t0 = Clock::now();
         BuildOptions build = options.build;
         build.threads = threads;
+        if (options.tasks) build.tasks = options.tasks;
         if (options.cancel) build.cancel = options.cancel;
         doc.trees.push_back(build_tree(options.tree_name, doc.samples, build));
         st.build_seconds = seconds_since(t0);
@@ -158,7 +159,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     stage(options, mesh, "sampling faces");
     try {
         s.append(face_samples(limiter, s.origin, eps, rule, 1.0f / kRadiusClassRatio, threads, options.cancel,
-                              kMaxSamples - s.size()));
+                              kMaxSamples - s.size(), options.tasks));
     } catch (const TooManySamples&) {
         too_many("more than " + std::to_string(kMaxSamples));
     }
@@ -169,6 +170,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     BuildOptions coherent = options.build;
     coherent.radius_coherent = true;
     coherent.threads = threads;
+    if (options.tasks) coherent.tasks = options.tasks;
     if (options.cancel) coherent.cancel = options.cancel;
     SamplingTree tree = build_tree(options.tree_name, s, coherent);
     st.build_seconds = seconds_since(t0);

@@ -328,7 +328,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
             if (k == 0) topology({}); // the longest first
             else if (k == 1) compute_normals(m, r, area_eps, {});
             else copy_of = find_duplicates(m, r);
-        });
+        }, options.tasks);
         mark_copies();
         if (r.duplicate_faces > 0) topology(m.is_copy);
     } else {

@@ -39,7 +39,7 @@ constexpr size_t kSampleRun = 8192;
 
 // fill(first, last, out) samples items [first, last) into `out` (its origin set); on `threads`.
 template <class Fill>
-SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, Fill&& fill) {
+SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, TaskSystem* tasks, Fill&& fill) {
     const size_t runs = (n + kSampleRun - 1) / kSampleRun;
     if (threads <= 1 || runs <= 1) { // the same samples, without copying them from the runs
         SampleSet s;
@@ -51,7 +51,7 @@ SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, F
     detail::parallel_for(runs, threads, [&](size_t k, int) {
         parts[k].origin = origin;
         fill(k * kSampleRun, std::min(n, (k + 1) * kSampleRun), parts[k]);
-    });
+    }, tasks);
     SampleSet s;
     s.origin = origin;
     size_t total = 0;
@@ -68,7 +68,7 @@ SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, F
 } // namespace
 
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule,
-                          int threads, const std::atomic<bool>* cancel) {
+                          int threads, const std::atomic<bool>* cancel, TaskSystem* tasks) {
     const size_t n = mesh.positions.size();
     std::vector<double> edge_sum(n, 0);
     std::vector<uint32_t> edge_count(n, 0);
@@ -80,7 +80,7 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
             edge_sum[a] += len, edge_sum[b] += len;
             ++edge_count[a], ++edge_count[b];
         }
-    return sample_in_runs(n, local_origin(mesh), threads, [&](size_t first, size_t last, SampleSet& s) {
+    return sample_in_runs(n, local_origin(mesh), threads, tasks, [&](size_t first, size_t last, SampleSet& s) {
         for (auto v = uint32_t(first); v < last; ++v) {
             if ((v & 4095u) == 0) detail::stop_if_cancelled(cancel, "converting", mesh.name);
             if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
@@ -208,10 +208,11 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
 }
 
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
-                       float radius_factor, int threads, const std::atomic<bool>* cancel, size_t max_samples) {
+                       float radius_factor, int threads, const std::atomic<bool>* cancel, size_t max_samples,
+                       TaskSystem* tasks) {
     const size_t faces = limiter.mesh().triangles.size();
     std::atomic<size_t> made{0};
-    return sample_in_runs(faces, origin, threads, [&](size_t first, size_t last, SampleSet& s) {
+    return sample_in_runs(faces, origin, threads, tasks, [&](size_t first, size_t last, SampleSet& s) {
         for (auto f = uint32_t(first); f < last; ++f) {
             if ((f & 4095u) == 0 && detail::cancel_requested(cancel)) return;
             if (limiter.mesh().copies_earlier_face(f)) continue; // its samples would be its face's again

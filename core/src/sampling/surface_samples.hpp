@@ -26,7 +26,7 @@ float search_radius(const RadiusRule& rule, float spacing, bool two_sided);
 /// On up to `threads` threads, with the same samples as on one. Throws Cancelled once `cancel`
 /// (may be null) is set: it is looked at every 4,096 vertices.
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {},
-                          int threads = 1, const std::atomic<bool>* cancel = nullptr);
+                          int threads = 1, const std::atomic<bool>* cancel = nullptr, TaskSystem* tasks = nullptr);
 
 /// Two-sided spheres (open parts) must hold every point of their face, not merely come within
 /// a tolerance of it, so that two open surfaces that cross always have overlapping spheres:
@@ -56,7 +56,7 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
 /// when its own samples would take the count past it; threads running at once may each reach it).
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
                        float radius_factor, int threads, const std::atomic<bool>* cancel = nullptr,
-                       size_t max_samples = SIZE_MAX);
+                       size_t max_samples = SIZE_MAX, TaskSystem* tasks = nullptr);
 /// A lower bound on the number of samples face_samples(limiter, ..., eps, rule, radius_factor)
 /// makes, from each face's area and the largest sub-triangle its stopping rule can accept; O(faces).
 double least_face_samples(const RadiusLimiter& limiter, double eps, const RadiusRule& rule, float radius_factor);

@@ -31,7 +31,8 @@ void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& r
 
 /// Sets every node's bounding sphere, leaves first (SamplingTree::compute_bounds's rule).
 /// Threads: up to this many subtrees are bounded at once; the result is the same on any count.
-void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method, int threads = 1);
+void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method, int threads = 1,
+                    TaskSystem* tasks = nullptr);
 
 namespace detail {
 

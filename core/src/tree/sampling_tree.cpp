@@ -118,6 +118,7 @@ struct BoundsPass {
     std::vector<uint32_t> begin, end; // per node: its run of spheres
     std::vector<uint8_t> equal;       // per node: every radius of its run is the first
     int parallel_depth = 0;           // nodes this shallow bound their two subtrees at once
+    TaskSystem* tasks = nullptr;      // a host's threads for that, or the library's pool
 
     // Subtrees of at least this many spheres may be bounded on a thread of their own.
     static constexpr uint32_t kParallelRun = 1 << 15;
@@ -169,7 +170,7 @@ struct BoundsPass {
             const bool both = child[0] != NodeArray::kNone && child[1] != NodeArray::kNone;
             if (depth < parallel_depth && both &&
                 std::min(end[child[0]] - begin[child[0]], end[child[1]] - begin[child[1]]) >= kParallelRun)
-                detail::parallel_for(2, 2, [&](size_t k, int) { sub[k] = visit(child[k], depth + 1); });
+                detail::parallel_for(2, 2, [&](size_t k, int) { sub[k] = visit(child[k], depth + 1); }, tasks);
             else
                 for (int k = 0; k < 2; ++k)
                     if (child[k] != NodeArray::kNone) sub[k] = visit(child[k], depth + 1);
@@ -263,11 +264,12 @@ void assign_radii(NodeArray& tree, const SampleSet& samples, const RadiusRule& r
     }
 }
 
-void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method, int threads) {
+void compute_bounds(NodeArray& tree, const SampleSet& samples, BoundsMethod method, int threads, TaskSystem* tasks) {
     if (tree.node.empty()) return;
     BoundsPass pass{tree, samples, method, {}, {}, {}, std::vector<uint32_t>(tree.node.size()),
                     std::vector<uint32_t>(tree.node.size()), std::vector<uint8_t>(tree.node.size())};
     pass.parallel_depth = detail::parallel_levels(threads);
+    pass.tasks = tasks;
     pass.place_runs();
     pass.visit(0, 0);
 }

@@ -119,7 +119,7 @@ struct Builder {
             detail::parallel_for(2, 2, [&](size_t k, int) {
                 if (k == 0) build(b, mid, left_child(id), left_box);
                 else right.build(mid, e, right_child(id), right_box);
-            });
+            }, options.tasks);
             const auto base = uint32_t(out.size());
             right_of[at] = base;
             for (uint32_t r : right.right_of) right_of.push_back(r == NodeArray::kNone ? r : r + base);
@@ -321,7 +321,7 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
     NodeArray array = builder.links();
     assign_radii(array, samples, options.radius);
     detail::stop_if_cancelled(options.cancel, "building", "the tree");
-    compute_bounds(array, samples, options.bounds, options.threads);
+    compute_bounds(array, samples, options.bounds, options.threads, options.tasks);
     return SamplingTree(std::move(name), builder.in_id_order());
 }
 
