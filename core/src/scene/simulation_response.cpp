@@ -92,9 +92,10 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     std::vector<SpherePair> own; // the scratch's buffer, taken for the two backtracks and given back
     if (from_pairs && unmoved && !start_pairs.empty()) {
         pairs = &start_pairs;
-    } else if (from_pairs && !still) {
-        // Unless the overlap is deep: its pairs grow with the volume the shells share, and two
-        // first looks that keep only the largest exit root cost far less than listing them.
+    } else if (from_pairs && !still && !(unmoved && pc.deep)) {
+        // Unless the overlap is deep (as depth found it at these poses, or found here): its pairs
+        // grow with the volume the shells share, and two first looks that keep only the largest
+        // exit root cost far less than listing them.
         bool deep = false;
         collide_all_unless_deep(ma, poses_[a], mb, poses_[b], q, scratch, deep);
         if (!deep) {
