@@ -34,6 +34,30 @@ RawMesh torus(double R, double r, int nu, int nv) { return raw(make_torus(R, r, 
 
 RawMesh box(double sx, double sy, double sz, int n) { return raw(make_box({sx / 2, sy / 2, sz / 2}, n)); }
 
+RawMesh uv_sphere(double r, int slices, int stacks) {
+    RawMesh m;
+    m.positions.emplace_back(0, 0, r); // north pole, then the rings, then the south pole
+    for (int j = 1; j < stacks; ++j) {
+        const double v = kPi * j / stacks;
+        for (int i = 0; i < slices; ++i) {
+            const double u = 2 * kPi * i / slices;
+            m.positions.emplace_back(r * std::sin(v) * std::cos(u), r * std::sin(v) * std::sin(u), r * std::cos(v));
+        }
+    }
+    m.positions.emplace_back(0, 0, -r);
+    const auto south = uint32_t(m.positions.size() - 1);
+    auto ring = [&](int j, int i) { return uint32_t(1 + (j - 1) * slices + (i + slices) % slices); };
+    for (int i = 0; i < slices; ++i) {
+        m.triangles.push_back({0, ring(1, i), ring(1, i + 1)});
+        for (int j = 1; j + 1 < stacks; ++j) {
+            m.triangles.push_back({ring(j, i), ring(j + 1, i), ring(j + 1, i + 1)});
+            m.triangles.push_back({ring(j, i), ring(j + 1, i + 1), ring(j, i + 1)});
+        }
+        m.triangles.push_back({south, ring(stacks - 1, i + 1), ring(stacks - 1, i)});
+    }
+    return m;
+}
+
 RawMesh icosphere(double r, int level) {
     const double t = (1 + std::sqrt(5.0)) / 2;
     RawMesh m;

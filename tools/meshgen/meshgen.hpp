@@ -22,6 +22,9 @@ RawMesh torus(double R, double r, int nu, int nv);
 RawMesh box(double sx, double sy, double sz, int n = 1);
 /// Sphere of radius r from an icosahedron subdivided `level` times.
 RawMesh icosphere(double r, int level);
+/// Sphere of radius r by longitude and latitude: `slices` around +z, `stacks` from pole to pole,
+/// 2 * slices * (stacks - 1) triangles (16 x 16: the 480-triangle ball of issue 37's scenes).
+RawMesh uv_sphere(double r, int slices, int stacks);
 /// Cylinder along +z from z=0 to z=h, radius r, `seg` sides, flat caps (sharp edges).
 RawMesh cylinder(double r, double h, int seg);
 /// A standing figure built from primitives (body, head, arms, legs, feet); y-up, height ~1.74, feet at y=0.

@@ -37,6 +37,9 @@ struct PairContact {
     double depth = 0;       ///< deepest sphere penetration, model units (0: touching within the ccd tolerance)
     Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< world frame, middle of the deepest overlap
     Eigen::Vector3d normal = Eigen::Vector3d::UnitX(); ///< world frame, unit, from a towards b
+    /// The overlap is deep (two spheres overlap by more than half their radii's sum: surfaces cross): depth, point
+    /// and normal come from the deepest pair and its two active nodes, not every pair (docs/scenes.md)
+    bool deep = false;
     bool has_toi = false;   ///< toi is set (effect ccd)
     double toi = 1;         ///< time of impact as a fraction of the step, [0, 1]
     std::vector<SpherePair> pairs; ///< every overlapping sphere pair (effect pairs), spheres of a's and b's trees

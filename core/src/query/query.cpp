@@ -182,6 +182,10 @@ void QueryRun::run() {
             if (sphere_leaf_pair(i, j, ca)) {
                 res.collide = true;
                 if (any) return;
+                if (stop_when_deep && leaf_deep) { // the caller takes the deepest-pair route instead
+                    stopped_deep = true;
+                    return;
+                }
             }
             continue;
         }
@@ -276,16 +280,22 @@ QueryRun::QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose&
     prepare_scratch(s, a, b, exact);
 }
 
-QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
-                             const QueryOptions& options, QueryScratch& scratch) {
+namespace {
+
+// collide_relative; with `deep` (mode all, not exact) the walk stops at the first leaf pair
+// holding a deep pair and says so there.
+QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                           const QueryOptions& options, QueryScratch& scratch, bool* deep) {
     QueryRun run(a, b, b_in_a, options, scratch);
+    run.stop_when_deep = deep != nullptr;
     if (run.f.apart) { // the models cannot meet: one bound test, decided in double
         run.res.counters.bound_tests = 1;
         return run.res;
     }
     if (options.level != QueryLevel::Exact) {
         run.run();
-        run.check_containment();
+        if (deep) *deep = run.stopped_deep;
+        if (!run.stopped_deep) run.check_containment();
     } else {
         // Triangles decide; at deepest the contact then comes from the sampling spheres.
         run.run_triangles();
@@ -297,6 +307,35 @@ QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, c
         }
     }
     return run.res;
+}
+
+// A query at world poses: B's pose relative to A's in double, the contact back in the world.
+QueryResult world_query(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
+                        const QueryOptions& options, QueryScratch& scratch, bool* deep) {
+    check_pose(pose_a, "pose of A");
+    check_pose(pose_b, "pose of B");
+    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
+    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
+    QueryResult r = relative_query(a, b, relative_pose(ua, ub), options, scratch, deep);
+    r.deepest.point = ua.apply(r.deepest.point);
+    r.deepest.normal = ua.rotate(r.deepest.normal);
+    return r;
+}
+
+} // namespace
+
+QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                             const QueryOptions& options, QueryScratch& scratch) {
+    return relative_query(a, b, b_in_a, options, scratch, nullptr);
+}
+
+QueryResult collide_all_unless_deep(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,
+                                    const Pose& pose_b, const QueryOptions& options, QueryScratch& scratch,
+                                    bool& deep) {
+    QueryOptions all = options;
+    all.mode = QueryMode::All;
+    deep = false;
+    return world_query(a, pose_a, b, pose_b, all, scratch, all.level == QueryLevel::Spheres ? &deep : nullptr);
 }
 
 QueryResult collide_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
@@ -317,14 +356,7 @@ QueryResult collide_exit(const CollisionModel& a, const CollisionModel& b, const
 
 QueryResult collide(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                     const QueryOptions& options, QueryScratch& scratch) {
-    check_pose(pose_a, "pose of A");
-    check_pose(pose_b, "pose of B");
-    const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
-    const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
-    QueryResult r = collide_relative(a, b, relative_pose(ua, ub), options, scratch);
-    r.deepest.point = ua.apply(r.deepest.point);
-    r.deepest.normal = ua.rotate(r.deepest.normal);
-    return r;
+    return world_query(a, pose_a, b, pose_b, options, scratch, nullptr);
 }
 
 QueryScratch::QueryScratch() : b_(std::make_unique<detail::ScratchBuffers>()) {}

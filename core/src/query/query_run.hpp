@@ -95,6 +95,15 @@ inline void keep_exit(ExitSearch& e, double root, double reach) {
 QueryResult collide_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                          const QueryOptions& options, detail::ExitSearch& search, QueryScratch& scratch);
 
+// Mode all at level spheres (world poses, as collide) that gives up at the first leaf pair whose
+// overlapping spheres hold a deep pair, overlapping by more than half its reach (r_a + r_b, grown by
+// inflate), so that the surfaces cross there rather than press (docs/scenes.md, "Deep overlaps"). Then `deep` is set and the
+// scratch holds only the pairs found before; otherwise the answer and pairs are collide's, bit for
+// bit. Other levels: collide's mode all, `deep` false.
+QueryResult collide_all_unless_deep(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,
+                                    const Pose& pose_b, const QueryOptions& options, QueryScratch& scratch,
+                                    bool& deep);
+
 // Grows the scratch for this pair of models and starts a new epoch of lazy stamps.
 void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const CollisionModel& b, bool exact);
 
@@ -151,6 +160,9 @@ struct QueryRun {
     bool exact;
     bool have_best = false;
     bool roots_overlap = false; // set by the walks: containment is possible only then
+    bool stop_when_deep = false; // collide_all_unless_deep: the walk ends at a deep leaf pair...
+    bool stopped_deep = false;   // ...and says so here
+    bool leaf_deep = false;      // sphere_leaf_pair (mode all): it recorded a deep pair
     struct {
         uint32_t a, b;
         bool meet, valid;

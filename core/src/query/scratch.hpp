@@ -78,6 +78,7 @@ struct ScratchBuffers {
     std::vector<SpherePair> pairs;
     std::vector<TrianglePair> tri_pairs;
     uint32_t epoch = 0;
+    uint32_t deepest_node_a = 0, deepest_node_b = 0; // active nodes of the last deepest contact
     SphereMemo<Eigen::Vector3d> memo_b;           // a per-pair-list value of B's spheres
     SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
 };

@@ -1,5 +1,7 @@
-// Depth, contact point and contact normal of a colliding pair, from one `all` query.
+// Depth, contact point and contact normal of a colliding pair: from one `all` query, or for a deep
+// overlap from the deepest pair and its two active nodes.
 #include "scene/pair_work.hpp"
+#include "query/query_run.hpp"
 #include "query/scratch.hpp"
 #include <algorithm>
 #include <cmath>
@@ -51,24 +53,12 @@ Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const Co
     return len > 1e-12 ? Eigen::Vector3d(n / len) : fallback;
 }
 
-void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
-                     QueryLevel level, double band, bool a_dynamic, bool b_dynamic, PairWork& w,
-                     QueryScratch& scratch) {
-    QueryOptions q;
-    q.level = level;
-    q.mode = QueryMode::All; // the deepest pair is among them, and the normal needs them all
-    q.inflate = float(band);
-    const QueryResult r = collide(a, pa, b, pb, q, scratch);
-    w.qc.node_pairs += r.counters.node_pairs, w.qc.bound_tests += r.counters.bound_tests;
-    w.qc.sphere_tests += r.counters.sphere_tests, w.qc.triangle_tests += r.counters.triangle_tests;
-    contact_from_pairs(a, pa, b, pb, level, band, a_dynamic, b_dynamic, scratch.pairs(), r.collide, r.deepest.point, w,
-                       scratch);
-}
+namespace {
 
-void contact_from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
-                        QueryLevel level, double band, bool a_dynamic, bool b_dynamic,
-                        const std::vector<SpherePair>& pairs, bool collide, const Eigen::Vector3d& point, PairWork& w,
-                        QueryScratch& scratch) {
+// contact_from_pairs, the pairs known to hold no deep one.
+void from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb, QueryLevel level,
+                double band, bool a_dynamic, bool b_dynamic, const std::vector<SpherePair>& pairs, bool collide,
+                const Eigen::Vector3d& point, PairWork& w, QueryScratch& scratch) {
     if (pairs.empty()) {
         // Triangles crossing where no spheres overlap (level exact), or one object inside the
         // other (containment: the contained anchor is the point): no sphere depth.
@@ -97,6 +87,88 @@ void contact_from_pairs(const CollisionModel& a, const Pose& pa, const Collision
     const double ra = a.tree().nodes()[best->node_a].ss_radius;
     w.point = ca + line * (ra - 0.5 * double(best->depth)); // middle of the overlap
     w.normal = contact_normal(a, pa, b, pb, pairs, line, a_dynamic, b_dynamic, scratch);
+}
+
+
+// Whether a pair of `pairs` is deep, deeper than half its reach (grown by `band`), as the
+// walk of collide_all_unless_deep tells it.
+bool holds_deep_pair(const CollisionModel& a, const CollisionModel& b, const std::vector<SpherePair>& pairs,
+                     double band) {
+    for (const SpherePair& p : pairs) {
+        const float ra = a.tree().nodes()[p.node_a].ss_radius, rb = b.tree().nodes()[p.node_b].ss_radius;
+        const float inner = 0.5f * p.reach, dist = p.reach - p.depth;
+        if (dist < inner) return true;
+    }
+    return false;
+}
+
+// Into `pairs`: the overlapping sphere pairs of active nodes node_a and node_b (spheres grown by
+// `inflate`), with their depths from the world centres; at most a leaf's spheres squared.
+void leaf_pair(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb, uint32_t node_a,
+               uint32_t node_b, float inflate, std::vector<SpherePair>& pairs) {
+    const CompactNode &na = a.tree().nodes()[node_a], &nb = b.tree().nodes()[node_b];
+    const float reach = na.ss_radius + nb.ss_radius + inflate;
+    pairs.clear();
+    for (uint32_t i = na.first; i < na.first + na.count; ++i) {
+        const Eigen::Vector3d ca = centre(a, pa, node_a, i);
+        for (uint32_t j = nb.first; j < nb.first + nb.count; ++j) {
+            const double depth = double(reach) - (centre(b, pb, node_b, j) - ca).norm();
+            if (depth > 0) pairs.push_back({i, j, node_a, node_b, float(depth), reach});
+        }
+    }
+}
+
+// Deep overlaps (a deep leaf pair: surfaces that cross rather than press): the deepest pair by
+// branch and bound, and the normal of the overlapping pairs of its own two active nodes, instead of
+// every overlapping pair, whose number grows with the volume the two shells share (docs/scenes.md,
+// "Deep overlaps").
+void deep_contact(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
+                  const QueryOptions& all, bool a_dynamic, bool b_dynamic, PairWork& w, QueryScratch& scratch) {
+    QueryOptions q = all;
+    q.mode = QueryMode::Deepest;
+    const QueryResult r = collide(a, pa, b, pb, q, scratch);
+    w.qc.node_pairs += r.counters.node_pairs, w.qc.bound_tests += r.counters.bound_tests;
+    w.qc.sphere_tests += r.counters.sphere_tests;
+    detail::ScratchBuffers& s = scratch.buffers();
+    const uint32_t node_a = s.deepest_node_a, node_b = s.deepest_node_b;
+    w.depth = std::max(0.0, r.deepest.depth - double(q.inflate));
+    const Eigen::Vector3d ca = centre(a, pa, node_a, r.deepest.a), cb = centre(b, pb, node_b, r.deepest.b);
+    const Eigen::Vector3d line = (cb - ca).norm() > 0 ? Eigen::Vector3d((cb - ca).normalized()) : Eigen::Vector3d::UnitX();
+    const double ra = a.tree().nodes()[node_a].ss_radius;
+    w.point = ca + line * (ra - 0.5 * r.deepest.depth); // middle of the overlap, as contact_from_pairs
+    leaf_pair(a, pa, b, pb, node_a, node_b, q.inflate, s.pairs); // the scratch's list: no allocation a step
+    w.normal = contact_normal(a, pa, b, pb, s.pairs, line, a_dynamic, b_dynamic, scratch);
+}
+
+} // namespace
+
+void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
+                     QueryLevel level, double band, bool a_dynamic, bool b_dynamic, PairWork& w,
+                     QueryScratch& scratch) {
+    QueryOptions q;
+    q.level = level;
+    q.inflate = float(band);
+    // The deepest pair is among every overlapping pair, and the normal needs them all, unless the
+    // overlap is deep.
+    bool deep = false;
+    const QueryResult r = collide_all_unless_deep(a, pa, b, pb, q, scratch, deep);
+    w.qc.node_pairs += r.counters.node_pairs, w.qc.bound_tests += r.counters.bound_tests;
+    w.qc.sphere_tests += r.counters.sphere_tests, w.qc.triangle_tests += r.counters.triangle_tests;
+    w.deep = deep;
+    if (deep) return deep_contact(a, pa, b, pb, q, a_dynamic, b_dynamic, w, scratch);
+    from_pairs(a, pa, b, pb, level, band, a_dynamic, b_dynamic, scratch.pairs(), r.collide, r.deepest.point, w, scratch);
+}
+
+void contact_from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
+                        QueryLevel level, double band, bool a_dynamic, bool b_dynamic,
+                        const std::vector<SpherePair>& pairs, bool collide, const Eigen::Vector3d& point, PairWork& w,
+                        QueryScratch& scratch) {
+    w.deep = level == QueryLevel::Spheres && holds_deep_pair(a, b, pairs, band);
+    if (!w.deep) return from_pairs(a, pa, b, pb, level, band, a_dynamic, b_dynamic, pairs, collide, point, w, scratch);
+    QueryOptions q;
+    q.level = level;
+    q.inflate = float(band);
+    deep_contact(a, pa, b, pb, q, a_dynamic, b_dynamic, w, scratch);
 }
 
 } // namespace spt::detail

@@ -14,11 +14,14 @@ struct PairWork {
     double depth = 0;
     Eigen::Vector3d point = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitX();
     std::vector<SpherePair> pairs;
+    bool deep = false; // depth took the deep-overlap route: `pairs` and the scratch's pairs are not every pair
     bool all_collide = false;                           // the pairs effect's `all` query: its answer
     Eigen::Vector3d all_point = Eigen::Vector3d::Zero(); // and its contact (a containment's anchor)
 };
 
-/// Deepest sphere pair of A and B (world poses) at `level`, spheres grown by `band` (0 for a
+/// Deepest sphere pair of A and B (world poses) at `level`, spheres grown by `band`; for a deep
+/// overlap (w.deep: surfaces crossing) by branch and bound, with the normal of that pair's two
+/// active nodes (docs/scenes.md, "Deep overlaps"), else from every overlapping pair; (0 for a
 /// colliding pair; a ccd hit that stopped short of contact grows them to find where it touches).
 /// Sets w.depth (minus the band, at least 0), w.point and w.normal (contact_normal), adds counters.
 /// `*_dynamic`: the object moves by velocities (contact_normal's a_moves, b_moves).

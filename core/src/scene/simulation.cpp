@@ -222,7 +222,8 @@ void Simulation::run_contacts(StepCounters& c) {
             else
                 detail::deepest_contact(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
                                         dynamic(p.a), dynamic(p.b), work[k], s);
-            if (keep_pairs && band == 0 && (dynamic(p.a) || dynamic(p.b))) { // a response moves one of them
+            // A deep overlap's pairs are not all of them: its backtrack makes its own first look.
+            if (keep_pairs && band == 0 && !work[k].deep && (dynamic(p.a) || dynamic(p.b))) { // a response moves one of them
                 if (reuse)
                     start_pairs_[j].assign(work[k].pairs.begin(), work[k].pairs.end());
                 else // taken from the scratch, which clears what it gets back at its next query
@@ -242,7 +243,8 @@ void Simulation::run_contacts(StepCounters& c) {
         PairContact pc;
         pc.a = cand[k].a, pc.b = cand[k].b;
         pc.has_depth = effects_.has(Effect::Depth);
-        if (pc.has_depth) pc.depth = work[k].depth, pc.point = work[k].point, pc.normal = work[k].normal;
+        if (pc.has_depth)
+            pc.depth = work[k].depth, pc.point = work[k].point, pc.normal = work[k].normal, pc.deep = work[k].deep;
         pc.has_toi = ccd; // a pair that did not move this step was in contact from its start
         pc.toi = work[k].ccd_ran ? work[k].toi : 0.0;
         pc.pairs = std::move(work[k].pairs);

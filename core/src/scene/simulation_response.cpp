@@ -1,6 +1,7 @@
 // The kinematic response (paper §3-4-3): colliding pairs moved back along their relative
 // motion by the scene's rule, velocities reflected about the contact normal. Not a solver.
 #include "query/backtrack_from.hpp"
+#include "query/query_run.hpp"
 #include "query/scratch.hpp"
 #include "base/parallel.hpp"
 #include "scene/same_pose.hpp"
@@ -91,12 +92,16 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     std::vector<SpherePair> own; // the scratch's buffer, taken for the two backtracks and given back
     if (from_pairs && unmoved && !start_pairs.empty()) {
         pairs = &start_pairs;
-    } else if (from_pairs && !still) {
-        QueryOptions all = q;
-        all.mode = QueryMode::All;
-        collide(ma, poses_[a], mb, poses_[b], all, scratch);
-        own.swap(scratch.buffers().pairs);
-        pairs = &own;
+    } else if (from_pairs && !still && !(unmoved && pc.deep)) {
+        // Unless the overlap is deep (as depth found it at these poses, or found here): its pairs
+        // grow with the volume the shells share, and two first looks that keep only the largest
+        // exit root cost far less than listing them.
+        bool deep = false;
+        collide_all_unless_deep(ma, poses_[a], mb, poses_[b], q, scratch, deep);
+        if (!deep) {
+            own.swap(scratch.buffers().pairs);
+            pairs = &own;
+        }
     }
     auto back_along = [&](const Eigen::Vector3d& m, double limit) {
         return pairs && !pairs->empty()

@@ -1,0 +1,123 @@
+// Deep overlaps: two 480-triangle balls (default conversion, 16,562 samples each) crossing by up
+// to half their radius. The deepest pair comes from branch and bound, the backtrack from looks
+// that keep only the largest exit root, and neither lists every overlapping pair.
+#include "spt/convert.hpp"
+#include "spt/query.hpp"
+#include "spt/response.hpp"
+#include "meshgen.hpp"
+#include "query/backtrack_from.hpp"
+#include "query/query_run.hpp"
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace spt;
+
+const CollisionModel& ball() {
+    static const TriangleMesh mesh = meshgen::prepare(meshgen::uv_sphere(0.5, 16, 16), "ball").mesh;
+    static const SptDocument doc = make_document(mesh);
+    static const CollisionModel model(doc);
+    return model;
+}
+
+// B's centre `gap` along a tilted direction from A's (1: touching balls), turned a little.
+Pose offset(double gap) {
+    const Eigen::Vector3d dir = Eigen::Vector3d(1, 0.3, -0.2).normalized();
+    return Pose::from(gap * dir, Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.2, 1, 0.5).normalized())));
+}
+
+// The first of the deepest pairs of a complete `all` query, as depth picked it before.
+SpherePair deepest_of_all(const Pose& p, QueryScratch& s) {
+    QueryOptions all;
+    all.mode = QueryMode::All;
+    EXPECT_TRUE(collide_relative(ball(), ball(), p, all, s).collide);
+    const std::vector<SpherePair>& pairs = s.pairs();
+    EXPECT_FALSE(pairs.empty());
+    SpherePair best = pairs[0];
+    for (const SpherePair& q : pairs)
+        if (q.depth > best.depth) best = q;
+    return best;
+}
+
+TEST(DeepOverlap, DeepestPairOfAHalfRadiusOverlapIsTheFirstDeepestOfEveryPair) {
+    QueryScratch s;
+    for (double gap : {0.99, 0.9, 0.75, 0.6}) {
+        const Pose p = offset(gap);
+        const SpherePair best = deepest_of_all(p, s);
+        QueryOptions q;
+        q.mode = QueryMode::Deepest;
+        const QueryResult r = collide_relative(ball(), ball(), p, q, s);
+        ASSERT_TRUE(r.collide);
+        EXPECT_EQ(r.deepest.depth, double(best.depth)) << "gap " << gap;
+        EXPECT_EQ(r.deepest.a, best.a) << "gap " << gap;
+        EXPECT_EQ(r.deepest.b, best.b) << "gap " << gap;
+    }
+}
+
+TEST(DeepOverlap, AShallowContactListsEveryPairAndACrossingOneStopsAtItsFirstDeepPair) {
+    QueryScratch s;
+    QueryOptions all;
+    all.mode = QueryMode::All;
+    const Pose shallow = offset(0.99), deep = offset(0.75);
+    const QueryResult full = collide_relative(ball(), ball(), shallow, all, s);
+    const std::vector<SpherePair> pairs = s.pairs();
+    bool is_deep = true;
+    const QueryResult r = collide_all_unless_deep(ball(), Pose{}, ball(), shallow, all, s, is_deep);
+    EXPECT_FALSE(is_deep);
+    EXPECT_EQ(r.counters.node_pairs, full.counters.node_pairs);
+    ASSERT_EQ(s.pairs().size(), pairs.size());
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        EXPECT_EQ(s.pairs()[k].a, pairs[k].a);
+        EXPECT_EQ(s.pairs()[k].b, pairs[k].b);
+        EXPECT_EQ(s.pairs()[k].depth, pairs[k].depth);
+    }
+    const QueryResult every = collide_relative(ball(), ball(), deep, all, s);
+    const size_t listed = s.pairs().size();
+    const QueryResult cut = collide_all_unless_deep(ball(), Pose{}, ball(), deep, all, s, is_deep);
+    EXPECT_TRUE(is_deep);
+    EXPECT_TRUE(cut.collide);
+    EXPECT_LT(s.pairs().size() * 20, listed) << "the crossing's pairs should not be listed";
+    EXPECT_LT(cut.counters.node_pairs * 10, every.counters.node_pairs);
+}
+
+// The work of the deepest pair and of each backtrack look depends on the contact, not on how much
+// the balls share: half a radius deep costs about what a graze costs (it was 33 times the node
+// pairs of the graze for the `all` query depth ran).
+TEST(DeepOverlap, HalfRadiusOverlapCostsAboutWhatAGrazeCosts) {
+    QueryScratch s;
+    auto work = [&](double gap) {
+        QueryOptions q;
+        q.mode = QueryMode::Deepest;
+        const QueryResult d = collide_relative(ball(), ball(), offset(gap), q, s);
+        QueryOptions spheres;
+        detail::ExitSearch exit;
+        exit.back = -Eigen::Vector3d(1, 0.3, -0.2).normalized();
+        const QueryResult e = collide_exit(ball(), ball(), offset(gap), spheres, exit, s);
+        return d.counters.node_pairs + e.counters.node_pairs;
+    };
+    const uint64_t graze = work(0.99), half = work(0.75);
+    EXPECT_LT(half, 3 * graze) << "graze " << graze << ", half a radius " << half;
+}
+
+TEST(DeepOverlap, BacktrackFromItsOwnLooksEqualsTheOneFromEveryPairBitForBit) {
+    QueryScratch s;
+    QueryOptions all;
+    all.mode = QueryMode::All;
+    for (double gap : {0.9, 0.75, 0.6})
+        for (const Eigen::Vector3d& motion : {Eigen::Vector3d(-1, -0.3, 0.2), Eigen::Vector3d(0.3, -1, 0.1)}) {
+            const Pose p = offset(gap);
+            collide_relative(ball(), ball(), p, all, s);
+            const std::vector<SpherePair> pairs = s.pairs();
+            const BacktrackResult from_pairs =
+                detail::backtrack_from_pairs(ball(), Pose{}, ball(), p, motion, QueryOptions{}, pairs, s);
+            const BacktrackResult own =
+                backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, BacktrackRule::Exact, s);
+            EXPECT_EQ(own.distance, from_pairs.distance) << "gap " << gap;
+            EXPECT_TRUE(own.converged);
+            Pose parted = p;
+            parted.translation -= own.distance * motion.normalized();
+            EXPECT_FALSE(collide_relative(ball(), ball(), parted, QueryOptions{}, s).collide) << "gap " << gap;
+        }
+}
+
+} // namespace
