@@ -4,7 +4,6 @@
 // iteration builds the scene's simulation and runs its first steps (two balls: one; 1,000
 // balls: 20); the time reported is their ns_depth + ns_response (manual time, for the 1,000
 // balls the sum of 20 steps), the counters are a step's.
-#include "spt/huge_page_heap.hpp"
 #include "spt/simulation.hpp"
 #include "meshgen.hpp"
 #include <benchmark/benchmark.h>
@@ -120,7 +119,6 @@ BENCHMARK(thousand_balls_2_threads)->UseManualTime()->Unit(benchmark::kMicroseco
 } // namespace
 
 int main(int argc, char** argv) {
-    spt::reexec_with_huge_page_heap(argv); // as `spt simulate`: a fresh page costs 10 us on these machines
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

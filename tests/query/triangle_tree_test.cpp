@@ -1,4 +1,5 @@
 // The exact level's triangle tree: every triangle once, bounds hold, degenerate faces left out.
+#include "query/model_access.hpp"
 #include "query_fixtures.hpp"
 #include "geometry/tri_tri.hpp"
 #include "query/exact_data.hpp"
@@ -49,7 +50,7 @@ TEST(TriangleTree, EveryTriangleInOneLeafInsideEveryAncestorsSphereAndBox) {
     TriangleMesh m = make_torus(1.0, 0.35, 24, 12);
     for (auto& p : m.positions) p += Eigen::Vector3d(3e3, -2e3, 1e3);
     const auto o = test::make_object(m);
-    const ExactData& e = o->model.exact();
+    const ExactData& e = detail::exact_of(o->model);
     std::vector<int> seen(e.triangles.size(), 0);
     int leaves = 0;
     check_subtree(e, 0, seen, leaves);
@@ -70,7 +71,7 @@ TEST(TriangleTree, NeedleTrianglesGetALeafEachAndBoxes) {
     }
     const TriangleMesh m = prepare_mesh("needles", std::move(p), std::move(t)).mesh;
     const auto o = test::make_object(m);
-    const ExactData& e = o->model.exact();
+    const ExactData& e = detail::exact_of(o->model);
     int leaves = 0;
     for (const TriangleNode& n : e.tri_nodes)
         if (n.is_leaf()) {
@@ -85,7 +86,7 @@ TEST(TriangleTree, NeedleTrianglesGetALeafEachAndBoxes) {
 // and its small nodes are compact (sphere and slab).
 TEST(TriangleTree, CompactTrianglesShareLeaves) {
     const auto o = test::make_object(make_torus(1.0, 0.35, 48, 24));
-    const ExactData& e = o->model.exact();
+    const ExactData& e = detail::exact_of(o->model);
     size_t leaves = 0, boxed_leaves = 0;
     for (const TriangleNode& n : e.tri_nodes)
         if (n.is_leaf()) ++leaves, boxed_leaves += n.boxed;
@@ -100,8 +101,8 @@ TEST(TriangleTree, ZeroAreaTrianglesAreLeftOutAndCounted) {
     const size_t n = m.triangles.size();
     SptDocument doc = make_document(m, test::coarse());
     const CollisionModel model(doc, m);
-    EXPECT_EQ(model.exact().degenerate_triangles, 1u);
-    EXPECT_EQ(model.exact().tri_order.size(), n - 1);
+    EXPECT_EQ(detail::exact_of(model).degenerate_triangles, 1u);
+    EXPECT_EQ(detail::exact_of(model).tri_order.size(), n - 1);
 }
 
 } // namespace

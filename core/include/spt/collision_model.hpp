@@ -13,6 +13,9 @@ namespace spt {
 
 struct ExactData; // the exact level's triangles and triangle tree (private layout)
 struct SolidData; // where the model is solid, for containment (private layout)
+namespace detail {
+struct ModelAccess;
+}
 
 /// One object ready for queries.
 class CollisionModel {
@@ -29,10 +32,6 @@ public:
     const CompactTree& tree() const { return tree_; }
     /// True if the `exact` level is available.
     bool has_mesh() const;
-    /// Triangle data for the `exact` level, empty without a mesh (layout private to the library).
-    const ExactData& exact() const;
-    /// Where the model is solid, and its anchor points (layout private to the library).
-    const SolidData& solid() const;
     /// Object-frame point the model's geometry is stored relative to (SampleSet::origin), model units.
     const Eigen::Vector3d& origin() const { return tree_.origin(); }
     /// Largest |x - origin()| over every sphere and triangle (model units): the model's size.
@@ -51,6 +50,7 @@ public:
     size_t memory_bytes() const;
 
 private:
+    friend struct detail::ModelAccess; // the query code's view of exact_ and solid_ (query/model_access.hpp)
     void init(const SptDocument& doc, const std::string& tree_name);
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it

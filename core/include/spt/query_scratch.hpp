@@ -23,6 +23,7 @@ struct TrianglePair {
 
 namespace detail {
 struct ScratchBuffers;
+struct ScratchAccess;
 }
 
 /// Working memory of one query at a time; give each thread its own.
@@ -43,10 +44,8 @@ public:
     const std::vector<SpherePair>& pairs() const;
     /// Triangle pairs of the last `exact` query in mode `all`.
     const std::vector<TrianglePair>& triangle_pairs() const;
-    /// The buffers themselves (layout private to the library).
-    detail::ScratchBuffers& buffers() { return *b_; }
-
 private:
+    friend struct detail::ScratchAccess; // the query code's view of the buffers (query/scratch.hpp)
     std::unique_ptr<detail::ScratchBuffers> b_;
 };
 

@@ -1,4 +1,5 @@
 // The reference every tree query is tested against: no hierarchy, every pair.
+#include "query/model_access.hpp"
 #include "query/brute_force.hpp"
 #include "query/query_run.hpp"
 #include "query/exact_data.hpp"
@@ -76,7 +77,7 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
             }
         }
     } else {
-        const ExactData &ea = a.exact(), &eb = b.exact();
+        const ExactData &ea = detail::exact_of(a), &eb = detail::exact_of(b);
         for (uint32_t p = 0; p < ea.triangles.size() && !done(); ++p)
             for (uint32_t q = 0; q < eb.triangles.size() && !done(); ++q) {
                 const Triangle &x = ea.triangles[p], &y = eb.triangles[q];
@@ -85,7 +86,7 @@ QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b
                                          run.b_vertex(y[0]), run.b_vertex(y[1]), run.b_vertex(y[2])))
                     continue;
                 run.res.collide = true;
-                if (mode == QueryMode::All) scratch.buffers().tri_pairs.push_back({p, q});
+                if (mode == QueryMode::All) detail::buffers_of(scratch).tri_pairs.push_back({p, q});
             }
     }
     run.roots_overlap = true; // no tree: containment is asked whenever nothing else met

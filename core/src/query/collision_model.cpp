@@ -1,4 +1,5 @@
 // CollisionModel: the query layout, the reach that bounds motion, the exact level's triangles.
+#include "query/model_access.hpp"
 #include "spt/collision_model.hpp"
 #include "spt/error.hpp"
 #include "base/float_round.hpp"
@@ -30,7 +31,7 @@ CollisionModel::CollisionModel(const SptDocument& doc, const std::string& tree_n
     // walls in nothing.
     std::vector<uint8_t> wall(tree_.sphere_count(), 0);
     for (size_t k = 0; k < wall.size(); ++k) wall[k] = !doc.samples.is_two_sided(tree_.sample_index()[k]);
-    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, exact(), wall));
+    solid_ = std::make_shared<SolidData>(SolidData::build(tree_, detail::exact_of(*this), wall));
 }
 
 CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh, const std::string& tree_name) {
@@ -98,16 +99,6 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
 
 bool CollisionModel::has_mesh() const { return exact_ && !exact_->triangles.empty(); }
 
-const ExactData& CollisionModel::exact() const {
-    static const ExactData kNone;
-    return exact_ ? *exact_ : kNone;
-}
-
-const SolidData& CollisionModel::solid() const {
-    static const SolidData kNone;
-    return solid_ ? *solid_ : kNone;
-}
-
 void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) {
     const SamplingTree& t = pick_tree(doc, tree_name);
     tree_ = CompactTree(t, doc.samples);
@@ -141,13 +132,13 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
 }
 
 size_t CollisionModel::memory_bytes() const {
-    const ExactData& e = exact();
+    const ExactData& e = detail::exact_of(*this);
     return tree_.memory_bytes() + e.positions.capacity() * sizeof(Eigen::Vector3d) +
            e.triangles.capacity() * sizeof(Triangle) +
            e.tri_nodes.capacity() * sizeof(TriangleNode) + e.tri_order.capacity() * sizeof(uint32_t) +
            e.tri_sphere.capacity() * sizeof(float) + e.closed.capacity() +
            (e.sphere_source.capacity() + e.vertex_face_start.capacity() + e.vertex_faces.capacity()) * sizeof(uint32_t) +
-           solid().memory_bytes();
+           detail::solid_of(*this).memory_bytes();
 }
 
 } // namespace spt

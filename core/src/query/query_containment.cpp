@@ -1,5 +1,6 @@
 // Containment: after a walk that found no meeting surfaces, is a piece of one model inside a
 // closed part of the other? Each piece is asked by one anchor point (docs/queries.md).
+#include "query/model_access.hpp"
 #include "query/exact_data.hpp"
 #include "query/query_run.hpp"
 #include "query/solid.hpp"
@@ -8,7 +9,7 @@ namespace spt {
 
 void QueryRun::check_containment() {
     if (!o.solids || res.collide || !roots_overlap) return;
-    const SolidData &sa = A.solid(), &sb = B.solid();
+    const SolidData &sa = detail::solid_of(A), &sb = detail::solid_of(B);
     // Records a containment: depth 0, the contained anchor (A's local frame) as the point.
     auto contain = [&](const Eigen::Vector3d& point_in_a) {
         res.collide = true;

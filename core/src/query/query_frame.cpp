@@ -1,4 +1,5 @@
 // Checks and set-up shared by every query: poses, the far-apart test, B's frame in A's, scratch sizes.
+#include "query/model_access.hpp"
 #include "query/query_run.hpp"
 #include "spt/error.hpp"
 #include "query/exact_data.hpp"
@@ -71,14 +72,14 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
     if (s.stack.capacity() < 256) s.stack.reserve(256);
     if (s.visits.size() < 256) s.visits.resize(256);
     // B's vertices: the exact level's triangles, and the faces of two-sided spheres at the sphere level.
-    if (exact || !b.exact().sphere_source.empty()) {
-        const size_t nv = b.exact().positions.size();
+    if (exact || !detail::exact_of(b).sphere_source.empty()) {
+        const size_t nv = detail::exact_of(b).positions.size();
         if (s.bverts.size() < nv) s.bverts.resize(nv), s.vert_stamp.resize(nv, 0);
     }
     if (exact) {
-        const size_t nt = b.exact().triangles.size();
+        const size_t nt = detail::exact_of(b).triangles.size();
         if (s.btri.size() < 4 * nt) s.btri.resize(4 * nt), s.tri_stamp.resize(nt, 0);
-        const size_t nn = b.exact().tri_nodes.size();
+        const size_t nn = detail::exact_of(b).tri_nodes.size();
         if (s.bboxes.size() < nn) s.bboxes.resize(nn), s.bbox_stamp.resize(nn, 0);
     }
     if (++s.epoch == 0) { // wrapped: forget every stamp

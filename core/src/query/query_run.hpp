@@ -1,5 +1,6 @@
 #pragma once
 // Pieces of the query shared by query.cpp, the brute-force reference, response and CCD.
+#include "query/model_access.hpp"
 #include "spt/query.hpp"
 #include "query/scratch.hpp"
 #include <algorithm>
@@ -152,7 +153,7 @@ struct QueryRun {
 
     const CollisionModel& A;
     const CollisionModel& B;
-    const ExactData& EA; // A.exact() and B.exact(), looked up once
+    const ExactData& EA; // detail::exact_of(A) and detail::exact_of(B), looked up once
     const ExactData& EB;
     const QueryOptions& o;
     detail::ScratchBuffers& s;

@@ -79,7 +79,7 @@ BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, 
             // exit roots move them, once a sphere (a sphere is in many pairs).
             const Eigen::Matrix3d rot = unit_rotation(p.rotation).toRotationMatrix();
             const Eigen::Vector3d t = local_translation(a, b, rot, p.translation); // the centres are local
-            detail::SphereMemo<Eigen::Vector3d>& moved = scratch.buffers().memo_b;
+            detail::SphereMemo<Eigen::Vector3d>& moved = detail::buffers_of(scratch).memo_b;
             moved.start(std::max(b.tree().nodes().size(), b.tree().sphere_count()));
             for (const SpherePair& pair : *start_pairs) {
                 const Eigen::Vector3d ca = detail::pair_centre(a.tree(), bounds, pair.node_a, pair.a);

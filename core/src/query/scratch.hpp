@@ -83,4 +83,11 @@ struct ScratchBuffers {
     SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
 };
 
+struct ScratchAccess {
+    static ScratchBuffers& buffers(QueryScratch& s) { return *s.b_; }
+};
+
+/// The buffers behind `scratch`, for the query code.
+inline ScratchBuffers& buffers_of(QueryScratch& scratch) { return ScratchAccess::buffers(scratch); }
+
 } // namespace spt::detail

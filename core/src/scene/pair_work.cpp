@@ -26,7 +26,7 @@ Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const Co
     const bool use_a = !a_moves || b_moves, use_b = !b_moves || a_moves; // what is struck gives the normal
     // World centres and normals made once a sphere, not once a pair (a sphere is in many pairs);
     // a sphere's two side by side, found by one look-up.
-    detail::ScratchBuffers& m = scratch.buffers();
+    detail::ScratchBuffers& m = detail::buffers_of(scratch);
     m.memo_ca.start(a.tree().sphere_count()), m.memo_cb.start(b.tree().sphere_count());
     auto frame = [](const CollisionModel& o, const Pose& p, uint32_t node, uint32_t sphere) {
         Eigen::Matrix<double, 3, 2> v;
@@ -90,12 +90,10 @@ void from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b
 }
 
 
-// Whether a pair of `pairs` is deep, deeper than half its reach (grown by `band`), as the
-// walk of collide_all_unless_deep tells it.
-bool holds_deep_pair(const CollisionModel& a, const CollisionModel& b, const std::vector<SpherePair>& pairs,
-                     double band) {
+// Whether a pair of `pairs` is deep, deeper than half its reach (which holds the query's
+// inflation), as the walk of collide_all_unless_deep tells it.
+bool holds_deep_pair(const std::vector<SpherePair>& pairs) {
     for (const SpherePair& p : pairs) {
-        const float ra = a.tree().nodes()[p.node_a].ss_radius, rb = b.tree().nodes()[p.node_b].ss_radius;
         const float inner = 0.5f * p.reach, dist = p.reach - p.depth;
         if (dist < inner) return true;
     }
@@ -129,7 +127,7 @@ void deep_contact(const CollisionModel& a, const Pose& pa, const CollisionModel&
     const QueryResult r = collide(a, pa, b, pb, q, scratch);
     w.qc.node_pairs += r.counters.node_pairs, w.qc.bound_tests += r.counters.bound_tests;
     w.qc.sphere_tests += r.counters.sphere_tests;
-    detail::ScratchBuffers& s = scratch.buffers();
+    detail::ScratchBuffers& s = detail::buffers_of(scratch);
     const uint32_t node_a = s.deepest_node_a, node_b = s.deepest_node_b;
     w.depth = std::max(0.0, r.deepest.depth - double(q.inflate));
     const Eigen::Vector3d ca = centre(a, pa, node_a, r.deepest.a), cb = centre(b, pb, node_b, r.deepest.b);
@@ -163,7 +161,7 @@ void contact_from_pairs(const CollisionModel& a, const Pose& pa, const Collision
                         QueryLevel level, double band, bool a_dynamic, bool b_dynamic,
                         const std::vector<SpherePair>& pairs, bool collide, const Eigen::Vector3d& point, PairWork& w,
                         QueryScratch& scratch) {
-    w.deep = level == QueryLevel::Spheres && holds_deep_pair(a, b, pairs, band);
+    w.deep = level == QueryLevel::Spheres && holds_deep_pair(pairs);
     if (!w.deep) return from_pairs(a, pa, b, pb, level, band, a_dynamic, b_dynamic, pairs, collide, point, w, scratch);
     QueryOptions q;
     q.level = level;

@@ -227,7 +227,7 @@ void Simulation::run_contacts(StepCounters& c) {
                 if (reuse)
                     start_pairs_[j].assign(work[k].pairs.begin(), work[k].pairs.end());
                 else // taken from the scratch, which clears what it gets back at its next query
-                    start_pairs_[j].swap(s.buffers().pairs);
+                    start_pairs_[j].swap(detail::buffers_of(s).pairs);
             }
         }, tasks_);
         c.depth_queries = colliding.size();

@@ -99,7 +99,7 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
         bool deep = false;
         collide_all_unless_deep(ma, poses_[a], mb, poses_[b], q, scratch, deep);
         if (!deep) {
-            own.swap(scratch.buffers().pairs);
+            own.swap(detail::buffers_of(scratch).pairs);
             pairs = &own;
         }
     }
@@ -119,7 +119,7 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
         motion = -pc.normal;
         back = back_along(motion, kNoBacktrackLimit);
     }
-    if (pairs == &own) own.swap(scratch.buffers().pairs); // its capacity back for the next query
+    if (pairs == &own) own.swap(detail::buffers_of(scratch).pairs); // its capacity back for the next query
     bool acted = false;
     if (back.distance > 0) {
         const Eigen::Vector3d away = motion.normalized() * back.distance; // B moves by -away relative to A

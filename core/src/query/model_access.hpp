@@ -1,0 +1,26 @@
+#pragma once
+// The library's own view of a CollisionModel's private parts: the exact level's triangles and
+// where the model is solid. Callers outside core never see these layouts.
+#include "query/exact_data.hpp"
+#include "query/solid.hpp"
+#include "spt/collision_model.hpp"
+
+namespace spt::detail {
+
+struct ModelAccess {
+    static const ExactData& exact(const CollisionModel& m) {
+        static const ExactData kNone;
+        return m.exact_ ? *m.exact_ : kNone;
+    }
+    static const SolidData& solid(const CollisionModel& m) {
+        static const SolidData kNone;
+        return m.solid_ ? *m.solid_ : kNone;
+    }
+};
+
+/// Triangle data for the `exact` level, empty without a mesh.
+inline const ExactData& exact_of(const CollisionModel& m) { return ModelAccess::exact(m); }
+/// Where the model is solid, and its anchor points.
+inline const SolidData& solid_of(const CollisionModel& m) { return ModelAccess::solid(m); }
+
+} // namespace spt::detail
