@@ -7,6 +7,9 @@
 # system, less moved by other work on a shared machine), minor page faults and peak RSS.
 set -euo pipefail
 ROUNDS=$1; shift
+for pair in "$@"; do # a label is one word: the tables are read back by field
+  [[ ${pair%%=*} =~ ^[^[:space:]]+$ && $pair == *=* ]] || { echo "bad LABEL=SPT_BINARY: '$pair'" >&2; exit 1; }
+done
 BUILD=${BUILD:-build}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
