@@ -89,7 +89,6 @@ void from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b
     w.normal = contact_normal(a, pa, b, pb, pairs, line, a_dynamic, b_dynamic, scratch);
 }
 
-
 // Whether a pair of `pairs` is deep, deeper than half its reach (which holds the query's
 // inflation), as the walk of collide_all_unless_deep tells it.
 bool holds_deep_pair(const std::vector<SpherePair>& pairs) {
