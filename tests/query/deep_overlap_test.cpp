@@ -8,6 +8,8 @@
 #include "query/backtrack_from.hpp"
 #include "query/query_run.hpp"
 #include <gtest/gtest.h>
+#include <random>
+#include <sstream>
 
 namespace {
 
@@ -118,6 +120,63 @@ TEST(DeepOverlap, BacktrackFromItsOwnLooksEqualsTheOneFromEveryPairBitForBit) {
             parted.translation -= own.distance * motion.normalized();
             EXPECT_FALSE(collide_relative(ball(), ball(), parted, QueryOptions{}, s).collide) << "gap " << gap;
         }
+}
+
+// A deep overlap's backtrack by branch and bound over the last exit of every pair against the
+// looks of rule Exact, on random deep poses and motions: two balls, once parted along a line, do
+// not meet again further on it, so the two answers differ only by the looks' rounding up (a
+// millionth of a reach a look; docs/queries.md, "Deep overlaps").
+TEST(DeepOverlap, LastExitOfEveryPairIsWhereTheLooksPartOnRandomDeepPoses) {
+    QueryScratch s;
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> u(-1, 1), gap(0.5, 0.97);
+    auto unit = [&] {
+        Eigen::Vector3d v;
+        do v = Eigen::Vector3d(u(rng), u(rng), u(rng));
+        while (!(v.norm() > 0.1));
+        return Eigen::Vector3d(v.normalized());
+    };
+    double reach = 0; // the largest of a pair
+    for (const CompactNode& n : ball().tree().nodes())
+        if (n.is_active()) reach = std::max(reach, 2.0 * n.ss_radius);
+    double worst = 0;
+    for (int k = 0; k < 40; ++k) {
+        const Eigen::Vector3d dir = unit();
+        const Pose p = Pose::from(gap(rng) * dir, Eigen::Quaterniond(Eigen::AngleAxisd(3 * u(rng), unit())));
+        // Along the line of centres (as the normal parts a deep pair) and along any motion.
+        for (const Eigen::Vector3d& motion : {Eigen::Vector3d(-dir), unit()}) {
+            const BacktrackResult looks =
+                backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, BacktrackRule::Exact, s);
+            const BacktrackResult bnb = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s);
+            ASSERT_TRUE(looks.converged);
+            EXPECT_LE(bnb.queries, looks.queries) << "pose " << k;
+            EXPECT_TRUE(bnb.converged);
+            EXPECT_NEAR(bnb.distance, looks.distance, 1e-5 * reach) << "pose " << k;
+            worst = std::max(worst, std::abs(bnb.distance - looks.distance));
+            Pose parted = p;
+            parted.translation -= bnb.distance * motion.normalized();
+            EXPECT_FALSE(collide_relative(ball(), ball(), parted, QueryOptions{}, s).collide) << "pose " << k;
+        }
+    }
+    std::ostringstream text;
+    text << worst << " of a reach of " << reach;
+    RecordProperty("worst_difference", text.str());
+}
+
+// A limit below the distance ends both searches with `beyond` set; above it, no `beyond`.
+TEST(DeepOverlap, LastExitOfEveryPairSaysBeyondWhereTheLooksDo) {
+    QueryScratch s;
+    const Pose p = offset(0.75);
+    const Eigen::Vector3d motion(-1, -0.3, 0.2);
+    const BacktrackResult full = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s);
+    ASSERT_GT(full.distance, 0.1);
+    for (const double limit : {0.1, full.distance + 1e-3}) {
+        const BacktrackResult looks =
+            backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, BacktrackRule::Exact, s, limit);
+        const BacktrackResult bnb = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s, limit);
+        EXPECT_EQ(bnb.beyond, looks.beyond) << "limit " << limit;
+        EXPECT_EQ(bnb.beyond, limit < full.distance) << "limit " << limit;
+    }
 }
 
 } // namespace

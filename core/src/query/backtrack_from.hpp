@@ -14,4 +14,15 @@ BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a
                                      const std::vector<SpherePair>& start_pairs, QueryScratch& scratch,
                                      double max_distance = kNoBacktrackLimit);
 
+/// As backtrack (rule Exact, `pose_a` and `pose_b` in the world) for a deep overlap, whose spheres
+/// overlap at these poses: at level spheres (no culling, no two-sided spheres, inflate 0) the
+/// first jump goes to the largest exit root of every sphere pair along the motion, found by branch
+/// and bound, instead of to the largest of the pairs overlapping now; the looks go on from there.
+/// The same distance as backtrack's within the looks' rounding up (a millionth of a reach a look)
+/// unless the models, once parted along the motion, would meet again further on (docs/queries.md,
+/// "Deep overlaps"). Elsewhere backtrack's answer.
+BacktrackResult deep_backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
+                               const Eigen::Vector3d& motion, const QueryOptions& options, QueryScratch& scratch,
+                               double max_distance = kNoBacktrackLimit);
+
 } // namespace spt::detail

@@ -62,10 +62,11 @@ BacktrackResult by_bisection(const CollisionModel& a, const CollisionModel& b, c
 // (collide_exit), not for every overlapping pair.
 // `start_pairs`: the pairs at s = 0 when the caller has them (then that query is not run).
 // A jump past `max_distance` ends the search: the answer is at least that jump.
+// `first`: the first look's answer when the caller has it (then no look is made there).
 BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                               const Eigen::Vector3d& back, const QueryOptions& options,
                               const std::vector<SpherePair>* start_pairs, QueryScratch& scratch,
-                              double max_distance) {
+                              double max_distance, const detail::ExitSearch* first = nullptr) {
     BacktrackResult r;
     const bool bounds = options.level == QueryLevel::Bounds;
     double s = 0;
@@ -74,7 +75,10 @@ BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, 
         p.translation += s * back;
         detail::ExitSearch exit;
         exit.back = back;
-        if (it == 0 && start_pairs) {
+        if (it == 0 && first) {
+            exit = *first;
+            ++r.queries;
+        } else if (it == 0 && start_pairs) {
             // As collide_exit would answer from these pairs: B's centres moved as the walk's
             // exit roots move them, once a sphere (a sphere is in many pairs).
             const Eigen::Matrix3d rot = unit_rotation(p.rotation).toRotationMatrix();
@@ -115,6 +119,106 @@ BacktrackResult by_exit_roots(const CollisionModel& a, const CollisionModel& b, 
     return r;
 }
 
+// Whether two balls, centres w apart (B's minus A's) and radii summing to `reach`, meet at some
+// shift past S as B moves by s * back (S >= 0), told without a square root: they meet somewhere
+// on the line, and the middle of their chord lies past S or they still overlap at S.
+bool meet_past(const Eigen::Vector3d& w, double reach, const Eigen::Vector3d& back, double S) {
+    const double half_b = w.dot(back), w2 = w.squaredNorm(), r2 = reach * reach;
+    if (!(half_b * half_b - w2 + r2 > 0)) return false;
+    return -half_b > S || w2 + S * (2 * half_b + S) < r2;
+}
+
+// Their exit root, when they meet (meet_past).
+double exit_of(const Eigen::Vector3d& w, double reach, const Eigen::Vector3d& back) {
+    const double half_b = w.dot(back);
+    return -half_b + std::sqrt(half_b * half_b - w.squaredNorm() + reach * reach);
+}
+
+// Rule Exact at level spheres for a deep overlap (spheres overlapping at s = 0): the largest
+// exit root of every sphere pair along back, by branch and bound. A node pair's bounding balls
+// part no earlier than any pair of spheres below, so node pairs are taken largest bound first and
+// the search ends when the largest bound left is no later than the best root: it visits the node
+// pairs that could part last, not every pair the overlap holds. The looks of by_exit_roots stop
+// instead at the first shift where nothing overlaps; the two agree unless the models, once parted
+// along back, would meet again (docs/queries.md). Sets `root` and `reach` as an ExitSearch; false
+// when no pair meets past s = 0, or the answer must come from the looks alone: two-sided spheres
+// or culling (which the looks apply pair by pair) or a grown sphere. The search ends at the first
+// root whose jump passes `max_distance`: the backtrack then says only that it lies beyond.
+bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const Eigen::Vector3d& back,
+               const QueryOptions& options, QueryScratch& scratch, double max_distance, detail::ExitSearch& best) {
+    const CompactTree &ta = a.tree(), &tb = b.tree();
+    if (options.level != QueryLevel::Spheres || options.normal_culling || options.inflate != 0 || ta.two_sided() ||
+        tb.two_sided() || ta.nodes().empty() || tb.nodes().empty())
+        return false;
+    const QueryFrame f(a, b, b_in_a, 0);
+    if (f.apart) return false;
+    const std::vector<CompactNode>&an = ta.nodes(), &bn = tb.nodes();
+    detail::ScratchBuffers& s = detail::buffers_of(scratch);
+    auto node_centre = [](const CompactNode& n) {
+        return Eigen::Vector3d(double(n.center[0]), double(n.center[1]), double(n.center[2]));
+    };
+    auto b_centre = [&](const CompactNode& n) -> Eigen::Vector3d { return f.Rd * node_centre(n) + f.td; };
+    // Bounds widened by a millionth (of the radii and the offset) so that rounding of the
+    // stored float centres and radii never prunes a pair that parts later.
+    auto wide = [](const Eigen::Vector3d& w, double r) { return r + 1e-6 * (r + w.cwiseAbs().sum()); };
+    best = detail::ExitSearch{};
+    best.back = back;
+    std::vector<detail::ScratchBuffers::ExitBound>& stack = s.exit_stack;
+    stack.clear();
+    // The bound of node pair (i, j), B's centre less A's w: the exit root of their balls, or -1
+    // when they do not meet past the best root.
+    auto bound = [&](uint32_t i, uint32_t j, const Eigen::Vector3d& w) {
+        const double r = wide(w, double(an[i].bv_radius) + double(bn[j].bv_radius));
+        return meet_past(w, r, back, best.found ? best.root : 0.0) ? exit_of(w, r, back) : -1.0;
+    };
+    std::vector<Eigen::Vector3d>& moved = s.exit_leaf_b;
+    moved.resize(b.max_leaf());
+    if (const double r0 = bound(0, 0, b_centre(bn[0]) - node_centre(an[0])); r0 >= 0) stack.push_back({r0, 0, 0});
+    // Depth first, the pair that parts later taken first: a late root comes early and prunes the
+    // rest, with none of a priority queue's upkeep (which cost more than the walk).
+    while (!stack.empty() && !(best.found && best.root + 1e-6 * best.reach > max_distance)) {
+        const detail::ScratchBuffers::ExitBound top = stack.back();
+        stack.pop_back();
+        if (best.found && top.root <= best.root) continue;
+        const CompactNode &na = an[top.a], &nb = bn[top.b];
+        if (na.is_active() && nb.is_active()) {
+            for (uint32_t q = 0; q < nb.count; ++q)
+                moved[q] = f.Rd * tb.sphere_center(nb, nb.first + q).cast<double>() + f.td;
+            const Eigen::Vector3d cb_node = b_centre(nb);
+            const double reach = double(na.ss_radius + nb.ss_radius); // as the walk's float reach
+            const double row_reach = double(na.ss_radius) + double(nb.bv_radius);
+            for (uint32_t p = na.first; p < na.first + na.count; ++p) {
+                const Eigen::Vector3d ca = ta.sphere_center(na, p).cast<double>();
+                const double S = best.found ? best.root : 0.0;
+                // B's spheres lie in its node's ball: a sphere of A that has parted from the ball
+                // by the best root has parted from each of them.
+                if (!meet_past(cb_node - ca, wide(cb_node - ca, row_reach), back, S)) continue;
+                for (uint32_t q = 0; q < nb.count; ++q) {
+                    const Eigen::Vector3d w = moved[q] - ca;
+                    if (!meet_past(w, reach, back, best.found ? best.root : 0.0)) continue;
+                    detail::keep_exit(best, exit_of(w, reach, back), reach);
+                }
+            }
+            continue;
+        }
+        // The larger ball is split, as the walk splits it.
+        const bool side_a = nb.is_active() || (!na.is_active() && na.bv_radius >= nb.bv_radius);
+        const CompactNode& split = side_a ? na : nb;
+        const uint32_t at = side_a ? top.a : top.b;
+        double key[2];
+        const uint32_t child[2] = {at + 1, split.first};
+        for (int k = 0; k < 2; ++k)
+            key[k] = side_a ? bound(child[k], top.b, b_centre(nb) - node_centre(an[child[k]]))
+                            : bound(top.a, child[k], b_centre(bn[child[k]]) - node_centre(na));
+        const int later = key[1] > key[0] ? 1 : 0; // pushed last, taken first
+        for (const int k : {1 - later, later})
+            if (key[k] >= 0)
+                stack.push_back(side_a ? detail::ScratchBuffers::ExitBound{key[k], child[k], top.b}
+                                      : detail::ScratchBuffers::ExitBound{key[k], top.a, child[k]});
+    }
+    return best.found;
+}
+
 // Any finite non-zero motion gives a direction: scaled by its largest component before
 // normalising, so 1e-300 and 1e300 are directions like 1. Zero without one.
 Eigen::Vector3d back_direction(const Eigen::Vector3d& motion) {
@@ -123,10 +227,12 @@ Eigen::Vector3d back_direction(const Eigen::Vector3d& motion) {
     return -(motion / big).normalized();
 }
 
-// backtrack_relative; `start_pairs` (may be null) as for backtrack_from_pairs.
+// backtrack_relative; `start_pairs` (may be null) as for backtrack_from_pairs, `deep` as for
+// deep_backtrack.
 BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                          const Eigen::Vector3d& motion_in_a, const QueryOptions& options, BacktrackRule rule,
-                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance) {
+                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
+                         bool deep = false) {
     BacktrackResult r;
     const Eigen::Vector3d back = back_direction(motion_in_a);
     if (back.isZero()) return r; // no motion: no direction to move back along
@@ -140,19 +246,25 @@ BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const
         return r;
     }
     if (options.level == QueryLevel::Exact) return by_bisection(a, b, b_in_a, back, options, scratch, max_distance);
+    // A deep overlap's first jump goes straight to the last exit of every pair, past the jumps
+    // the looks would make through the overlap; the looks then go on from there.
+    detail::ExitSearch last;
+    if (deep && last_exit(a, b, b_in_a, back, options, scratch, max_distance, last))
+        return by_exit_roots(a, b, b_in_a, back, options, nullptr, scratch, max_distance, &last);
     return by_exit_roots(a, b, b_in_a, back, options, start_pairs, scratch, max_distance);
 }
 
-// backtrack; `start_pairs` (may be null) as for backtrack_from_pairs.
+// backtrack; `start_pairs` (may be null) as for backtrack_from_pairs, `deep` as for deep_backtrack.
 BacktrackResult in_world(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                          const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
-                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance) {
+                         const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
+                         bool deep = false) {
     check_pose(pose_a, "pose of A");
     check_pose(pose_b, "pose of B");
     const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
     const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
     return relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, start_pairs, scratch,
-                    max_distance);
+                    max_distance, deep);
 }
 
 } // namespace
@@ -178,6 +290,12 @@ BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a
                                      const std::vector<SpherePair>& start_pairs, QueryScratch& scratch,
                                      double max_distance) {
     return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, &start_pairs, scratch, max_distance);
+}
+
+BacktrackResult deep_backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
+                               const Eigen::Vector3d& motion, const QueryOptions& options, QueryScratch& scratch,
+                               double max_distance) {
+    return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, nullptr, scratch, max_distance, true);
 }
 
 } // namespace spt::detail

@@ -80,6 +80,14 @@ struct ScratchBuffers {
     uint32_t epoch = 0;
     uint32_t deepest_node_a = 0, deepest_node_b = 0; // active nodes of the last deepest contact
     SphereMemo<Eigen::Vector3d> memo_b;           // a per-pair-list value of B's spheres
+    // The deep backtrack's branch and bound (response.cpp): node pairs to visit with the root
+    // their bounds part at; one leaf of B in A's frame, in double.
+    struct ExitBound {
+        double root;
+        uint32_t a, b;
+    };
+    std::vector<ExitBound> exit_stack;
+    std::vector<Eigen::Vector3d> exit_leaf_b;
     SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
 };
 

@@ -90,13 +90,13 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     const bool unmoved = detail::same_pose(poses_[a], ghost_[a]) && detail::same_pose(poses_[b], ghost_[b]);
     const std::vector<SpherePair>* pairs = nullptr; // none: each backtrack makes its own first look
     std::vector<SpherePair> own; // the scratch's buffer, taken for the two backtracks and given back
+    // A deep overlap (as depth found it at these poses, or found here) parts where its last pair
+    // does, found by branch and bound: its pairs grow with the volume the shells share, and even
+    // looks that keep only the largest exit root each walk the two models near contact.
+    bool deep = from_pairs && unmoved && pc.deep;
     if (from_pairs && unmoved && !start_pairs.empty()) {
         pairs = &start_pairs;
-    } else if (from_pairs && !still && !(unmoved && pc.deep)) {
-        // Unless the overlap is deep (as depth found it at these poses, or found here): its pairs
-        // grow with the volume the shells share, and two first looks that keep only the largest
-        // exit root cost far less than listing them.
-        bool deep = false;
+    } else if (from_pairs && !still && !deep) {
         collide_all_unless_deep(ma, poses_[a], mb, poses_[b], q, scratch, deep);
         if (!deep) {
             own.swap(detail::buffers_of(scratch).pairs);
@@ -104,9 +104,10 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
         }
     }
     auto back_along = [&](const Eigen::Vector3d& m, double limit) {
-        return pairs && !pairs->empty()
-                   ? detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, *pairs, scratch, limit)
-                   : backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
+        if (pairs && !pairs->empty())
+            return detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, *pairs, scratch, limit);
+        if (deep) return detail::deep_backtrack(ma, poses_[a], mb, poses_[b], m, q, scratch, limit);
+        return backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
     };
     // Further back than the step's own motion: the pair already overlapped where the step began
     // (pushed in by another pair's response, or never parted), so undoing the motion is not what
