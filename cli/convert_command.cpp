@@ -52,9 +52,9 @@ long peak_mib() {
 }
 
 // The trees of the recipe file over the new samples, with a line on each.
-void replay_trees(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions& build, const std::string& recipe,
+void replay_recipe_file(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions& build, const std::string& recipe,
                   const std::string& in) {
-    for (const TreeReplay& r : spt::replay_trees(doc, mesh, load_spt(recipe), build)) {
+    for (const TreeReplay& r : replay_trees(doc, mesh, load_spt(recipe), build)) {
         if (r.built_automatically) {
             std::cerr << "  recipe: tree '" << r.tree << "' of " << recipe << " has no recipe; built automatically\n";
             continue;
@@ -99,7 +99,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     } else {
         doc = make_document(m.mesh, opt, &st);
     }
-    if (!a.recipe.empty()) replay_trees(doc, m.mesh, opt.build, a.recipe, in);
+    if (!a.recipe.empty()) replay_recipe_file(doc, m.mesh, opt.build, a.recipe, in);
     const auto t_save = std::chrono::steady_clock::now();
     save_spt(doc, out);
     const double save_secs = seconds_since(t_save);

@@ -1,6 +1,6 @@
 # The heap of spt's own programs (spt, spt-editor, spt-viewer, the benchmarks): a well-kept
 # allocator linked into each executable, never into libspt_core, so that a host of the library
-# keeps the allocator it chose. docs/benchmarks.md ("Fresh pages") measures the choices.
+# keeps the allocator it chose. docs/benchmarks.md ("Start-up and the programs' heap") measures the choices.
 #   SPT_ALLOCATOR=mimalloc  mimalloc 2.0 with large OS pages (transparent huge pages here)
 #   SPT_ALLOCATOR=jemalloc  jemalloc 5.3 with thp:always compiled in
 #   SPT_ALLOCATOR=system    the C library's malloc

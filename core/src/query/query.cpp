@@ -273,8 +273,8 @@ void QueryRun::run() {
 
 QueryRun::QueryRun(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const QueryOptions& options,
                    QueryScratch& scratch)
-    : A(a), B(b), EA(detail::exact_of(a)), EB(detail::exact_of(b)), o(options), s(detail::buffers_of(scratch)), f(a, b, b_in_a, options.inflate),
-      exact(options.level == QueryLevel::Exact) {
+    : A(a), B(b), EA(detail::exact_of(a)), EB(detail::exact_of(b)), o(options), s(detail::buffers_of(scratch)),
+      f(a, b, b_in_a, options.inflate), exact(options.level == QueryLevel::Exact) {
     if (exact && !(a.has_mesh() && b.has_mesh()))
         throw Error(ErrorKind::Usage, "level 'exact' needs the triangles of both objects (give meshes, not only .spt files)");
     prepare_scratch(s, a, b, exact);

@@ -89,6 +89,10 @@ inline void keep_exit(ExitSearch& e, double root, double reach) {
     else if (root == e.root) e.reach = std::max(e.reach, reach);
 }
 
+// A deep pair overlaps by more than half its reach (r_a + r_b, grown): its surfaces have crossed
+// by a sampling radius, rather than press (docs/scenes.md, "Deep overlaps").
+inline bool is_deep_pair(const SpherePair& p) { return p.reach - p.depth < 0.5f * p.reach; }
+
 } // namespace detail
 
 // Mode all at a non-exact level with `search` answered instead of pairs recorded: sets

@@ -147,10 +147,8 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
     float* d2 = s.d2.data();
     const float best = sphere_block_d2(ax, ay, az, count_a, bx, by, bz, count_b, d2);
     if (!(best < limit2)) return 0;
-    // A recorded pair is deep when it overlaps by more than half its reach (r_a + r_b, grown): its
-    // surfaces have crossed by a sampling radius. (One centre inside the other ball is not enough: a
-    // tiny sphere at a sharp edge lies wholly inside a large one at a mere touch.)
-    const float inner = 0.5f * reach;
+    // Whether a recorded pair is deep (is_deep_pair). One centre inside the other ball would not
+    // do: a tiny sphere at a sharp edge lies wholly inside a large one at a mere touch.
     leaf_deep = false;
     const uint32_t stride = sphere_block_stride(count_b);
     auto sphere_a = [&](uint32_t k) { return cull ? s.ia[k] : na.first + k; };
@@ -208,7 +206,7 @@ uint32_t QueryRun::sphere_leaf_pair(uint32_t i, uint32_t j, const Eigen::Vector3
                 ++hits;
                 if (collect) {
                     keep_pair(i, j, sphere_a(p), sphere_b(q), reach, row[q]);
-                    leaf_deep |= s.pairs.back().reach - s.pairs.back().depth < inner; // as holds_deep_pair tells it
+                    leaf_deep |= detail::is_deep_pair(s.pairs.back());
                 }
                 else if (exit) // as record() answers an exit search, without the call
                     exit_pair(i, j, sphere_a(p), sphere_b(q), centre(ax, ay, az, p), centre(bx, by, bz, q), reach);

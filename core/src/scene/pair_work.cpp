@@ -89,14 +89,9 @@ void from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b
     w.normal = contact_normal(a, pa, b, pb, pairs, line, a_dynamic, b_dynamic, scratch);
 }
 
-// Whether a pair of `pairs` is deep, deeper than half its reach (which holds the query's
-// inflation), as the walk of collide_all_unless_deep tells it.
+// Whether a pair of `pairs` is deep, as the walk of collide_all_unless_deep tells it.
 bool holds_deep_pair(const std::vector<SpherePair>& pairs) {
-    for (const SpherePair& p : pairs) {
-        const float inner = 0.5f * p.reach, dist = p.reach - p.depth;
-        if (dist < inner) return true;
-    }
-    return false;
+    return std::any_of(pairs.begin(), pairs.end(), is_deep_pair);
 }
 
 // Into `pairs`: the overlapping sphere pairs of active nodes node_a and node_b (spheres grown by
