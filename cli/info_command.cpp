@@ -1,8 +1,11 @@
-// spt info FILE.spt [--json]
+// spt info FILE.spt|MODEL [--json]: a .spt file validated and described, or a mesh with its clips.
 #include "commands.hpp"
+#include "spt/animation.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/spt_file.hpp"
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -57,7 +60,62 @@ nlohmann::json describe(const SptDocument& doc, const std::string& path) {
     return j;
 }
 
+// A mesh file: what import makes of it, and its animation clips.
+nlohmann::json describe_model(const AnimatedMesh& m, const std::string& path) {
+    using nlohmann::json;
+    const ImportReport& r = m.imported.report;
+    json j;
+    j["file"] = path;
+    j["mesh"] = {{"name", m.imported.mesh.name},
+                 {"vertices", m.imported.mesh.positions.size()},
+                 {"triangles", m.imported.mesh.triangles.size()},
+                 {"closed", r.closed},
+                 {"diagonal", m.imported.mesh.diagonal()}};
+    j["skinned"] = m.rig.skinned;
+    j["joints"] = m.rig.joint_count;
+    j["morph_targets"] = m.rig.morph_targets.size();
+    j["clips"] = json::array();
+    for (size_t i = 0; i < m.clips.size(); ++i)
+        j["clips"].push_back({{"index", i},
+                              {"name", m.clips[i].name},
+                              {"duration", m.clips[i].duration},
+                              {"joints", m.clips[i].joints_animated}});
+    j["warnings"] = r.warnings;
+    return j;
+}
+
+int run_model_info(const InfoArgs& a) {
+    const AnimatedMesh m = import_animated_mesh(a.path); // throws naming the file and the problem
+    const nlohmann::json j = describe_model(m, a.path);
+    if (a.json) {
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+    std::cout << a.path << ": mesh, " << j["mesh"]["vertices"] << " vertices, " << j["mesh"]["triangles"]
+              << " triangles, " << (m.imported.report.closed ? "closed" : "open") << ", diagonal "
+              << m.imported.mesh.diagonal() << "\n";
+    if (m.rig.skinned || !m.rig.morph_targets.empty())
+        std::cout << "skin: " << m.rig.joint_count << " joints, " << m.rig.morph_targets.size() << " morph targets\n";
+    std::cout << "clips: " << m.clips.size() << "\n";
+    if (!m.clips.empty()) std::cout << "  index  duration_s  joints  name\n";
+    for (size_t i = 0; i < m.clips.size(); ++i) {
+        char line[64];
+        std::snprintf(line, sizeof line, "  %5zu  %10.4f  %6u  ", i, m.clips[i].duration, m.clips[i].joints_animated);
+        std::cout << line << m.clips[i].name << "\n";
+    }
+    for (const std::string& w : m.imported.report.warnings) std::cout << "warning: " << w << "\n";
+    return 0;
+}
+
+// Whether `path` names a .spt file (by its extension, any case); anything else is read as a mesh.
+bool is_spt(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".spt";
+}
+
 int run_info(const InfoArgs& a) {
+    if (!is_spt(a.path)) return run_model_info(a);
     const SptDocument doc = load_spt(a.path); // throws with the first problem and its offset
     const nlohmann::json j = describe(doc, a.path);
     if (a.json) {
@@ -83,8 +141,8 @@ int run_info(const InfoArgs& a) {
 
 Action add_info_command(CLI::App& app) {
     auto a = std::make_shared<InfoArgs>();
-    CLI::App* c = app.add_subcommand("info", "Describe and validate a .spt file");
-    c->add_option("file", a->path, "The .spt file")->required();
+    CLI::App* c = app.add_subcommand("info", "Describe and validate a .spt file, or list a mesh's animation clips");
+    c->add_option("file", a->path, "The .spt file, or a mesh file (its clips are listed)")->required();
     c->add_flag("--json", a->json, "Print JSON instead of text");
     return [a] { return run_info(*a); };
 }

@@ -65,11 +65,54 @@ TEST_F(InfoCli, BitFlippedFilesExitTwo) {
     }
 }
 
+// A file named .spt is read as one, whatever it holds (a mesh under its own name is described).
 TEST_F(InfoCli, MissingFileAndMeshInsteadOfSptExitTwo) {
     EXPECT_EQ(run_command(spt_binary() + " info /nonexistent.spt").exit_code, 2);
-    const auto r = run_command(spt_binary() + " info " + q(project_meshes() + "/torus.obj"));
+    std::filesystem::copy_file(project_meshes() + "/torus.obj", dir.file("torus.spt"));
+    const auto r = run_command(spt_binary() + " info " + q(dir.file("torus.spt")));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.output.find("not an .spt file"), std::string::npos) << r.output;
+}
+
+} // namespace
+
+namespace {
+
+// A mesh file instead of a .spt: its clips, one line each (index, duration in seconds, joints, name).
+TEST(InfoModelCli, ListsTheClipsOfAnAnimatedMesh) {
+    const auto r = run_command(spt_binary() + " info /usr/share/assimp/models/FBX/animation_with_skeleton.fbx");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("skin: 13 joints"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("      0      0.8333      13  Armature|ArmatureAction"), std::string::npos) << r.output;
+}
+
+TEST(InfoModelCli, JsonListsEachClipWithItsIndexDurationAndJoints) {
+    const auto r = run_command(spt_binary() + " info --json " +
+                               q("/usr/share/assimp/models/MDL/MDL (HL1)/man.mdl") + " 2>/dev/null");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    ASSERT_EQ(j["clips"].size(), 6u);
+    EXPECT_EQ(j["clips"][1]["name"], "walk");
+    EXPECT_EQ(j["clips"][1]["index"], 1);
+    EXPECT_NEAR(j["clips"][1]["duration"].get<double>(), 0.8333, 1e-3);
+    EXPECT_EQ(j["clips"][1]["joints"], 6);
+}
+
+TEST(InfoModelCli, AMeshWithoutClipsSaysNone) {
+    const auto r = run_command(spt_binary() + " info " + q(project_meshes() + "/figure.obj"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("clips: 0"), std::string::npos) << r.output;
+}
+
+TEST(InfoModelCli, AMissingOrUnreadableModelExitsTwoNamingIt) {
+    TempDir dir{"info-model"};
+    std::ofstream(dir.file("junk.gltf")) << "{ not json";
+    for (const std::string& path : {dir.file("none.gltf"), dir.file("junk.gltf")}) {
+        const auto r = run_command(spt_binary() + " info " + q(path));
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_FALSE(r.crashed);
+        EXPECT_NE(r.output.find(path), std::string::npos) << r.output;
+    }
 }
 
 } // namespace

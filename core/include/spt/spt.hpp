@@ -2,6 +2,7 @@
 /// The whole public API of the spt core library in one include: meshes and import,
 /// conversion to sampling trees, the .spt file, collision models, queries, response
 /// and continuous detection. Link spt::core (find_package(spt)).
+#include "spt/animation.hpp"
 #include "spt/broad_phase.hpp"
 #include "spt/ccd.hpp"
 #include "spt/collision_model.hpp"

@@ -1,0 +1,89 @@
+// Posing a rig: node transforms from a clip, then morph targets and linear blend skinning.
+#include "anim/keyframes.hpp"
+#include "spt/animation.hpp"
+#include "spt/error.hpp"
+#include <cmath>
+
+namespace spt {
+
+size_t AnimatedMesh::find_clip(const std::string& name) const {
+    for (size_t i = 0; i < clips.size(); ++i)
+        if (clips[i].name == name) return i;
+    // A decimal index names a clip too (a name wins: a clip may be called "1").
+    if (!name.empty() && name.size() < 10 && name.find_first_not_of("0123456789") == std::string::npos) {
+        const size_t i = std::stoul(name);
+        if (i < clips.size()) return i;
+    }
+    std::string have;
+    for (size_t i = 0; i < clips.size(); ++i) have += (i ? ", " : "") + std::to_string(i) + " '" + clips[i].name + "'";
+    throw Error(ErrorKind::Usage, imported.mesh.name + " has no clip '" + name + "'" +
+                                      (clips.empty() ? std::string(": it has no clips") : "; its clips: " + have));
+}
+
+double clip_time(const Clip& clip, double t, double speed, double offset, bool loop) {
+    const double c = offset + speed * t;
+    if (!(clip.duration > 0) || !std::isfinite(c)) return 0;
+    if (!loop) return std::clamp(c, 0.0, clip.duration);
+    const double w = std::fmod(c, clip.duration);
+    return w < 0 ? w + clip.duration : w;
+}
+
+std::vector<Eigen::Affine3d> pose_nodes(const Rig& rig, const Clip* clip, double time) {
+    std::vector<Eigen::Affine3d> local(rig.nodes.size());
+    for (size_t i = 0; i < rig.nodes.size(); ++i) local[i].matrix() = rig.nodes[i].rest_local;
+    if (clip) {
+        for (const NodeChannel& c : clip->nodes) {
+            const RigNode& n = rig.nodes[c.node];
+            const Eigen::Vector3d t = c.translation.empty() ? n.rest_translation : detail::sample_vector(c.translation, time);
+            const Eigen::Quaterniond r = c.rotation.empty() ? n.rest_rotation : detail::sample_rotation(c.rotation, time);
+            const Eigen::Vector3d s = c.scale.empty() ? n.rest_scale : detail::sample_vector(c.scale, time);
+            Eigen::Affine3d m = Eigen::Affine3d::Identity();
+            m.translate(t).rotate(r).scale(s);
+            local[c.node] = m;
+        }
+    }
+    std::vector<Eigen::Affine3d> global(rig.nodes.size());
+    for (size_t i = 0; i < rig.nodes.size(); ++i) {
+        const int32_t p = rig.nodes[i].parent;
+        global[i] = p < 0 ? local[i] : global[size_t(p)] * local[i]; // parents come first
+    }
+    return global;
+}
+
+void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std::vector<Eigen::Vector3d>& positions) {
+    const Rig& rig = mesh.rig;
+    if (rig.influences.empty()) { // nothing animates it
+        positions = mesh.imported.mesh.positions;
+        return;
+    }
+    std::vector<Eigen::Vector3d> local = rig.mesh_positions;
+    // Morph targets first, in each mesh's own space (glTF: targets, then the skin).
+    std::vector<double> weights(rig.morph_targets.size());
+    for (size_t i = 0; i < weights.size(); ++i) weights[i] = rig.morph_targets[i].default_weight;
+    if (clip) {
+        std::vector<double> w;
+        for (const MorphChannel& c : clip->morphs) {
+            if (c.weights.empty()) continue;
+            detail::sample_weights(c.weights, time, c.target_count, w);
+            for (uint32_t k = 0; k < c.target_count; ++k) weights[c.first_target + k] = w[k];
+        }
+    }
+    for (size_t i = 0; i < weights.size(); ++i) {
+        if (weights[i] == 0) continue;
+        const MorphTarget& m = rig.morph_targets[i];
+        for (size_t k = 0; k < m.vertices.size(); ++k) local[m.vertices[k]] += weights[i] * m.delta[k];
+    }
+    const std::vector<Eigen::Affine3d> nodes = pose_nodes(rig, clip, time);
+    std::vector<Eigen::Affine3d> slot(rig.slots.size());
+    for (size_t i = 0; i < slot.size(); ++i) slot[i] = nodes[rig.slots[i].node] * Eigen::Affine3d(rig.slots[i].offset);
+    positions.resize(local.size());
+    for (size_t v = 0; v < local.size(); ++v) {
+        const VertexInfluences& in = rig.influences[v];
+        Eigen::Vector3d p = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 4; ++k)
+            if (in.weight[k] != 0) p += in.weight[k] * (slot[in.slot[k]] * local[v]);
+        positions[v] = p;
+    }
+}
+
+} // namespace spt
