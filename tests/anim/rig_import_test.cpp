@@ -79,7 +79,7 @@ TEST(RigImport, MorphTargetWeightsFromAClipMoveTheCube) {
     for (int i = 0; i < 2; ++i)
         for (size_t j = 0; j < m.rig.morph_targets[i].vertices.size(); ++j)
             expected[m.rig.morph_targets[i].vertices[j]] += w[i] * m.rig.morph_targets[i].delta[j];
-    const Eigen::Affine3d node = pose_nodes(m.rig, &m.clips[0], t)[m.rig.slots[0].node]; // holds the cube rigidly
+    const Eigen::Affine3d node = pose_nodes(m.rig, &m.clips[0], t)[m.rig.bone_slots[0].node]; // holds the cube rigidly
     for (Eigen::Vector3d& e : expected) e = node * e;
     pose_vertices(m, &m.clips[0], t, p);
     EXPECT_LT(largest_move(p, expected), 1e-12);

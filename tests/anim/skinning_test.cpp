@@ -23,7 +23,7 @@ AnimatedMesh bar(double w_tip) {
     m.rig.nodes = {root, tip};
     Eigen::Matrix4d undo_tip = Eigen::Matrix4d::Identity();
     undo_tip(0, 3) = -1;
-    m.rig.slots = {{0, Eigen::Matrix4d::Identity()}, {1, undo_tip}};
+    m.rig.bone_slots = {{0, Eigen::Matrix4d::Identity()}, {1, undo_tip}};
     m.rig.mesh_positions = {Eigen::Vector3d(1.5, 0, 0)};
     VertexInfluences in;
     in.slot = {0, 1, 0, 0};

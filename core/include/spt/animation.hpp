@@ -90,13 +90,14 @@ struct MorphTarget {
 /// What poses a mesh: its welded vertices in their meshes' spaces and what each follows.
 struct Rig {
     std::vector<RigNode> nodes;
-    std::vector<BoneSlot> slots;
+    std::vector<BoneSlot> bone_slots;
     std::vector<Eigen::Vector3d> mesh_positions; ///< per welded vertex, in its mesh's space
     std::vector<VertexInfluences> influences;    ///< per welded vertex
     std::vector<MorphTarget> morph_targets;
     std::vector<uint8_t> joint_nodes;            ///< per node: 1 if some skinned vertex follows it
     size_t joint_count = 0;                      ///< nodes that are joints of a skin
     bool skinned = false;                        ///< some mesh of the file has bones
+    double scale = 1;                            ///< uniform scale of posed vertices (a scene's `scale`)
 };
 
 /// A mesh with what animates it.

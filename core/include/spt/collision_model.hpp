@@ -13,6 +13,7 @@ namespace spt {
 
 struct ExactData; // the exact level's triangles and triangle tree (private layout)
 struct SolidData; // where the model is solid, for containment (private layout)
+class DeformingModel;
 namespace detail {
 struct ModelAccess;
 }
@@ -51,7 +52,15 @@ public:
 
 private:
     friend struct detail::ModelAccess; // the query code's view of exact_ and solid_ (query/model_access.hpp)
+    friend class DeformingModel;       // poses the layout and the triangles in place
     void init(const SptDocument& doc, const std::string& tree_name);
+    // extent_, reach_ and bounds_reach_ from the layout (and the triangles, when there are some).
+    void measure();
+    // The model on a deformed surface: the spheres follow `points` and `normals` (per sample,
+    // local frame), the exact level's triangles `positions` (per mesh vertex, object frame);
+    // bounds refit. No containment: the solid grid was made for the bind pose.
+    void follow_surface(const std::vector<Eigen::Vector3d>& positions, const std::vector<Eigen::Vector3f>& points,
+                        const std::vector<Eigen::Vector3f>& normals);
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
     std::shared_ptr<const SolidData> solid_;

@@ -66,6 +66,16 @@ public:
     /// Bytes held by the layout.
     size_t memory_bytes() const;
 
+    /// Moves every sphere to follow its sample on a deformed surface: `points` and unit `normals`
+    /// per sample of the SampleSet the layout was built over (local frame, model units), centre
+    /// p - r*n (p if two-sided); then refit_bounds(). The tree's shape, radii and sphere order stay.
+    void follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals);
+    /// Fits every node's bounding sphere to the spheres below it, bottom up: an active node's
+    /// around the middle of its centres' box, an inner node's the smallest holding its two
+    /// children's. A function of the centres alone: refitting after any sequence of poses gives
+    /// what refitting a fresh layout at the last pose gives.
+    void refit_bounds();
+
 private:
     Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
     std::vector<CompactNode> nodes_;

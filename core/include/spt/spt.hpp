@@ -8,6 +8,7 @@
 #include "spt/collision_model.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
+#include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include "spt/node_id.hpp"

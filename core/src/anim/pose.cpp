@@ -74,15 +74,15 @@ void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std:
         for (size_t k = 0; k < m.vertices.size(); ++k) local[m.vertices[k]] += weights[i] * m.delta[k];
     }
     const std::vector<Eigen::Affine3d> nodes = pose_nodes(rig, clip, time);
-    std::vector<Eigen::Affine3d> slot(rig.slots.size());
-    for (size_t i = 0; i < slot.size(); ++i) slot[i] = nodes[rig.slots[i].node] * Eigen::Affine3d(rig.slots[i].offset);
+    std::vector<Eigen::Affine3d> slot(rig.bone_slots.size());
+    for (size_t i = 0; i < slot.size(); ++i) slot[i] = nodes[rig.bone_slots[i].node] * Eigen::Affine3d(rig.bone_slots[i].offset);
     positions.resize(local.size());
     for (size_t v = 0; v < local.size(); ++v) {
         const VertexInfluences& in = rig.influences[v];
         Eigen::Vector3d p = Eigen::Vector3d::Zero();
         for (int k = 0; k < 4; ++k)
             if (in.weight[k] != 0) p += in.weight[k] * (slot[in.slot[k]] * local[v]);
-        positions[v] = p;
+        positions[v] = rig.scale * p;
     }
 }
 

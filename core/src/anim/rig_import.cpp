@@ -89,8 +89,8 @@ struct Reader {
                 const Eigen::Matrix4d offset = to_eigen(bone->mOffsetMatrix);
                 if (!offset.allFinite())
                     fail("the inverse bind matrix of joint '" + std::string(bone->mName.C_Str()) + "' is not finite");
-                const uint32_t slot = uint32_t(rig.slots.size());
-                rig.slots.push_back({it->second, offset});
+                const uint32_t slot = uint32_t(rig.bone_slots.size());
+                rig.bone_slots.push_back({it->second, offset});
                 for (unsigned k = 0; k < bone->mNumWeights; ++k) {
                     const aiVertexWeight& w = bone->mWeights[k];
                     if (w.mVertexId >= m->mNumVertices) continue;
@@ -101,8 +101,8 @@ struct Reader {
                 }
             }
         } else {
-            const uint32_t slot = uint32_t(rig.slots.size());
-            rig.slots.push_back({in.node, Eigen::Matrix4d::Identity()}); // hangs rigidly from its node
+            const uint32_t slot = uint32_t(rig.bone_slots.size());
+            rig.bone_slots.push_back({in.node, Eigen::Matrix4d::Identity()}); // hangs rigidly from its node
             for (auto& j : joints) j.push_back({slot, 1.0});
         }
         for (unsigned v = 0; v < m->mNumVertices; ++v) {
@@ -254,7 +254,7 @@ AnimatedMesh import_animated_mesh(const std::string& path, const ImportOptions& 
             if (scene->mMeshes[in.mesh]->HasBones())
                 for (size_t v = in.first_raw; v < in.first_raw + scene->mMeshes[in.mesh]->mNumVertices; ++v)
                     for (int k = 0; k < 4; ++k)
-                        if (r.raw_influence[v].weight[k] > 0) rig.joint_nodes[rig.slots[r.raw_influence[v].slot[k]].node] = 1;
+                        if (r.raw_influence[v].weight[k] > 0) rig.joint_nodes[rig.bone_slots[r.raw_influence[v].slot[k]].node] = 1;
     rig.joint_count = size_t(std::count(rig.joint_nodes.begin(), rig.joint_nodes.end(), 1));
     const bool animated = rig.skinned || scene->mNumAnimations > 0 || !rig.morph_targets.empty();
     if (animated) {

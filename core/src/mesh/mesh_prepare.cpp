@@ -1,6 +1,7 @@
 // Turns raw triangles into a TriangleMesh: weld, topology report, orientation fix, normals.
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
+#include "mesh/vertex_normals.hpp"
 #include "mesh/part_nesting.hpp"
 #include "mesh/weld.hpp"
 #include "base/cancel.hpp"
@@ -146,38 +147,7 @@ std::vector<uint32_t> find_duplicates(const TriangleMesh& m, ImportReport& r) {
 // `skip`: per face, 1 for the later copies of duplicate faces (wound the other way, a copy
 // would cancel the normal it duplicates); empty: none is skipped.
 void compute_normals(TriangleMesh& m, ImportReport& report, double area_eps, const std::vector<uint8_t>& skip) {
-    const size_t n = m.positions.size();
-    m.normals.assign(n, Eigen::Vector3d::Zero());
-    m.normal_valid.assign(n, 0);
-    for (size_t f = 0; f < m.triangles.size(); ++f) {
-        if (!skip.empty() && skip[f]) continue;
-        const auto& t = m.triangles[f];
-        const Eigen::Vector3d& p0 = m.positions[t[0]];
-        const Eigen::Vector3d& p1 = m.positions[t[1]];
-        const Eigen::Vector3d& p2 = m.positions[t[2]];
-        const Eigen::Vector3d fn = (p1 - p0).cross(p2 - p0);
-        const double len = fn.norm();
-        if (!(len > area_eps)) continue; // degenerate: no direction to contribute
-        const Eigen::Vector3d unit = fn / len;
-        // Edge k runs from corner k to corner k + 1; corner k's other edge is edge k + 2 reversed
-        // (a - b is exactly -(b - a), and so are its length and direction).
-        const Eigen::Vector3d edge[3] = {(p1 - p0).normalized(), (p2 - p1).normalized(), (p0 - p2).normalized()};
-        for (int k = 0; k < 3; ++k) {
-            const Eigen::Vector3d e1 = edge[k];
-            const Eigen::Vector3d e2 = -edge[(k + 2) % 3];
-            const double angle = std::acos(std::clamp(e1.dot(e2), -1.0, 1.0));
-            m.normals[t[k]] += angle * unit;
-        }
-    }
-    for (size_t i = 0; i < n; ++i) {
-        const double len = m.normals[i].norm();
-        if (len > 1e-12 && std::isfinite(len)) {
-            m.normals[i] /= len;
-            m.normal_valid[i] = 1;
-        } else {
-            m.normals[i].setZero();
-        }
-    }
+    detail::angle_weighted_normals(m.positions, m.triangles, area_eps, skip, m.normals, m.normal_valid);
     report.vertices_without_normal = size_t(std::count(m.normal_valid.begin(), m.normal_valid.end(), 0));
 }
 

@@ -15,6 +15,32 @@ namespace {
 
 using detail::round_up;
 
+// Per triangle, a float ball holding it (the tree's leaves and the walk test them).
+void fit_triangle_spheres(ExactData& e) {
+    const size_t nt = e.triangles.size();
+    e.tri_sphere.assign(nt * 4, 0);
+    for (uint32_t f = 0; f < nt; ++f) {
+        const auto& t = e.triangles[f];
+        const Eigen::Vector3d &a = e.positions[t[0]], &b = e.positions[t[1]], &c = e.positions[t[2]];
+        const Eigen::Vector3d centre = (a + b + c) / 3.0;
+        const double r = std::max({(a - centre).norm(), (b - centre).norm(), (c - centre).norm()});
+        // The float centre moved by rounding: grow the radius by that distance.
+        const Eigen::Vector3d fc = detail::float_rounded(centre);
+        for (int k = 0; k < 3; ++k) e.tri_sphere[4 * f + k] = float(fc[k]);
+        e.tri_sphere[4 * f + 3] = round_up(r + (fc - centre).norm());
+    }
+}
+
+// Grows extent and reach to hold every triangle (local positions, `o` the local origin).
+void measure_triangles(const ExactData& e, const Eigen::Vector3d& o, double& extent, double& reach) {
+    for (const Triangle& t : e.triangles)
+        for (uint32_t v : t) {
+            const Eigen::Vector3d& p = e.positions[v];
+            extent = std::max(extent, p.norm());
+            reach = std::max(reach, (p + o).norm());
+        }
+}
+
 const SamplingTree& pick_tree(const SptDocument& doc, const std::string& name) {
     if (doc.trees.empty()) throw_bad_input(doc.mesh.name, "the document holds no sampling tree");
     if (name.empty()) return doc.trees.front();
@@ -54,19 +80,8 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     for (size_t f = 0; f < e.closed.size(); ++f)
         if (mesh.copies_earlier_face(f)) e.closed[f] = 0;
     const size_t nt = e.triangles.size();
-    e.tri_sphere.assign(nt * 4, 0);
-    for (uint32_t f = 0; f < nt; ++f) {
-        const auto& t = e.triangles[f];
-        const Eigen::Vector3d &a = e.positions[t[0]], &b = e.positions[t[1]], &c = e.positions[t[2]];
-        const Eigen::Vector3d centre = (a + b + c) / 3.0;
-        const double r = std::max({(a - centre).norm(), (b - centre).norm(), (c - centre).norm()});
-        // The float centre moved by rounding: grow the radius by that distance.
-        const Eigen::Vector3d fc = detail::float_rounded(centre);
-        for (int k = 0; k < 3; ++k) e.tri_sphere[4 * f + k] = float(fc[k]);
-        e.tri_sphere[4 * f + 3] = round_up(r + (fc - centre).norm());
-        extent_ = std::max({extent_, a.norm(), b.norm(), c.norm()});
-        reach_ = std::max({reach_, (a + o).norm(), (b + o).norm(), (c + o).norm()});
-    }
+    fit_triangle_spheres(e);
+    measure_triangles(e, o, extent_, reach_);
     detail::build_triangle_tree(e);
     // Only the spheres of closed parts wall in a solid at the sphere levels, as only closed
     // triangles do at the exact level: an open part encloses nothing, however nearly closed.
@@ -103,6 +118,12 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     const SamplingTree& t = pick_tree(doc, tree_name);
     tree_ = CompactTree(t, doc.samples);
     diagonal_ = doc.mesh.diagonal;
+    max_leaf_ = 0;
+    for (const CompactNode& n : tree_.nodes()) max_leaf_ = std::max(max_leaf_, n.count);
+    measure();
+}
+
+void CollisionModel::measure() {
     extent_ = reach_ = 0;
     const Eigen::Vector3d& o = origin();
     auto grow = [&](const Eigen::Vector3d& local_centre, double radius) {
@@ -111,7 +132,6 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     };
     for (const CompactNode& n : tree_.nodes()) {
         if (!n.is_active()) continue;
-        max_leaf_ = std::max(max_leaf_, n.count);
         for (uint32_t k = n.first; k < n.first + n.count; ++k) grow(tree_.sphere_center(n, k).cast<double>(), n.ss_radius);
     }
     const auto& nodes = tree_.nodes();
@@ -129,6 +149,22 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     }
     // Node spheres too: continuous detection grows every tested sphere by the motion of its farthest point.
     for (const CompactNode& n : tree_.nodes()) grow(Eigen::Vector3d(n.center[0], n.center[1], n.center[2]), n.bv_radius);
+    if (exact_) measure_triangles(*exact_, o, extent_, reach_);
+}
+
+void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& positions,
+                                    const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals) {
+    tree_.follow_samples(points, normals);
+    if (has_mesh()) {
+        // Shared with copies of this model: those keep the pose they had.
+        auto e = exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(exact_) : std::make_shared<ExactData>(*exact_);
+        for (size_t v = 0; v < e->positions.size(); ++v) e->positions[v] = positions[v] - origin();
+        fit_triangle_spheres(*e);
+        detail::build_triangle_tree(*e);
+        exact_ = std::move(e);
+    }
+    solid_.reset(); // made for the bind pose
+    measure();
 }
 
 size_t CollisionModel::memory_bytes() const {

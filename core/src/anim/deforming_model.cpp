@@ -1,0 +1,93 @@
+// Samples that follow a deforming mesh (spt/deforming_model.hpp).
+#include "spt/deforming_model.hpp"
+#include "mesh/vertex_normals.hpp"
+#include "sampling/encoding.hpp"
+#include "spt/error.hpp"
+#include "spt/samples.hpp"
+
+namespace spt {
+namespace {
+
+// Barycentric weights of p on triangle (a, b, c), from its projection on the triangle's plane.
+Eigen::Vector3d barycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                            const Eigen::Vector3d& c) {
+    const Eigen::Vector3d v0 = b - a, v1 = c - a, v2 = p - a;
+    const double d00 = v0.dot(v0), d01 = v0.dot(v1), d11 = v1.dot(v1), d20 = v2.dot(v0), d21 = v2.dot(v1);
+    const double den = d00 * d11 - d01 * d01;
+    if (!(den > 0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3}; // a degenerate face: its middle
+    const double v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
+    return {1 - v - w, v, w};
+}
+
+// A normal as the .spt file stores it (octahedral-snapped), so that the bind pose gives the
+// document's own spheres.
+Eigen::Vector3f stored(const Eigen::Vector3d& n) { return decode_normal(encode_normal(n.cast<float>())); }
+
+} // namespace
+
+DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const AnimatedMesh> mesh,
+                               const std::string& tree_name)
+    : mesh_(std::move(mesh)), model_(doc, mesh_->imported.mesh, tree_name) {
+    const TriangleMesh& m = mesh_->imported.mesh;
+    const SampleSet& s = doc.samples;
+    bind_points_ = s.points, bind_normals_ = s.normals;
+    source_ = s.sources;
+    barycentric_.assign(s.size(), Eigen::Vector3d::Zero());
+    bind_at_.resize(s.size());
+    for (size_t i = 0; i < s.size(); ++i) {
+        const uint32_t src = s.source_index(i);
+        if (s.is_face_sample(i)) {
+            const Triangle& t = m.triangles[src];
+            barycentric_[i] = barycentric(s.position(i), m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+            const Eigen::Vector3d& w = barycentric_[i];
+            bind_at_[i] = w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]];
+        } else {
+            bind_at_[i] = m.positions[src];
+        }
+    }
+    vertices_ = m.positions;
+}
+
+void DeformingModel::pose(const Clip* clip, double time) {
+    if (!clip) return pose_on(mesh_->imported.mesh.positions);
+    std::vector<Eigen::Vector3d> p;
+    pose_vertices(*mesh_, clip, time, p);
+    pose_on(p);
+}
+
+void DeformingModel::pose_on(const std::vector<Eigen::Vector3d>& positions) {
+    const TriangleMesh& m = mesh_->imported.mesh;
+    if (positions.size() != m.positions.size())
+        throw Error(ErrorKind::Usage, m.name + ": a pose of " + std::to_string(positions.size()) +
+                                          " vertices for a mesh of " + std::to_string(m.positions.size()));
+    for (const Eigen::Vector3d& p : positions)
+        if (!p.allFinite()) throw_bad_input(m.name, "a posed vertex is not finite");
+    vertices_ = positions;
+    const double diag = m.diagonal();
+    detail::angle_weighted_normals(vertices_, m.triangles, 1e-14 * diag * diag, m.is_copy, vertex_normals_, normal_valid_);
+    const size_t n = source_.size();
+    points_.resize(n), normals_.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t src = source_[i] & kMaxSourceIndex;
+        Eigen::Vector3d at, normal;
+        if (source_[i] & kFaceSampleBit) {
+            const Triangle& t = m.triangles[src];
+            const Eigen::Vector3d &a = vertices_[t[0]], &b = vertices_[t[1]], &c = vertices_[t[2]];
+            const Eigen::Vector3d& w = barycentric_[i];
+            at = w[0] * a + w[1] * b + w[2] * c;
+            normal = (b - a).cross(c - a);
+            // A face squeezed flat has no normal of its own: its corners' then, else the bind's.
+            if (!(normal.norm() > 0)) normal = w[0] * vertex_normals_[t[0]] + w[1] * vertex_normals_[t[1]] + w[2] * vertex_normals_[t[2]];
+        } else {
+            at = vertices_[src];
+            normal = normal_valid_[src] ? vertex_normals_[src] : Eigen::Vector3d::Zero();
+        }
+        // The stored point plus how far its surface point moved: the bind pose gives the document's
+        // spheres bit for bit.
+        points_[i] = bind_points_[i] + (at - bind_at_[i]).cast<float>();
+        normals_[i] = normal.norm() > 0 ? stored(normal.normalized()) : bind_normals_[i];
+    }
+    model_.follow_surface(vertices_, points_, normals_);
+}
+
+} // namespace spt

@@ -1,0 +1,16 @@
+#pragma once
+// Angle-weighted vertex normals: what import computes for a mesh, and what a deformed pose of it
+// computes again (anim/), so that both follow one rule.
+#include "spt/mesh.hpp"
+#include <vector>
+
+namespace spt::detail {
+
+// Unit outward normal per vertex, the sum over its faces of the face's unit normal times the
+// face's angle at the vertex; `valid` is 1 where that sum has a direction. Faces of twice-area
+// at most `area_eps` contribute nothing; `skip` (per face, may be empty) leaves faces out.
+void angle_weighted_normals(const std::vector<Eigen::Vector3d>& positions, const std::vector<Triangle>& triangles,
+                            double area_eps, const std::vector<uint8_t>& skip, std::vector<Eigen::Vector3d>& normals,
+                            std::vector<uint8_t>& valid);
+
+} // namespace spt::detail

@@ -1,0 +1,70 @@
+// A query layout following a deformed surface: spheres moved with their samples, bounds refit
+// bottom up (docs/deforming.md, "Refit").
+#include "spt/compact_tree.hpp"
+#include "base/float_round.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt {
+namespace {
+
+int8_t snorm8(float v) { return int8_t(detail::round_half_away(std::clamp(v, -1.0f, 1.0f) * 127.0f)); }
+
+// A ball stored in float that holds the ball (c, r) computed in double: the centre rounded, the
+// radius grown by how far rounding moved it and rounded up.
+void store_ball(CompactNode& n, const Eigen::Vector3d& c, double r) {
+    const Eigen::Vector3d f = detail::float_rounded(c);
+    n.center[0] = float(f.x()), n.center[1] = float(f.y()), n.center[2] = float(f.z());
+    n.bv_radius = detail::round_up(r + (f - c).norm());
+}
+
+} // namespace
+
+void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals) {
+    for (const CompactNode& n : nodes_) {
+        if (!n.is_active()) continue;
+        float* block = centers_.data() + 3 * size_t(n.first);
+        for (uint32_t k = 0; k < n.count; ++k) {
+            const uint32_t sphere = n.first + k, s = sample_index_[sphere];
+            const bool flat = !two_sided_.empty() && two_sided_[sphere];
+            const Eigen::Vector3f c = flat ? points[s] : Eigen::Vector3f(points[s] - n.ss_radius * normals[s]);
+            block[k] = c.x(), block[n.count + k] = c.y(), block[2 * n.count + k] = c.z();
+            nx_[sphere] = snorm8(normals[s].x()), ny_[sphere] = snorm8(normals[s].y()), nz_[sphere] = snorm8(normals[s].z());
+        }
+    }
+    refit_bounds();
+    if (!two_sided_.empty()) build_node_discs();
+}
+
+void CompactTree::refit_bounds() {
+    // Children follow their parent: from the last node back, every child is fitted before its parent.
+    for (size_t i = nodes_.size(); i-- > 0;) {
+        CompactNode& n = nodes_[i];
+        if (n.is_active()) {
+            Eigen::Vector3d lo = sphere_center(n, n.first).cast<double>(), hi = lo;
+            for (uint32_t k = n.first + 1; k < n.first + n.count; ++k) {
+                const Eigen::Vector3d c = sphere_center(n, k).cast<double>();
+                lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+            }
+            const Eigen::Vector3d mid = 0.5 * (lo + hi);
+            double far = 0;
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                far = std::max(far, (sphere_center(n, k).cast<double>() - mid).norm());
+            store_ball(n, mid, far + double(n.ss_radius));
+            continue;
+        }
+        const CompactNode &a = nodes_[i + 1], &b = nodes_[n.first];
+        const Eigen::Vector3d ca(a.center[0], a.center[1], a.center[2]), cb(b.center[0], b.center[1], b.center[2]);
+        const double ra = a.bv_radius, rb = b.bv_radius, d = (cb - ca).norm();
+        if (d + rb <= ra) {
+            store_ball(n, ca, ra);
+        } else if (d + ra <= rb) {
+            store_ball(n, cb, rb);
+        } else { // the smallest ball holding both: along the line through their centres
+            const double r = 0.5 * (d + ra + rb);
+            store_ball(n, ca + ((r - ra) / d) * (cb - ca), r);
+        }
+    }
+}
+
+} // namespace spt

@@ -1,0 +1,189 @@
+// Samples that follow a deforming mesh, bounds refit, queries on a pose (core/src/anim/
+// deforming_model.cpp, core/src/tree/compact_refit.cpp).
+#include "spt/convert.hpp"
+#include "spt/deforming_model.hpp"
+#include "spt/query.hpp"
+#include "meshgen.hpp"
+#include <gtest/gtest.h>
+
+namespace spt {
+namespace {
+
+// A bar 2 long along x (0.4 thick), subdivided, whose right half turns about z at x = 0 with
+// joint "tip"; vertices within 0.25 of x = 0 blend the two joints.
+std::shared_ptr<AnimatedMesh> bending_bar() {
+    auto m = std::make_shared<AnimatedMesh>();
+    m->imported = meshgen::prepare(meshgen::box(2, 0.4, 0.4, 8), "bar.obj");
+    Rig& rig = m->rig;
+    RigNode root;
+    root.name = "root";
+    root.rest_local.setIdentity();
+    root.rest_translation.setZero(), root.rest_rotation.setIdentity(), root.rest_scale.setOnes();
+    RigNode tip = root;
+    tip.name = "tip", tip.parent = 0;
+    rig.nodes = {root, tip};
+    rig.bone_slots = {{0, Eigen::Matrix4d::Identity()}, {1, Eigen::Matrix4d::Identity()}};
+    rig.skinned = true;
+    rig.joint_nodes = {1, 1};
+    rig.joint_count = 2;
+    for (const Eigen::Vector3d& p : m->imported.mesh.positions) {
+        rig.mesh_positions.push_back(p);
+        const double w = std::clamp((p.x() + 0.25) / 0.5, 0.0, 1.0);
+        VertexInfluences in;
+        in.slot = {0, 1, 0, 0};
+        in.weight = {1 - w, w, 0, 0};
+        rig.influences.push_back(in);
+    }
+    Clip bend;
+    bend.name = "bend", bend.duration = 1;
+    NodeChannel ch;
+    ch.node = 1;
+    ch.rotation.times = {0, 1};
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+    ch.rotation.values = {Eigen::Vector4d(0, 0, 0, 1), Eigen::Vector4d(q.x(), q.y(), q.z(), q.w())};
+    bend.nodes = {ch};
+    m->clips = {bend};
+    return m;
+}
+
+struct Bar {
+    std::shared_ptr<AnimatedMesh> mesh = bending_bar();
+    SptDocument doc = make_document(mesh->imported.mesh);
+};
+
+const Bar& bar() {
+    static const Bar b;
+    return b;
+}
+
+// Every sphere below a node lies in the node's bounding ball, in the float the walk uses.
+void expect_bounds_hold(const CompactTree& t) {
+    const auto& nodes = t.nodes();
+    std::vector<std::pair<uint32_t, uint32_t>> stack; // (node, ancestor)
+    for (uint32_t a = 0; a < nodes.size(); ++a) {
+        stack.assign(1, {a, a});
+        const Eigen::Vector3f ca(nodes[a].center[0], nodes[a].center[1], nodes[a].center[2]);
+        while (!stack.empty()) {
+            const uint32_t i = stack.back().first;
+            stack.pop_back();
+            const CompactNode& n = nodes[i];
+            if (!n.is_active()) {
+                stack.push_back({i + 1, a}), stack.push_back({n.first, a});
+                continue;
+            }
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                ASSERT_LE((t.sphere_center(n, k) - ca).norm() + n.ss_radius, nodes[a].bv_radius) << "node " << a;
+        }
+    }
+}
+
+TEST(DeformingModel, TheBindPoseGivesTheDocumentsSpheresBitForBit) {
+    DeformingModel dm(bar().doc, bar().mesh);
+    const CollisionModel rigid(bar().doc, bar().mesh->imported.mesh);
+    dm.pose(nullptr, 0);
+    const CompactTree &a = dm.model().tree(), &b = rigid.tree();
+    ASSERT_EQ(a.sphere_count(), b.sphere_count());
+    for (size_t i = 0; i < a.nodes().size(); ++i) {
+        const CompactNode &na = a.nodes()[i], &nb = b.nodes()[i];
+        if (!na.is_active()) continue;
+        for (uint32_t k = na.first; k < na.first + na.count; ++k) ASSERT_EQ(a.sphere_center(na, k), b.sphere_center(nb, k));
+    }
+}
+
+TEST(DeformingModel, BoundsHoldTheirSpheresAtEveryPose) {
+    DeformingModel dm(bar().doc, bar().mesh);
+    for (double t : {0.0, 0.3, 0.7, 1.0}) {
+        dm.pose(&bar().mesh->clips[0], t);
+        expect_bounds_hold(dm.model().tree());
+    }
+}
+
+TEST(DeformingModel, ARefitAfterManyPosesEqualsAFreshOneAtTheLastPose) {
+    DeformingModel walked(bar().doc, bar().mesh), fresh(bar().doc, bar().mesh);
+    for (double t : {0.9, 0.1, 0.55, 0.3}) walked.pose(&bar().mesh->clips[0], t);
+    fresh.pose(&bar().mesh->clips[0], 0.3);
+    const auto &a = walked.model().tree().nodes(), &b = fresh.model().tree().nodes();
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        for (int k = 0; k < 3; ++k) ASSERT_EQ(a[i].center[k], b[i].center[k]) << i;
+        ASSERT_EQ(a[i].bv_radius, b[i].bv_radius) << i;
+    }
+    EXPECT_EQ(walked.model().extent(), fresh.model().extent());
+}
+
+TEST(DeformingModel, VertexSpheresSitBehindTheirPosedVertexAlongItsNormal) {
+    DeformingModel dm(bar().doc, bar().mesh);
+    dm.pose(&bar().mesh->clips[0], 1.0);
+    const SampleSet& s = bar().doc.samples;
+    const CompactTree& t = dm.model().tree();
+    size_t checked = 0;
+    for (const CompactNode& n : t.nodes()) {
+        if (!n.is_active()) continue;
+        for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+            const uint32_t i = t.sample_index()[k];
+            if (s.is_face_sample(i)) continue;
+            const Eigen::Vector3d v = dm.vertices()[s.source_index(i)] - s.origin;
+            // The sphere touches the surface at its vertex: centre r away from it.
+            EXPECT_NEAR((t.sphere_center(n, k).cast<double>() - v).norm(), n.ss_radius, 1e-3 * n.ss_radius + 1e-6);
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 0u);
+}
+
+TEST(DeformingModel, FaceSamplesStayOnTheirPosedTriangle) {
+    DeformingModel dm(bar().doc, bar().mesh);
+    dm.pose(&bar().mesh->clips[0], 0.6);
+    const SampleSet& s = bar().doc.samples;
+    const CompactTree& t = dm.model().tree();
+    const TriangleMesh& m = bar().mesh->imported.mesh;
+    for (const CompactNode& n : t.nodes()) {
+        if (!n.is_active()) continue;
+        for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+            const uint32_t i = t.sample_index()[k];
+            if (!s.is_face_sample(i)) continue;
+            const Triangle& f = m.triangles[s.source_index(i)];
+            const Eigen::Vector3d a = dm.vertices()[f[0]], b = dm.vertices()[f[1]], c = dm.vertices()[f[2]];
+            const Eigen::Vector3d normal = (b - a).cross(c - a).normalized();
+            // The surface point is r along the normal from the centre: on the triangle's plane.
+            const Eigen::Vector3d p = t.sphere_center(n, k).cast<double>() + s.origin + double(n.ss_radius) * normal;
+            EXPECT_NEAR((p - a).dot(normal), 0, 2e-3 * n.ss_radius + 1e-6);
+        }
+    }
+}
+
+// An obstacle above the bar's tip half: apart at rest, crossed by the tip's walls once it turns up.
+TEST(DeformingModel, QueriesAtEveryLevelSeeTheDeformedPose) {
+    const ImportedMesh box = meshgen::prepare(meshgen::box(0.6, 0.3, 0.6), "box.obj");
+    const SptDocument box_doc = make_document(box.mesh);
+    const CollisionModel obstacle(box_doc, box.mesh);
+    DeformingModel dm(bar().doc, bar().mesh);
+    const Pose at_rest_pose{Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero()};
+    const Pose above{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0.8, 0)};
+    QueryScratch scratch;
+    for (QueryLevel level : {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact}) {
+        QueryOptions o;
+        o.level = level;
+        dm.pose(nullptr, 0);
+        if (level != QueryLevel::Bounds) {
+            EXPECT_FALSE(collide(dm.model(), at_rest_pose, obstacle, above, o, scratch).collide);
+        }
+        dm.pose(&bar().mesh->clips[0], 1.0);
+        EXPECT_TRUE(collide(dm.model(), at_rest_pose, obstacle, above, o, scratch).collide) << int(level);
+        o.mode = QueryMode::Deepest;
+        if (level != QueryLevel::Bounds) {
+            EXPECT_GT(collide(dm.model(), at_rest_pose, obstacle, above, o, scratch).deepest.depth, 0.0) << int(level);
+        }
+    }
+}
+
+TEST(DeformingModel, APoseOfTheWrongSizeOrNotFiniteIsRefused) {
+    DeformingModel dm(bar().doc, bar().mesh);
+    EXPECT_THROW(dm.pose_on({Eigen::Vector3d::Zero()}), Error);
+    std::vector<Eigen::Vector3d> p = bar().mesh->imported.mesh.positions;
+    p[3].x() = NAN;
+    EXPECT_THROW(dm.pose_on(p), Error);
+}
+
+} // namespace
+} // namespace spt
