@@ -84,20 +84,20 @@ int run_simulate(const SimulateArgs& a) {
     if (!a.contacts.empty()) contacts = std::make_unique<Output>(a.contacts);
     std::fprintf(out.get(), "step,time,candidate_pairs,colliding_pairs,node_pairs,sphere_tests,triangle_tests,"
                             "depth_queries,ccd_queries,responses,ns_broad,ns_narrow,ns_depth,ns_ccd,ns_response,"
-                            "state_hash\n");
+                            "ns_deform,ns_dynamics,state_hash\n");
     if (contacts) std::fprintf(contacts->get(), "step,a,b,depth,px,py,pz,nx,ny,nz,toi\n");
     const bool tty = ::isatty(2) && steps >= 100;
     const int64_t every = std::max<int64_t>(1, steps / 100);
     for (int64_t i = 0; i < steps; ++i) {
         const StepResult& r = sim.step();
         const StepCounters& c = r.counters;
-        std::fprintf(out.get(), "%d,%.9g,%llu,%llu,%llu,%llu,%llu,%llu,%llu,%llu,%lld,%lld,%lld,%lld,%lld,%016llx\n",
+        std::fprintf(out.get(), "%d,%.9g,%llu,%llu,%llu,%llu,%llu,%llu,%llu,%llu,%lld,%lld,%lld,%lld,%lld,%lld,%lld,%016llx\n",
                      r.step, r.time, (unsigned long long)c.candidate_pairs, (unsigned long long)c.colliding_pairs,
                      (unsigned long long)c.node_pairs, (unsigned long long)c.sphere_tests,
                      (unsigned long long)c.triangle_tests, (unsigned long long)c.depth_queries,
                      (unsigned long long)c.ccd_queries, (unsigned long long)c.responses, (long long)c.ns_broad,
                      (long long)c.ns_narrow, (long long)c.ns_depth, (long long)c.ns_ccd, (long long)c.ns_response,
-                     (unsigned long long)r.state_hash);
+                     (long long)c.ns_deform, (long long)c.ns_dynamics, (unsigned long long)r.state_hash);
         if (contacts) write_contacts(contacts->get(), sim.scene(), r);
         if (tty && ((i + 1) % every == 0 || i + 1 == steps)) draw_progress(i + 1, steps);
     }

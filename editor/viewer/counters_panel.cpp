@@ -11,7 +11,8 @@ const QStringList& steps_csv_columns() {
     static const QStringList columns = {"step",        "time",         "candidate_pairs", "colliding_pairs",
                                         "node_pairs",  "sphere_tests", "triangle_tests",  "depth_queries",
                                         "ccd_queries", "responses",    "ns_broad",        "ns_narrow",
-                                        "ns_depth",    "ns_ccd",       "ns_response",     "state_hash"};
+                                        "ns_depth",    "ns_ccd",       "ns_response",     "ns_deform",
+                                        "ns_dynamics", "state_hash"};
     return columns;
 }
 
@@ -64,6 +65,8 @@ void CountersPanel::show_step(const StepResult* step, EffectSet effects, uint64_
         QString::number(c.ns_depth),
         QString::number(c.ns_ccd),
         QString::number(c.ns_response),
+        QString::number(c.ns_deform),
+        QString::number(c.ns_dynamics),
         QString("%1").arg(qulonglong(state_hash), 16, 16, QChar('0')),
     };
     for (int r = 0; r < values.size(); ++r) table_->item(r, 1)->setText(values[r]);

@@ -28,7 +28,7 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
 }
 
 const char* kSteps = "step,time,candidate_pairs,colliding_pairs,node_pairs,sphere_tests,triangle_tests,depth_queries,"
-                     "ccd_queries,responses,ns_broad,ns_narrow,ns_depth,ns_ccd,ns_response,state_hash";
+                     "ccd_queries,responses,ns_broad,ns_narrow,ns_depth,ns_ccd,ns_response,ns_deform,ns_dynamics,state_hash";
 const char* kContacts = "step,a,b,depth,px,py,pz,nx,ny,nz,toi";
 
 // b moves into a, which sits turned and moved away from the origin.
@@ -62,10 +62,10 @@ TEST_F(CliSimulate, HeadersAreExactlyTheIssuesAndOneRowPerStep) {
     std::getline(cin, header);
     EXPECT_EQ(header, kContacts);
     for (size_t i = 1; i < steps.size(); ++i) {
-        ASSERT_EQ(steps[i].size(), 16u);
+        ASSERT_EQ(steps[i].size(), 18u);
         EXPECT_EQ(steps[i][0], std::to_string(i));
-        EXPECT_EQ(steps[i][15].size(), 16u);
-        EXPECT_EQ(steps[i][15].find_first_not_of("0123456789abcdef"), std::string::npos);
+        EXPECT_EQ(steps[i][17].size(), 16u);
+        EXPECT_EQ(steps[i][17].find_first_not_of("0123456789abcdef"), std::string::npos);
     }
     const auto contacts = read_csv(dir.file("c.csv"));
     ASSERT_GT(contacts.size(), 1u);
@@ -138,7 +138,7 @@ TEST_F(CliSimulate, BadScenesAndOptionsGetTheirExitCodes) {
 std::vector<std::string> hash_column(const std::string& csv) {
     std::vector<std::string> h;
     for (const auto& row : read_csv(csv))
-        if (row[0] != "step") h.push_back(row[15]);
+        if (row[0] != "step") h.push_back(row[17]);
     return h;
 }
 

@@ -2,6 +2,7 @@
 /// Scenes: objects with collision models, poses and motions, and the closed list of
 /// effects a simulation of them computes (docs/scenes.md). World frame, model units,
 /// seconds. Scene files are JSON; JSON stays inside the library.
+#include "spt/animation.hpp"
 #include "spt/collision_model.hpp"
 #include "spt/pose.hpp"
 #include "spt/query.hpp"
@@ -24,10 +25,11 @@ enum class Effect : uint8_t {
     Response, ///< colliding objects moved back by the rule (needs depth)
     Ccd,      ///< time of impact within the step for moving pairs (needs contacts and motion)
     Exact,    ///< contacts confirmed by the exact level (needs contacts)
+    Deform,   ///< animated objects take their clip's pose at each step's time (docs/deforming.md)
 };
 
 /// Number of effects in the closed list.
-constexpr int kEffectCount = 8;
+constexpr int kEffectCount = 9;
 
 /// The name of an effect as scene files and `--effects` spell it.
 const char* effect_name(Effect e);
@@ -75,6 +77,15 @@ struct Keyframe {
 /// around t; held at the first and last keyframes outside them.
 Pose path_pose(const std::vector<Keyframe>& path, double t);
 
+/// How an object's animation clip plays (objects[].animation): at scene time t the clip's time is
+/// offset + speed * t, wrapped into the clip when `loop`, held at its ends otherwise (clip_time).
+struct AnimationSettings {
+    std::string clip = "0"; ///< the clip's name, or its index in decimal
+    double speed = 1;       ///< clip seconds per scene second
+    double offset = 0;      ///< clip seconds at scene time 0
+    bool loop = true;       ///< wrap into the clip's duration
+};
+
 /// One object of a scene.
 struct SceneObject {
     std::string name;         ///< unique within the scene
@@ -87,6 +98,11 @@ struct SceneObject {
     Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero(); ///< world frame, radians / s
     std::vector<Keyframe> path; ///< keyframes in increasing t (MotionKind::Path)
     std::shared_ptr<const CollisionModel> model; ///< shared between objects of the same model
+    bool animated = false;          ///< has objects[].animation
+    AnimationSettings animation;    ///< how its clip plays (animated)
+    size_t clip = 0;                ///< index of its clip in animated_mesh->clips (load_models)
+    std::shared_ptr<const AnimatedMesh> animated_mesh; ///< its mesh, rig and clips (animated, load_models)
+    std::shared_ptr<const SptDocument> document;       ///< the document its model came from (animated, load_models)
     /// Broad-phase sphere in the object frame: holds every sampling sphere and, with a mesh,
     /// every triangle of the model (model units).
     Eigen::Vector3d bound_center = Eigen::Vector3d::Zero();

@@ -5,6 +5,7 @@
 /// back along their motion (paper §3-4-3); it is not a constraint solver. Deterministic
 /// for any number of threads. World frame, model units, seconds.
 #include "spt/broad_phase.hpp"
+#include "spt/deforming_model.hpp"
 #include "spt/query_scratch.hpp"
 #include "spt/scene.hpp"
 #include "spt/task_system.hpp"
@@ -28,6 +29,8 @@ struct StepCounters {
     int64_t ns_depth = 0;         ///< nanoseconds of the depth queries
     int64_t ns_ccd = 0;           ///< nanoseconds of the continuous queries
     int64_t ns_response = 0;      ///< nanoseconds of the response
+    int64_t ns_deform = 0;        ///< nanoseconds of posing the animated objects (deform)
+    int64_t ns_dynamics = 0;      ///< nanoseconds of rigid-body dynamics (0 until scenes have dynamics)
 };
 
 /// One colliding object pair of a step.
@@ -90,6 +93,7 @@ public:
 
 private:
     void move(double t1); // to the poses at time t1, the end of the step (seconds)
+    void deform(double t); // animated objects to their clips' poses at scene time t (seconds)
     void run_contacts(StepCounters& c);
     void respond(StepCounters& c);
     bool respond_pair(const PairContact& pc, const std::vector<SpherePair>& start_pairs, QueryScratch& scratch);
@@ -104,6 +108,9 @@ private:
     std::vector<BroadSphere> spheres_;
     BroadPhase broad_;
     std::vector<QueryScratch> scratch_; // one per thread
+    // Per object: its deforming model when it is animated and the effect deform runs (its
+    // scene object's model then points into it), else null.
+    std::vector<std::shared_ptr<DeformingModel>> deforming_;
     // Per contact of the step: the sphere pairs depth's `all` query found, which are the
     // response's first backtrack query when the pair's poses have not changed since.
     std::vector<std::vector<SpherePair>> start_pairs_;

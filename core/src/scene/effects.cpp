@@ -7,8 +7,8 @@
 namespace spt {
 namespace {
 
-constexpr const char* kNames[kEffectCount] = {"motion", "gravity", "contacts", "depth",
-                                              "pairs",  "response", "ccd",     "exact"};
+constexpr const char* kNames[kEffectCount] = {"motion",   "gravity", "contacts", "depth", "pairs",
+                                              "response", "ccd",     "exact",    "deform"};
 
 // What each effect needs: an effect never switches another on silently.
 std::vector<Effect> needs(Effect e) {

@@ -20,8 +20,10 @@ struct CacheKey {
     int64_t mtime = 0;
     uintmax_t size = 0;
     double scale = 1;
+    bool animated = false; // read with its rig and clips, the document kept
     bool operator<(const CacheKey& o) const {
-        return std::tie(path, tree, mtime, size, scale) < std::tie(o.path, o.tree, o.mtime, o.size, o.scale);
+        return std::tie(path, tree, mtime, size, scale, animated) <
+               std::tie(o.path, o.tree, o.mtime, o.size, o.scale, o.animated);
     }
 };
 
@@ -29,6 +31,8 @@ struct Cached {
     std::shared_ptr<const CollisionModel> model;
     Eigen::Vector3d center;
     double radius = 0;
+    std::shared_ptr<const AnimatedMesh> animated; // animated objects: the mesh, rig and clips
+    std::shared_ptr<const SptDocument> document;  // animated objects: what their DeformingModel binds
 };
 
 std::mutex cache_mutex;
@@ -54,6 +58,9 @@ void bound(const CollisionModel& m, const TriangleMesh* mesh, Cached& c) {
 }
 
 Cached load_one(const SceneObject& o, const std::string& where, const std::atomic<bool>* cancel) {
+    if (o.animated && is_spt_file(o.model_path))
+        throw Error(ErrorKind::BadInput, where + ": an animated object needs its mesh file (glTF, FBX, ...): a .spt file "
+                                                 "holds no skin or clips");
     if (is_spt_file(o.model_path)) {
         if (o.scale != 1)
             throw Error(ErrorKind::BadInput,
@@ -69,8 +76,12 @@ Cached load_one(const SceneObject& o, const std::string& where, const std::atomi
     }
     ImportOptions reading;
     reading.cancel = cancel;
-    ImportedMesh im = import_mesh(o.model_path, reading);
+    auto animated = std::make_shared<AnimatedMesh>();
+    if (o.animated) *animated = import_animated_mesh(o.model_path, reading);
+    else animated->imported = import_mesh(o.model_path, reading);
+    ImportedMesh& im = animated->imported;
     for (Eigen::Vector3d& p : im.mesh.positions) p *= o.scale;
+    animated->rig.scale = o.scale;
     // Import checked the mesh's size as read; scaled, it must still fit what import accepts.
     double far = 0;
     for (const Eigen::Vector3d& p : im.mesh.positions) far = std::max(far, p.cwiseAbs().maxCoeff());
@@ -92,6 +103,10 @@ Cached load_one(const SceneObject& o, const std::string& where, const std::atomi
     auto model = std::make_shared<CollisionModel>(doc, im.mesh, o.tree);
     bound(*model, &im.mesh, c);
     c.model = std::move(model);
+    if (o.animated) {
+        c.animated = std::move(animated);
+        c.document = std::make_shared<const SptDocument>(doc);
+    }
     return c;
 }
 
@@ -104,7 +119,8 @@ void load_models(Scene& scene, const std::atomic<bool>* cancel) {
         std::error_code ec;
         if (!fs::is_regular_file(o.model_path, ec))
             throw Error(ErrorKind::BadInput, where + ": model file '" + o.model_path + "' not found");
-        CacheKey key{fs::weakly_canonical(o.model_path, ec).string(), o.tree, 0, fs::file_size(o.model_path, ec), o.scale};
+        CacheKey key{fs::weakly_canonical(o.model_path, ec).string(), o.tree, 0, fs::file_size(o.model_path, ec), o.scale,
+                     o.animated};
         key.mtime = int64_t(fs::last_write_time(o.model_path, ec).time_since_epoch().count());
         Cached c;
         {
@@ -130,6 +146,15 @@ void load_models(Scene& scene, const std::atomic<bool>* cancel) {
         o.model = c.model;
         o.bound_center = c.center;
         o.bound_radius = c.radius;
+        if (o.animated) {
+            o.animated_mesh = c.animated;
+            o.document = c.document;
+            try {
+                o.clip = c.animated->find_clip(o.animation.clip);
+            } catch (const Error& e) {
+                throw Error(ErrorKind::BadInput, scene.file + ": at /objects/" + std::to_string(i) + "/animation/clip: " + e.what());
+            }
+        }
     }
 }
 

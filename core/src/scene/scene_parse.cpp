@@ -77,10 +77,25 @@ std::vector<Keyframe> read_path(const Reader& r, const json& j, const std::strin
     return keys;
 }
 
+AnimationSettings read_animation(const Reader& r, const json& j, const std::string& p) {
+    r.fields(j, p, {"clip", "speed", "offset", "loop"});
+    AnimationSettings a;
+    if (j.contains("clip")) {
+        const json& c = j["clip"];
+        if (c.is_number_integer() && c.get<int64_t>() >= 0) a.clip = std::to_string(c.get<int64_t>());
+        else if (c.is_string() && !c.get<std::string>().empty()) a.clip = c.get<std::string>();
+        else r.fail(p + "/clip", "must be a clip's name or its index (a whole number from 0)");
+    }
+    if (j.contains("speed")) a.speed = r.number(j["speed"], p + "/speed");
+    if (j.contains("offset")) a.offset = r.number(j["offset"], p + "/offset");
+    if (j.contains("loop")) a.loop = r.flag(j["loop"], p + "/loop");
+    return a;
+}
+
 SceneObject read_object(const Reader& r, const json& j, const std::string& p, const std::filesystem::path& base) {
     r.fields(j, p,
              {"name", "model", "tree", "scale", "static", "position", "orientation", "velocity", "angular_velocity",
-              "path"});
+              "path", "animation"});
     SceneObject o;
     if (!j.contains("name")) r.fail(p, "object needs a 'name'");
     o.name = r.text(j["name"], p + "/name");
@@ -93,6 +108,10 @@ SceneObject read_object(const Reader& r, const json& j, const std::string& p, co
     if (j.contains("scale")) {
         o.scale = r.number(j["scale"], p + "/scale");
         if (!(o.scale > 0)) r.fail(p + "/scale", "must be positive");
+    }
+    if (j.contains("animation")) {
+        o.animated = true;
+        o.animation = read_animation(r, j["animation"], p + "/animation");
     }
     const bool is_static = j.contains("static") && r.flag(j["static"], p + "/static");
     const bool moving = j.contains("velocity") || j.contains("angular_velocity");

@@ -53,6 +53,38 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
     }
     previous_ = ghost_ = poses_;
     scratch_.resize(size_t(threads_));
+    deforming_.resize(scene_.objects.size());
+    if (effects_.has(Effect::Deform)) {
+        for (size_t i = 0; i < scene_.objects.size(); ++i) {
+            SceneObject& o = scene_.objects[i];
+            if (!o.animated || !o.animated_mesh || !o.document) continue;
+            deforming_[i] = std::make_shared<DeformingModel>(*o.document, o.animated_mesh, o.tree);
+            // Queries read the object's model: from now on, the deforming one's current pose.
+            o.model = std::shared_ptr<const CollisionModel>(deforming_[i], &deforming_[i]->model());
+        }
+        deform(0); // the state before the first step is the clips' poses at time 0
+    }
+}
+
+void Simulation::deform(double t) {
+    detail::parallel_for(deforming_.size(), threads_, [&](size_t i, int) {
+        if (!deforming_[i]) return;
+        SceneObject& o = scene_.objects[i];
+        const Clip& clip = o.animated_mesh->clips[o.clip];
+        const AnimationSettings& a = o.animation;
+        std::vector<Eigen::Vector3d> vertices;
+        pose_vertices(*o.animated_mesh, &clip, clip_time(clip, t, a.speed, a.offset, a.loop), vertices);
+        DeformingModel& dm = *deforming_[i];
+        dm.pose_on(vertices);
+        // The broad phase's sphere, around the posed root: every sphere and every vertex.
+        const CollisionModel& m = dm.model();
+        const CompactNode& root = m.tree().nodes().front();
+        const Eigen::Vector3d c = m.origin() + Eigen::Vector3d(root.center[0], root.center[1], root.center[2]);
+        double r = root.bv_radius;
+        for (const Eigen::Vector3d& v : dm.vertices()) r = std::max(r, (v - c).norm());
+        o.bound_center = c;
+        o.bound_radius = r * (1 + 1e-6) + 1e-6 * c.norm();
+    }, tasks_);
 }
 
 Simulation::~Simulation() = default;
@@ -104,6 +136,11 @@ const StepResult& Simulation::step() {
             throw;
         }
     }
+    if (effects_.has(Effect::Deform)) {
+        const auto t0 = Clock::now();
+        deform(t1);
+        r.counters.ns_deform = ns_since(t0);
+    }
     ++steps_;
     r.step = steps_;
     r.time = t1;
@@ -122,9 +159,10 @@ void Simulation::run_contacts(StepCounters& c) {
     spheres_.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const SceneObject& o = scene_.objects[i];
-        moved[i] = !detail::same_pose(poses_[i], previous_[i]);
+        moved[i] = !detail::same_pose(poses_[i], previous_[i]) || deforming_[i];
         BroadSphere& s = spheres_[i];
-        s.is_static = o.motion == MotionKind::Static;
+        // A static object that deforms still moves its surface: it meets other static objects.
+        s.is_static = o.motion == MotionKind::Static && !deforming_[i];
         s.center = poses_[i].apply(o.bound_center);
         s.radius = o.bound_radius;
         if (ccd && moved[i]) {
