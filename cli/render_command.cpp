@@ -1,9 +1,10 @@
 // spt render INPUT [--tree FILE.spt] [--view V] [--size WxH] [--frame N | --frames A:B]
-//            [--backend B] [--overlay LIST] -o OUT.png
+//            [--clip NAME --time T] [--backend B] [--overlay LIST] -o OUT.png
 #include "commands.hpp"
 #include "number_checks.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
+#include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
 #include "spt/render/offscreen.hpp"
 #include "spt/render/renderer.hpp"
@@ -27,7 +28,9 @@ using namespace spt::render;
 
 struct RenderArgs {
     std::string input, tree_path, tree_name, view = "camera", size = "512x512", frames, backend = "osmesa";
-    std::string output, shading = "smooth", color_by = "level";
+    std::string output, shading = "smooth", color_by = "level", clip;
+    double time = 0;
+    bool time_given = false;
     std::vector<std::string> overlays;
     int frame = -1;
     uint64_t node = 1;
@@ -133,7 +136,7 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
     Simulation sim(scene, effects_for_overlays(scene.effects, o), hardware_threads());
     auto context = make_offscreen_context(a.backend, width, height);
     auto renderer = std::make_unique<Renderer>(context->loader());
-    const SceneDrawing drawing(*renderer, sim.scene());
+    SceneDrawing drawing(*renderer, sim.scene());
     std::vector<std::vector<Eigen::Vector3f>> trails(scene.objects.size());
     auto record = [&] {
         if (o.trails)
@@ -145,6 +148,7 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
     const StepResult* step = nullptr;
     for (int f : frames) {
         while (sim.steps_done() < f) step = &sim.step(), record();
+        drawing.show_time(*renderer, double(sim.steps_done()) * scene.dt, sim.effects().has(Effect::Deform));
         Frame frame = drawing.frame(sim.poses(), step, sim.ghost_poses(), trails, sim.broad_spheres(), o);
         frame.grid = names.count("grid") > 0;
         frame.axes = names.count("axes") > 0;
@@ -216,14 +220,28 @@ int run_render(const RenderArgs& a) {
     if (spt_input && !a.tree_path.empty())
         throw Error(ErrorKind::Usage, a.input + " is already a .spt file; --tree takes the tree of a mesh INPUT");
 
+    if (a.time_given && a.clip.empty()) throw Error(ErrorKind::Usage, "--time needs --clip: the clip to pose the mesh by");
+    if (!a.clip.empty() && spt_input)
+        throw Error(ErrorKind::Usage, "--clip poses a mesh; " + a.input + " is a .spt file, which holds no animation");
+    if (!a.clip.empty() && (overlays.count("bounds") || overlays.count("node")))
+        throw Error(ErrorKind::Usage, "--overlay bounds and node draw the tree's bind pose: not with --clip");
+
     StepTimer timer(a.timings);
     // Geometry: a mesh, and a sampling tree when an overlay needs one.
     std::optional<TriangleMesh> mesh;
     std::optional<SptDocument> doc;
+    std::shared_ptr<AnimatedMesh> animated; // with --clip
+    const Clip* clip = nullptr;
     if (spt_input) {
         doc = load_spt(a.input);
     } else {
-        mesh = import_mesh(a.input).mesh;
+        if (!a.clip.empty()) {
+            animated = std::make_shared<AnimatedMesh>(import_animated_mesh(a.input));
+            clip = &animated->clips[animated->find_clip(a.clip)];
+            mesh = animated->imported.mesh;
+        } else {
+            mesh = import_mesh(a.input).mesh;
+        }
         timer.step("import mesh");
         if (!a.tree_path.empty()) {
             doc = load_spt(a.tree_path);
@@ -262,6 +280,16 @@ int run_render(const RenderArgs& a) {
     // Geometry is uploaded relative to the model's local origin and placed back by its pose:
     // far from the origin, float keeps its detail only so.
     const Eigen::Vector3d origin = doc ? doc->samples.origin : mesh ? Renderer::drawing_origin(*mesh) : Eigen::Vector3d::Zero();
+    // --clip: the mesh and its spheres at the pose (the spheres follow it as a scene's do).
+    std::optional<DeformingModel> posed;
+    if (clip) {
+        mesh = posed_mesh(*animated, clip, a.time);
+        if (doc) {
+            posed.emplace(*doc, animated, tree ? tree->name() : std::string(), false);
+            posed->pose(clip, a.time);
+        }
+        timer.step("pose");
+    }
     if (mesh) {
         MeshItem item;
         item.mesh = renderer->add_mesh(*mesh, origin);
@@ -275,7 +303,7 @@ int run_render(const RenderArgs& a) {
         frame.meshes.push_back(item);
     }
     if (tree && (show_spheres || show_node)) {
-        const CompactTree compact(*tree, doc->samples);
+        const CompactTree compact = posed ? posed->model().tree() : CompactTree(*tree, doc->samples);
         const SphereSetHandle set = renderer->add_spheres(
             sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level, origin));
         if (show_node) {
@@ -355,6 +383,10 @@ Action add_render_command(CLI::App& app) {
         ->check(CLI::Range(uint64_t(1), ~uint64_t(0)));
     c->add_option("--bounds-depth", a->bounds_depth, "Levels below --node whose bounding spheres are drawn (default 1)")
         ->check(CLI::Range(0, 62));
+    c->add_option("--clip", a->clip, "Animation clip (name or index) to pose a mesh INPUT by (spt info lists them)");
+    c->add_option("--time", a->time, "Clip time in seconds for --clip (default 0; held at the clip's ends)")
+        ->check(finite_in(-1e9, 1e9, "from -1e9 to 1e9"))
+        ->each([a](const std::string&) { a->time_given = true; });
     c->add_flag("--timings", a->timings, "Print the time of each step to stderr");
     return [a] { return run_render(*a); };
 }

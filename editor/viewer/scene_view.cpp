@@ -31,7 +31,13 @@ void SceneView::forget_uploads() {
 void SceneView::upload(render::Renderer& renderer) {
     // A history recorded again with other effects shares its scene: the uploads stay.
     std::shared_ptr<const Scene> scene = history_ && history_->loaded() ? history_->shared_scene() : nullptr;
-    if (scene == drawn_scene_) return;
+    if (scene != drawn_scene_) upload_scene(renderer, scene);
+    // Animated objects take the pose of the step shown (the clip's, with effect deform).
+    if (drawing_ && scene)
+        drawing_->show_time(renderer, double(step_) * scene->dt, history_->effects().has(Effect::Deform));
+}
+
+void SceneView::upload_scene(render::Renderer& renderer, std::shared_ptr<const Scene> scene) {
     if (drawing_) drawing_->release(renderer);
     drawing_.reset();
     drawn_scene_ = scene; // held, so the drawing's reference stays valid

@@ -45,6 +45,8 @@ protected:
     render::Bounds fit_bounds(const render::Renderer& renderer, const render::Frame& frame) const override;
 
 private:
+    // The drawing of a newly loaded scene (none: nothing drawn).
+    void upload_scene(render::Renderer& renderer, std::shared_ptr<const Scene> scene);
     const SceneHistory* history_ = nullptr;
     std::shared_ptr<const Scene> drawn_scene_; // the scene drawing_ was made for
     std::unique_ptr<render::SceneDrawing> drawing_;

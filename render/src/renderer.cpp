@@ -65,6 +65,30 @@ MeshHandle Renderer::add_mesh(const TriangleMesh& mesh, const Eigen::Vector3d& o
     return MeshHandle{id};
 }
 
+void Renderer::update_mesh(MeshHandle mesh, const std::vector<Eigen::Vector3d>& positions,
+                           const std::vector<Eigen::Vector3d>& normals, const Eigen::Vector3d& origin) {
+    auto it = impl_->meshes.find(mesh.id);
+    if (it == impl_->meshes.end()) throw std::invalid_argument("Renderer::update_mesh: unknown handle");
+    Impl::GpuMesh& m = it->second;
+    if (GLsizei(positions.size()) != m.vertex_count)
+        throw std::invalid_argument("Renderer::update_mesh: " + std::to_string(positions.size()) + " vertices for a mesh of " +
+                                    std::to_string(m.vertex_count));
+    std::vector<float> verts;
+    verts.reserve(positions.size() * 6);
+    m.bounds = Bounds{};
+    for (size_t i = 0; i < positions.size(); ++i) {
+        const Eigen::Vector3f p = (positions[i] - origin).cast<float>();
+        const Eigen::Vector3f n = i < normals.size() ? Eigen::Vector3f(normals[i].cast<float>()) : Eigen::Vector3f::Zero();
+        verts.insert(verts.end(), {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()});
+        m.bounds.add(p);
+    }
+    auto& gl = impl_->gl;
+    gl.BindBuffer(GL_ARRAY_BUFFER, m.vbo);
+    gl.BufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(verts.size() * sizeof(float)), verts.data());
+    gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+    check_gl(gl, "Renderer::update_mesh");
+}
+
 void Renderer::remove_mesh(MeshHandle mesh) {
     auto it = impl_->meshes.find(mesh.id);
     if (it == impl_->meshes.end()) return;

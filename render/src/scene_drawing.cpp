@@ -1,6 +1,7 @@
 // A simulated scene as a Frame: objects at their poses and the scene overlays.
 #include "spt/render/scene_drawing.hpp"
 #include "spt/mesh.hpp"
+#include "spt/render/renderer.hpp"
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -61,23 +62,52 @@ EffectSet effects_for_overlays(EffectSet e, const SceneOverlays& o) {
 
 SceneDrawing::SceneDrawing(Renderer& renderer, const Scene& scene) : scene_(scene) {
     std::map<std::pair<const CollisionModel*, bool>, std::pair<MeshHandle, SphereSetHandle>> done;
+    deforming_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         const bool first = i == 0; // the first object (often the floor) keeps the neutral colour
+        const Color color = object_color(first ? 0 : 1 + i % 5);
+        if (o.animated && o.animated_mesh && o.document) { // its own uploads: it deforms alone
+            deforming_[i] = std::make_unique<DeformingModel>(*o.document, o.animated_mesh, o.tree, false);
+            mesh_.push_back(renderer.add_mesh(o.animated_mesh->imported.mesh, deforming_[i]->model().origin()));
+            set_.push_back(renderer.add_spheres(spheres_of(deforming_[i]->model(), color)));
+            continue;
+        }
         auto key = std::make_pair(o.model.get(), first);
         auto it = done.find(key);
         if (it == done.end()) {
             MeshHandle mesh;
-            if (!is_spt_file(o.model_path)) {
-                TriangleMesh m = import_mesh(o.model_path).mesh;
+            const bool spt = is_spt_file(o.model_path);
+            if (!spt || !o.mesh_path.empty()) {
+                TriangleMesh m = import_mesh(spt ? o.mesh_path : o.model_path).mesh;
                 for (Eigen::Vector3d& p : m.positions) p *= o.scale;
                 mesh = renderer.add_mesh(m, o.model->origin()); // drawn in the model's local frame, as its spheres
             }
-            const SphereSetHandle set = renderer.add_spheres(spheres_of(*o.model, object_color(first ? 0 : 1 + i % 5)));
+            const SphereSetHandle set = renderer.add_spheres(spheres_of(*o.model, color));
             it = done.emplace(key, std::make_pair(mesh, set)).first;
         }
         mesh_.push_back(it->second.first);
         set_.push_back(it->second.second);
+    }
+}
+
+SceneDrawing::~SceneDrawing() = default;
+
+const CollisionModel& SceneDrawing::model_of(size_t i) const {
+    return deforming_[i] ? deforming_[i]->model() : *scene_.objects[i].model;
+}
+
+void SceneDrawing::show_time(Renderer& renderer, double time, bool deform) {
+    for (size_t i = 0; i < deforming_.size(); ++i) {
+        if (!deforming_[i]) continue;
+        const SceneObject& o = scene_.objects[i];
+        const Clip& clip = o.animated_mesh->clips[o.clip];
+        const AnimationSettings& a = o.animation;
+        if (deform) deforming_[i]->pose(&clip, clip_time(clip, time, a.speed, a.offset, a.loop));
+        else deforming_[i]->pose(nullptr, 0);
+        const DeformingModel& d = *deforming_[i];
+        renderer.update_mesh(mesh_[i], d.vertices(), d.vertex_normals(), d.model().origin());
+        renderer.update_spheres(set_[i], spheres_of(d.model(), object_color(i == 0 ? 0 : 1 + i % 5)));
     }
 }
 
@@ -103,20 +133,20 @@ Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step
         if (mesh_[i].id && !o.spheres) {
             MeshItem item;
             item.mesh = mesh_[i];
-            item.pose = local_frame(scene_.objects[i].model->origin(), affine(poses[i]));
+            item.pose = local_frame(model_of(i).origin(), affine(poses[i]));
             item.style.color = object_color(i == 0 ? 0 : 1 + i % 5);
             f.meshes.push_back(item);
         } else {
             SphereItem s;
             s.spheres = set_[i];
-            s.pose = local_frame(scene_.objects[i].model->origin(), affine(poses[i]));
+            s.pose = local_frame(model_of(i).origin(), affine(poses[i]));
             f.spheres.push_back(s);
         }
         if (o.ghost && i < ghost.size() && ghost[i].translation != poses[i].translation) {
             if (mesh_[i].id) {
                 MeshItem g;
                 g.mesh = mesh_[i];
-                g.pose = local_frame(scene_.objects[i].model->origin(), affine(ghost[i]));
+                g.pose = local_frame(model_of(i).origin(), affine(ghost[i]));
                 g.style.opacity = 0.3f;
                 f.meshes.push_back(g);
             } else {
@@ -142,7 +172,7 @@ Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step
                 f.collision.pairs.push_back(p);
             }
             if (o.pairs) {
-                const CollisionModel &ma = *scene_.objects[c.a].model, &mb = *scene_.objects[c.b].model;
+                const CollisionModel &ma = model_of(c.a), &mb = model_of(c.b);
                 for (const spt::SpherePair& sp : c.pairs) {
                     const CompactNode &na = ma.tree().nodes()[sp.node_a], &nb = mb.tree().nodes()[sp.node_b];
                     SpherePair p;

@@ -4,6 +4,7 @@
 #include "spt/deforming_model.hpp"
 #include "spt/query.hpp"
 #include "meshgen.hpp"
+#include "query/model_access.hpp"
 #include <gtest/gtest.h>
 
 namespace spt {
@@ -173,6 +174,41 @@ TEST(DeformingModel, QueriesAtEveryLevelSeeTheDeformedPose) {
         o.mode = QueryMode::Deepest;
         if (level != QueryLevel::Bounds) {
             EXPECT_GT(collide(dm.model(), at_rest_pose, obstacle, above, o, scratch).deepest.depth, 0.0) << int(level);
+        }
+    }
+}
+
+// The exact level's triangle tree is refit, not rebuilt: every triangle corner stays inside the
+// box and the ball of every node above it, in the float the walk tests.
+TEST(DeformingModel, TheTriangleTreeHoldsItsTrianglesAtEveryPose) {
+    DeformingModel dm(bar().doc, bar().mesh);
+    for (double t : {0.25, 1.0}) {
+        dm.pose(&bar().mesh->clips[0], t);
+        const ExactData& e = detail::exact_of(dm.model());
+        ASSERT_FALSE(e.tri_nodes.empty());
+        for (size_t i = 0; i < e.tri_nodes.size(); ++i) {
+            // The leaves below node i: the next nodes up to the end of its subtree.
+            std::vector<size_t> stack{i};
+            const Obb box = e.tri_nodes[i].box();
+            const Eigen::Vector3f c(box.center[0], box.center[1], box.center[2]);
+            while (!stack.empty()) {
+                const TriangleNode& n = e.tri_nodes[stack.back()];
+                const size_t at = stack.back();
+                stack.pop_back();
+                if (!n.is_leaf()) {
+                    stack.push_back(at + 1), stack.push_back(n.first);
+                    continue;
+                }
+                for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                    for (uint32_t v : e.triangles[e.tri_order[k]]) {
+                        const Eigen::Vector3f p = e.positions[v].cast<float>();
+                        ASSERT_LE((p - c).norm(), e.tri_nodes[i].radius * (1 + 1e-6f)) << "node " << i;
+                        for (int a = 0; a < 3; ++a) {
+                            const Eigen::Vector3f axis(box.axis[a][0], box.axis[a][1], box.axis[a][2]);
+                            ASSERT_LE(std::abs(axis.dot(p - c)), box.half[a] * (1 + 1e-5f) + 1e-6f) << "node " << i;
+                        }
+                    }
+            }
         }
     }
 }

@@ -232,3 +232,38 @@ TEST(RenderSceneCli, FramesAreWrittenOneAPngAndSceneOverlaysNeedAScene) {
 }
 
 } // namespace
+
+namespace {
+
+const std::string kFigureGltf = std::string(SPT_SOURCE_DIR) + "/resources/models/walking_figure.gltf";
+
+// Two times of the walk are two pictures; the clip's start is its bind pose's picture only when
+// the clip starts there, so the test compares times with each other.
+TEST_F(RenderCli, a_clip_poses_the_mesh_at_the_time_asked) {
+    const std::string base = "render '" + kFigureGltf + "' --view side --size 128x128 --clip walk";
+    ASSERT_EQ(spt(base + " --time 0.1 -o a.png").code, 0);
+    ASSERT_EQ(spt(base + " --time 0.1 -o b.png").code, 0);
+    ASSERT_EQ(spt(base + " --time 0.35 -o c.png").code, 0);
+    EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png"));
+    EXPECT_NE(slurp(dir / "a.png"), slurp(dir / "c.png"));
+    // Past the clip's end the pose holds at its end (1 s).
+    ASSERT_EQ(spt(base + " --time 1 -o end.png").code, 0);
+    ASSERT_EQ(spt(base + " --time 5 -o later.png").code, 0);
+    EXPECT_EQ(slurp(dir / "end.png"), slurp(dir / "later.png"));
+}
+
+TEST_F(RenderCli, clip_options_refuse_what_they_cannot_pose) {
+    const CliRun no_clip = spt("render '" + kFigureGltf + "' --time 0.5 -o x.png");
+    EXPECT_EQ(no_clip.code, 1);
+    EXPECT_NE(no_clip.err.find("--time needs --clip"), std::string::npos) << no_clip.err;
+    const CliRun missing = spt("render '" + kFigureGltf + "' --clip run -o x.png");
+    EXPECT_EQ(missing.code, 1);
+    EXPECT_NE(missing.err.find("0 'walk', 1 'idle'"), std::string::npos) << missing.err;
+    const CliRun bounds = spt("render '" + kFigureGltf + "' --clip walk --overlay bounds -o x.png");
+    EXPECT_EQ(bounds.code, 1);
+    const CliRun nan = spt("render '" + kFigureGltf + "' --clip walk --time nan -o x.png");
+    EXPECT_EQ(nan.code, 1);
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+} // namespace

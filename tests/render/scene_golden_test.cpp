@@ -29,8 +29,31 @@ TEST(golden, scene_fig8_response) {
 }
 
 TEST(golden, scene_walking_feet_strike) {
-    EXPECT_GOLDEN(render_scene("walking.json", 50, "--view front --overlay contacts,normals,pairs,grid"),
+    EXPECT_GOLDEN(render_scene("walking.json", 50, "--view side --overlay contacts,normals,pairs,grid"),
                   "scene_walking");
+}
+
+// The skinned figure posed by its walk clip (`spt render MODEL --clip NAME --time T`): mid-stride
+// with the sampling spheres that follow the surface, and a quarter cycle later as a mesh.
+spt::render::Image render_clip(double time, const std::string& args) {
+    const std::string out = std::string(SPT_BINARY_DIR) + "/test-tmp/clip-golden-" + std::to_string(::getpid()) + ".png";
+    std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+    const auto r = spt::test::run_command(spt::test::spt_binary() + " render " +
+                                          q(std::string(SPT_SOURCE_DIR) + "/resources/models/walking_figure.gltf") +
+                                          " --clip walk --time " + std::to_string(time) + " --size 256x256 " + args +
+                                          " -o " + q(out));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    spt::render::Image image = spt::render::read_png(out);
+    std::filesystem::remove(out);
+    return image;
+}
+
+TEST(golden, skinned_figure_walk_spheres) {
+    EXPECT_GOLDEN(render_clip(0.125, "--view side --overlay spheres,grid"), "skinned_walk_0125");
+}
+
+TEST(golden, skinned_figure_walk_mesh) {
+    EXPECT_GOLDEN(render_clip(0.375, "--view camera --overlay grid"), "skinned_walk_0375");
 }
 
 TEST(golden, scene_thin_wall_ccd) {

@@ -63,20 +63,27 @@ TEST(BundledScenes, Fig8ObjectsCollideAndAreMovedBack) {
     EXPECT_GT(responses, 0u);
 }
 
+// The skinned figure walks: the deepest contact moves from one foot to the other (x < 0 and
+// x > 0, the figure facing +z), where a rigid figure would stand on both feet alike.
 TEST(BundledScenes, WalkingFeetStrikeTheFloorAndOnlyTheFeet) {
     const Scene s = bundled("walking.json");
     EXPECT_EQ(s.objects[1].tree, "walk");
+    EXPECT_TRUE(s.objects[1].animated);
+    ASSERT_TRUE(s.effects.has(Effect::Deform));
     Simulation sim(s, s.effects);
-    int strikes = 0;
+    int strikes = 0, left = 0, right = 0;
     for (int i = 0; i < s.steps; ++i) {
         const StepResult& r = sim.step();
         for (const PairContact& c : r.contacts) {
             ++strikes;
             EXPECT_LT(c.point.y(), 0.05) << "step " << r.step; // at the floor: the soles, nothing higher
             EXPECT_FALSE(c.pairs.empty());
+            (c.point.x() < 0 ? left : right) += 1;
         }
     }
     EXPECT_GT(strikes, 20);
+    EXPECT_GT(left, 20);
+    EXPECT_GT(right, 20);
 }
 
 TEST(BundledScenes, PileHasAThousandMovingObjectsAndItsBroadPhaseIsExact) {

@@ -211,7 +211,7 @@ TEST(SceneSchema, ParserAcceptsEveryFieldTheSchemaListsAndTheSchemaListsEveryEff
         if (k != "objects" && k != "response") scene[k] = sample(v);
     scene["response"] = nlohmann::json::object();
     for (auto& [k, v] : schema["properties"]["response"]["properties"].items()) scene["response"][k] = sample(v);
-    nlohmann::json object = {{"name", "o"}, {"model", "o.obj"}, {"tree", "t"}};
+    nlohmann::json object = {{"name", "o"}, {"model", "o.obj"}, {"tree", "t"}, {"mesh", "o.gltf"}};
     for (auto& [k, v] : schema["$defs"]["object"]["properties"].items())
         if (!object.contains(k) && k != "path") object[k] = sample(v);
     nlohmann::json key = nlohmann::json::object();

@@ -125,6 +125,10 @@ double clip_time(const Clip& clip, double t, double speed = 1, double offset = 0
 /// clip: the rest pose of the hierarchy), into `positions` (resized), model units.
 void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std::vector<Eigen::Vector3d>& positions);
 
+/// The mesh posed by `clip` at `time` seconds (a null clip: the rest pose of the hierarchy):
+/// positions from pose_vertices, vertex normals recomputed as import computes them.
+TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time);
+
 /// Global transforms of every rig node posed by `clip` at `time` (a null clip: at rest), in
 /// Rig::nodes order.
 std::vector<Eigen::Affine3d> pose_nodes(const Rig& rig, const Clip* clip, double time);

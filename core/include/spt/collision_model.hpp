@@ -54,13 +54,15 @@ private:
     friend struct detail::ModelAccess; // the query code's view of exact_ and solid_ (query/model_access.hpp)
     friend class DeformingModel;       // poses the layout and the triangles in place
     void init(const SptDocument& doc, const std::string& tree_name);
-    // extent_, reach_ and bounds_reach_ from the layout (and the triangles, when there are some).
-    void measure();
+    // extent_, reach_ and bounds_reach_ from the layout (and the triangles, when there are some);
+    // `by_leaves`: from the active nodes' balls instead of every sphere (a bound, cheaper).
+    void measure(bool by_leaves = false);
     // The model on a deformed surface: the spheres follow `points` and `normals` (per sample,
-    // local frame), the exact level's triangles `positions` (per mesh vertex, object frame);
-    // bounds refit. No containment: the solid grid was made for the bind pose.
+    // local frame), with `triangles` the exact level's triangles `positions` (per mesh vertex,
+    // object frame), else the exact level is dropped; bounds refit. No containment: the solid
+    // grid was made for the bind pose.
     void follow_surface(const std::vector<Eigen::Vector3d>& positions, const std::vector<Eigen::Vector3f>& points,
-                        const std::vector<Eigen::Vector3f>& normals);
+                        const std::vector<Eigen::Vector3f>& normals, bool triangles);
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
     std::shared_ptr<const SolidData> solid_;

@@ -16,8 +16,10 @@ class DeformingModel {
 public:
     /// Binds tree `tree_name` (the first if empty) of `doc` to `mesh`, which must be the mesh the
     /// document was made from (Error(BadInput) otherwise). Starts at the bind pose. The mesh is
-    /// shared, not copied.
-    DeformingModel(const SptDocument& doc, std::shared_ptr<const AnimatedMesh> mesh, const std::string& tree_name = "");
+    /// shared, not copied. Without `triangles` a pose moves the sampling spheres only, and the
+    /// model has no `exact` level (its triangle tree is a third of a pose's work).
+    DeformingModel(const SptDocument& doc, std::shared_ptr<const AnimatedMesh> mesh, const std::string& tree_name = "",
+                   bool triangles = true);
 
     /// Poses the model at `time` seconds of `clip` (a null clip: the bind pose, the mesh as imported).
     void pose(const Clip* clip, double time);
@@ -28,12 +30,19 @@ public:
     const CollisionModel& model() const { return model_; }
     /// The mesh's welded vertices at the current pose (object frame, model units).
     const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
+    /// Unit vertex normals at the current pose (angle-weighted, as import computes them; zero where
+    /// a vertex has none), before the first pose the mesh's own.
+    const std::vector<Eigen::Vector3d>& vertex_normals() const { return vertex_normals_; }
     /// The animated mesh.
     const AnimatedMesh& mesh() const { return *mesh_; }
+    /// Each sample's surface point at the current pose (SampleSet order, the samples' local frame:
+    /// add the document's origin for the object frame), model units.
+    const std::vector<Eigen::Vector3f>& sample_points() const { return points_; }
 
 private:
     std::shared_ptr<const AnimatedMesh> mesh_;
     CollisionModel model_;
+    bool triangles_;
     std::vector<Eigen::Vector3f> bind_points_, bind_normals_; // the document's samples (local frame)
     std::vector<uint32_t> source_;                            // per sample: vertex, or triangle | kFaceSampleBit
     std::vector<Eigen::Vector3d> barycentric_;                // per face sample: weights of its triangle's corners
@@ -42,6 +51,11 @@ private:
     std::vector<Eigen::Vector3d> vertices_, vertex_normals_;
     std::vector<uint8_t> normal_valid_;
     std::vector<Eigen::Vector3f> points_, normals_;
+    std::vector<uint8_t> face_sampled_;      // per triangle: some face sample lies on it
+    std::vector<Eigen::Vector3f> snapped_;   // per vertex, then per triangle: its normal as stored
+    std::vector<uint8_t> snapped_ok_;
+    // Samples, layout and triangles to vertices_.
+    void follow();
 };
 
 } // namespace spt

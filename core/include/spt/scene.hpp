@@ -90,6 +90,7 @@ struct AnimationSettings {
 struct SceneObject {
     std::string name;         ///< unique within the scene
     std::string model_path;   ///< resolved path of the .spt file or mesh
+    std::string mesh_path;    ///< resolved path of the mesh a .spt model was made from (objects[].mesh); empty: none
     std::string tree;         ///< tree name; empty: the first
     double scale = 1;         ///< uniform scale applied to the mesh before conversion
     MotionKind motion = MotionKind::Static; ///< how it moves

@@ -26,8 +26,8 @@ Eigen::Vector3f stored(const Eigen::Vector3d& n) { return decode_normal(encode_n
 } // namespace
 
 DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const AnimatedMesh> mesh,
-                               const std::string& tree_name)
-    : mesh_(std::move(mesh)), model_(doc, mesh_->imported.mesh, tree_name) {
+                               const std::string& tree_name, bool triangles)
+    : mesh_(std::move(mesh)), model_(doc, mesh_->imported.mesh, tree_name), triangles_(triangles) {
     const TriangleMesh& m = mesh_->imported.mesh;
     const SampleSet& s = doc.samples;
     bind_points_ = s.points, bind_normals_ = s.normals;
@@ -46,13 +46,17 @@ DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const Ani
         }
     }
     vertices_ = m.positions;
+    vertex_normals_ = m.normals;
+    points_ = bind_points_, normals_ = bind_normals_;
+    face_sampled_.assign(m.triangles.size(), 0);
+    for (size_t i = 0; i < s.size(); ++i)
+        if (s.is_face_sample(i)) face_sampled_[s.source_index(i)] = 1;
 }
 
 void DeformingModel::pose(const Clip* clip, double time) {
     if (!clip) return pose_on(mesh_->imported.mesh.positions);
-    std::vector<Eigen::Vector3d> p;
-    pose_vertices(*mesh_, clip, time, p);
-    pose_on(p);
+    pose_vertices(*mesh_, clip, time, vertices_); // into the model's own buffer: no allocation a pose
+    follow();
 }
 
 void DeformingModel::pose_on(const std::vector<Eigen::Vector3d>& positions) {
@@ -60,34 +64,50 @@ void DeformingModel::pose_on(const std::vector<Eigen::Vector3d>& positions) {
     if (positions.size() != m.positions.size())
         throw Error(ErrorKind::Usage, m.name + ": a pose of " + std::to_string(positions.size()) +
                                           " vertices for a mesh of " + std::to_string(m.positions.size()));
-    for (const Eigen::Vector3d& p : positions)
+    vertices_.assign(positions.begin(), positions.end());
+    follow();
+}
+
+void DeformingModel::follow() {
+    const TriangleMesh& m = mesh_->imported.mesh;
+    for (const Eigen::Vector3d& p : vertices_)
         if (!p.allFinite()) throw_bad_input(m.name, "a posed vertex is not finite");
-    vertices_ = positions;
     const double diag = m.diagonal();
     detail::angle_weighted_normals(vertices_, m.triangles, 1e-14 * diag * diag, m.is_copy, vertex_normals_, normal_valid_);
+    // Snapped normals, once a vertex or face (a face's samples share its normal): a face squeezed
+    // flat has none of its own, and takes its corners'; without any, a sample keeps the bind's.
+    const size_t nv = vertices_.size(), nf = m.triangles.size();
+    snapped_.resize(nv + nf);
+    snapped_ok_.assign(nv + nf, 0);
+    for (size_t v = 0; v < nv; ++v)
+        if (normal_valid_[v]) snapped_[v] = stored(vertex_normals_[v]), snapped_ok_[v] = 1;
+    for (size_t f = 0; f < nf; ++f) {
+        if (!face_sampled_[f]) continue;
+        const Triangle& t = m.triangles[f];
+        Eigen::Vector3d normal = (vertices_[t[1]] - vertices_[t[0]]).cross(vertices_[t[2]] - vertices_[t[0]]);
+        if (!(normal.norm() > 0)) normal = vertex_normals_[t[0]] + vertex_normals_[t[1]] + vertex_normals_[t[2]];
+        if (normal.norm() > 0) snapped_[nv + f] = stored(normal.normalized()), snapped_ok_[nv + f] = 1;
+    }
     const size_t n = source_.size();
     points_.resize(n), normals_.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const uint32_t src = source_[i] & kMaxSourceIndex;
-        Eigen::Vector3d at, normal;
-        if (source_[i] & kFaceSampleBit) {
+        const bool face = source_[i] & kFaceSampleBit;
+        Eigen::Vector3d at;
+        if (face) {
             const Triangle& t = m.triangles[src];
-            const Eigen::Vector3d &a = vertices_[t[0]], &b = vertices_[t[1]], &c = vertices_[t[2]];
             const Eigen::Vector3d& w = barycentric_[i];
-            at = w[0] * a + w[1] * b + w[2] * c;
-            normal = (b - a).cross(c - a);
-            // A face squeezed flat has no normal of its own: its corners' then, else the bind's.
-            if (!(normal.norm() > 0)) normal = w[0] * vertex_normals_[t[0]] + w[1] * vertex_normals_[t[1]] + w[2] * vertex_normals_[t[2]];
+            at = w[0] * vertices_[t[0]] + w[1] * vertices_[t[1]] + w[2] * vertices_[t[2]];
         } else {
             at = vertices_[src];
-            normal = normal_valid_[src] ? vertex_normals_[src] : Eigen::Vector3d::Zero();
         }
         // The stored point plus how far its surface point moved: the bind pose gives the document's
         // spheres bit for bit.
         points_[i] = bind_points_[i] + (at - bind_at_[i]).cast<float>();
-        normals_[i] = normal.norm() > 0 ? stored(normal.normalized()) : bind_normals_[i];
+        const size_t k = face ? nv + src : src;
+        normals_[i] = snapped_ok_[k] ? snapped_[k] : bind_normals_[i];
     }
-    model_.follow_surface(vertices_, points_, normals_);
+    model_.follow_surface(vertices_, points_, normals_, triangles_);
 }
 
 } // namespace spt

@@ -1,5 +1,6 @@
 // Posing a rig: node transforms from a clip, then morph targets and linear blend skinning.
 #include "anim/keyframes.hpp"
+#include "mesh/vertex_normals.hpp"
 #include "spt/animation.hpp"
 #include "spt/error.hpp"
 #include <cmath>
@@ -50,38 +51,45 @@ std::vector<Eigen::Affine3d> pose_nodes(const Rig& rig, const Clip* clip, double
     return global;
 }
 
+TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time) {
+    TriangleMesh m = mesh.imported.mesh;
+    pose_vertices(mesh, clip, time, m.positions);
+    const double diag = mesh.imported.mesh.diagonal();
+    detail::angle_weighted_normals(m.positions, m.triangles, 1e-14 * diag * diag, m.is_copy, m.normals, m.normal_valid);
+    return m;
+}
+
 void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std::vector<Eigen::Vector3d>& positions) {
     const Rig& rig = mesh.rig;
     if (rig.influences.empty()) { // nothing animates it
         positions = mesh.imported.mesh.positions;
         return;
     }
-    std::vector<Eigen::Vector3d> local = rig.mesh_positions;
-    // Morph targets first, in each mesh's own space (glTF: targets, then the skin).
-    std::vector<double> weights(rig.morph_targets.size());
-    for (size_t i = 0; i < weights.size(); ++i) weights[i] = rig.morph_targets[i].default_weight;
-    if (clip) {
-        std::vector<double> w;
-        for (const MorphChannel& c : clip->morphs) {
-            if (c.weights.empty()) continue;
-            detail::sample_weights(c.weights, time, c.target_count, w);
-            for (uint32_t k = 0; k < c.target_count; ++k) weights[c.first_target + k] = w[k];
-        }
-    }
-    for (size_t i = 0; i < weights.size(); ++i) {
-        if (weights[i] == 0) continue;
+    // In place, vertex by vertex: first each mesh's own space with its morph targets (glTF:
+    // targets, then the skin), then the skin. `positions` keeps its capacity from pose to pose.
+    positions.assign(rig.mesh_positions.begin(), rig.mesh_positions.end());
+    for (size_t i = 0; i < rig.morph_targets.size(); ++i) {
+        double weight = rig.morph_targets[i].default_weight;
+        if (clip)
+            for (const MorphChannel& c : clip->morphs)
+                if (!c.weights.empty() && i >= c.first_target && i < c.first_target + c.target_count) {
+                    std::vector<double> w;
+                    detail::sample_weights(c.weights, time, c.target_count, w);
+                    weight = w[i - c.first_target];
+                }
+        if (weight == 0) continue;
         const MorphTarget& m = rig.morph_targets[i];
-        for (size_t k = 0; k < m.vertices.size(); ++k) local[m.vertices[k]] += weights[i] * m.delta[k];
+        for (size_t k = 0; k < m.vertices.size(); ++k) positions[m.vertices[k]] += weight * m.delta[k];
     }
     const std::vector<Eigen::Affine3d> nodes = pose_nodes(rig, clip, time);
     std::vector<Eigen::Affine3d> slot(rig.bone_slots.size());
-    for (size_t i = 0; i < slot.size(); ++i) slot[i] = nodes[rig.bone_slots[i].node] * Eigen::Affine3d(rig.bone_slots[i].offset);
-    positions.resize(local.size());
-    for (size_t v = 0; v < local.size(); ++v) {
+    for (size_t i = 0; i < slot.size(); ++i)
+        slot[i] = nodes[rig.bone_slots[i].node] * Eigen::Affine3d(rig.bone_slots[i].offset);
+    for (size_t v = 0; v < positions.size(); ++v) {
         const VertexInfluences& in = rig.influences[v];
         Eigen::Vector3d p = Eigen::Vector3d::Zero();
         for (int k = 0; k < 4; ++k)
-            if (in.weight[k] != 0) p += in.weight[k] * (slot[in.slot[k]] * local[v]);
+            if (in.weight[k] != 0) p += in.weight[k] * (slot[in.slot[k]] * positions[v]);
         positions[v] = rig.scale * p;
     }
 }

@@ -3,12 +3,27 @@
 // what it was measured to hold after rounding.
 #include <Eigen/Core>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace spt::detail {
 
+/// std::nextafter(f, +infinity), without a library call (refits round every bound of a tree up,
+/// every pose): the next float's bits are one step further from zero for positive f, one nearer
+/// for negative f.
+inline float next_up(float f) {
+    if (std::isnan(f) || f == std::numeric_limits<float>::infinity()) return f;
+    if (f == 0) return std::numeric_limits<float>::denorm_min();
+    uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    bits = f > 0 ? bits + 1 : bits - 1;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
 /// Smallest float at least r grown by 1e-6 relative: a stored radius or half-width that holds r.
-inline float round_up(double r) { return std::nextafter(float(r * (1 + 1e-6)), std::numeric_limits<float>::infinity()); }
+inline float round_up(double r) { return next_up(float(r * (1 + 1e-6))); }
 
 /// v rounded to float. Through a volatile, so that double(to_float(v)) is the value stored:
 /// GCC 12 with Eigen 3.4 was seen folding x.cast<float>().cast<double>() into x at -O2,

@@ -18,6 +18,9 @@ struct Obb {
 /// Box along the principal axes of `points`, holding every point after float rounding. Its
 /// third axis is third_axis(axis[0], axis[1]), so a box can be stored with two axes.
 Obb fit_obb(const std::vector<Eigen::Vector3d>& points);
+/// The box of `points` along given float axes (the first two; the third is third_axis of
+/// them): what fit_obb does once it has chosen its axes. A refit keeps a node's axes.
+Obb fit_obb_along(const std::vector<Eigen::Vector3d>& points, const float axes[2][3]);
 
 /// u x v in float: a box's third axis from its first two (unit, up to float rounding).
 inline Eigen::Vector3f third_axis(const float u[3], const float v[3]) {

@@ -123,7 +123,7 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     measure();
 }
 
-void CollisionModel::measure() {
+void CollisionModel::measure(bool by_leaves) {
     extent_ = reach_ = 0;
     const Eigen::Vector3d& o = origin();
     auto grow = [&](const Eigen::Vector3d& local_centre, double radius) {
@@ -132,6 +132,10 @@ void CollisionModel::measure() {
     };
     for (const CompactNode& n : tree_.nodes()) {
         if (!n.is_active()) continue;
+        if (by_leaves) { // the node's ball holds its spheres
+            grow(Eigen::Vector3d(n.center[0], n.center[1], n.center[2]), n.bv_radius);
+            continue;
+        }
         for (uint32_t k = n.first; k < n.first + n.count; ++k) grow(tree_.sphere_center(n, k).cast<double>(), n.ss_radius);
     }
     const auto& nodes = tree_.nodes();
@@ -153,18 +157,20 @@ void CollisionModel::measure() {
 }
 
 void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& positions,
-                                    const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals) {
+                                    const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
+                                    bool triangles) {
     tree_.follow_samples(points, normals);
+    if (!triangles) exact_.reset();
     if (has_mesh()) {
         // Shared with copies of this model: those keep the pose they had.
         auto e = exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(exact_) : std::make_shared<ExactData>(*exact_);
         for (size_t v = 0; v < e->positions.size(); ++v) e->positions[v] = positions[v] - origin();
         fit_triangle_spheres(*e);
-        detail::build_triangle_tree(*e);
+        detail::refit_triangle_tree(*e);
         exact_ = std::move(e);
     }
     solid_.reset(); // made for the bind pose
-    measure();
+    measure(true);
 }
 
 size_t CollisionModel::memory_bytes() const {

@@ -109,4 +109,68 @@ void build_triangle_tree(ExactData& e) {
     b.build(0, uint32_t(e.tri_order.size()));
 }
 
+void refit_triangle_tree(ExactData& e) {
+    std::vector<Eigen::Vector3d> corners;
+    // Children follow their parent: from the last node back, every child is refit before its parent.
+    for (size_t i = e.tri_nodes.size(); i-- > 0;) {
+        TriangleNode& n = e.tri_nodes[i];
+        if (n.is_leaf()) {
+            corners.clear();
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                for (uint32_t v : e.triangles[e.tri_order[k]]) corners.push_back(e.positions[v]);
+            const Obb box = fit_obb_along(corners, n.axis);
+            const Eigen::Vector3d c(box.center[0], box.center[1], box.center[2]);
+            double r = 0;
+            for (const auto& p : corners) r = std::max(r, (p - c).norm());
+            for (int k = 0; k < 3; ++k) n.center[k] = box.center[k], n.half[k] = box.half[k];
+            n.radius = round_up(r);
+            continue;
+        }
+        // An inner node holds its children's boxes: each child's extent along the node's axis k
+        // is its centre's projection plus the sum of its half extents times |axis k . its axis j|.
+        const Eigen::Vector3f w = third_axis(n.axis[0], n.axis[1]);
+        const Eigen::Vector3d axis[3] = {Eigen::Vector3d(n.axis[0][0], n.axis[0][1], n.axis[0][2]),
+                                         Eigen::Vector3d(n.axis[1][0], n.axis[1][1], n.axis[1][2]), w.cast<double>()};
+        struct Child {
+            Eigen::Vector3d c;
+            double ext[3], half_norm, radius;
+        } child[2];
+        const uint32_t ids[2] = {uint32_t(i + 1), n.first};
+        double lo[3], hi[3];
+        for (int h = 0; h < 2; ++h) {
+            const TriangleNode& m = e.tri_nodes[ids[h]];
+            const Eigen::Vector3f mw = third_axis(m.axis[0], m.axis[1]);
+            const Eigen::Vector3d u[3] = {Eigen::Vector3d(m.axis[0][0], m.axis[0][1], m.axis[0][2]),
+                                          Eigen::Vector3d(m.axis[1][0], m.axis[1][1], m.axis[1][2]), mw.cast<double>()};
+            Child& ch = child[h];
+            ch.c = Eigen::Vector3d(m.center[0], m.center[1], m.center[2]);
+            ch.half_norm = Eigen::Vector3d(m.half[0], m.half[1], m.half[2]).norm();
+            ch.radius = m.radius;
+            for (int k = 0; k < 3; ++k) {
+                ch.ext[k] = 0;
+                for (int j = 0; j < 3; ++j) ch.ext[k] += double(m.half[j]) * std::abs(axis[k].dot(u[j]));
+                const double at = axis[k].dot(ch.c);
+                lo[k] = h ? std::min(lo[k], at - ch.ext[k]) : at - ch.ext[k];
+                hi[k] = h ? std::max(hi[k], at + ch.ext[k]) : at + ch.ext[k];
+            }
+        }
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) centre += 0.5 * (lo[k] + hi[k]) * axis[k];
+        const Eigen::Vector3d c = float_rounded(centre);
+        double balls = 0, boxes = 0;
+        for (int k = 0; k < 3; ++k) {
+            double h = 0;
+            for (const Child& ch : child) h = std::max(h, std::abs(axis[k].dot(ch.c - c)) + ch.ext[k]);
+            n.center[k] = float(c[k]);
+            n.half[k] = round_up(h);
+        }
+        // The children's balls, or the corners of their boxes, whichever is tighter.
+        for (const Child& ch : child) {
+            balls = std::max(balls, (ch.c - c).norm() + ch.radius);
+            boxes = std::max(boxes, (ch.c - c).norm() + ch.half_norm);
+        }
+        n.radius = round_up(std::min(balls, boxes));
+    }
+}
+
 } // namespace spt::detail

@@ -8,4 +8,10 @@ namespace spt::detail {
 /// zero-area triangles (counted in e.degenerate_triangles).
 void build_triangle_tree(ExactData& e);
 
+/// Brings the tree's boxes and spheres up to date after e.positions moved (a deformed pose),
+/// keeping its shape and each node's axes: a leaf's box from its triangles' corners, an inner
+/// node's from its children's box corners, bottom up. Every triangle stays inside every box and
+/// sphere above it.
+void refit_triangle_tree(ExactData& e);
+
 } // namespace spt::detail

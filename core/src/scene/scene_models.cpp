@@ -16,14 +16,14 @@ namespace {
 namespace fs = std::filesystem;
 
 struct CacheKey {
-    std::string path, tree;
+    std::string path, tree, mesh;
     int64_t mtime = 0;
     uintmax_t size = 0;
     double scale = 1;
     bool animated = false; // read with its rig and clips, the document kept
     bool operator<(const CacheKey& o) const {
-        return std::tie(path, tree, mtime, size, scale, animated) <
-               std::tie(o.path, o.tree, o.mtime, o.size, o.scale, o.animated);
+        return std::tie(path, tree, mesh, mtime, size, scale, animated) <
+               std::tie(o.path, o.tree, o.mesh, o.mtime, o.size, o.scale, o.animated);
     }
 };
 
@@ -57,28 +57,43 @@ void bound(const CollisionModel& m, const TriangleMesh* mesh, Cached& c) {
     c.radius = r * (1 + 1e-6) + 1e-6 * c.center.norm();
 }
 
+// The mesh at `path`, with its rig and clips when the object is animated.
+std::shared_ptr<AnimatedMesh> read_mesh(const SceneObject& o, const std::string& path, const std::atomic<bool>* cancel) {
+    ImportOptions reading;
+    reading.cancel = cancel;
+    auto mesh = std::make_shared<AnimatedMesh>();
+    if (o.animated) *mesh = import_animated_mesh(path, reading);
+    else mesh->imported = import_mesh(path, reading);
+    return mesh;
+}
+
 Cached load_one(const SceneObject& o, const std::string& where, const std::atomic<bool>* cancel) {
-    if (o.animated && is_spt_file(o.model_path))
-        throw Error(ErrorKind::BadInput, where + ": an animated object needs its mesh file (glTF, FBX, ...): a .spt file "
-                                                 "holds no skin or clips");
     if (is_spt_file(o.model_path)) {
+        if (o.animated && o.mesh_path.empty())
+            throw Error(ErrorKind::BadInput, where + ": an animated object needs its mesh file (glTF, FBX, ...): a .spt file "
+                                                     "holds no skin or clips; give it as 'mesh' beside the .spt model");
         if (o.scale != 1)
             throw Error(ErrorKind::BadInput,
                         where + ": 'scale' applies to meshes; a .spt file is used at the scale it was made");
-        const SptDocument doc = load_spt(o.model_path);
-        if (!o.tree.empty() && !doc.tree(o.tree))
+        auto doc = std::make_shared<SptDocument>(load_spt(o.model_path));
+        if (!o.tree.empty() && !doc->tree(o.tree))
             throw Error(ErrorKind::BadInput, where + ": " + o.model_path + " has no tree named '" + o.tree + "'");
         Cached c;
-        auto model = std::make_shared<CollisionModel>(doc, o.tree);
-        bound(*model, nullptr, c);
+        if (o.mesh_path.empty()) {
+            auto model = std::make_shared<CollisionModel>(*doc, o.tree);
+            bound(*model, nullptr, c);
+            c.model = std::move(model);
+            return c;
+        }
+        // The mesh it was made from: the exact level's triangles, an animated object's skin and clips.
+        std::shared_ptr<AnimatedMesh> animated = read_mesh(o, o.mesh_path, cancel);
+        auto model = std::make_shared<CollisionModel>(*doc, animated->imported.mesh, o.tree); // refuses another mesh
+        bound(*model, &animated->imported.mesh, c);
         c.model = std::move(model);
+        if (o.animated) c.animated = std::move(animated), c.document = std::move(doc);
         return c;
     }
-    ImportOptions reading;
-    reading.cancel = cancel;
-    auto animated = std::make_shared<AnimatedMesh>();
-    if (o.animated) *animated = import_animated_mesh(o.model_path, reading);
-    else animated->imported = import_mesh(o.model_path, reading);
+    std::shared_ptr<AnimatedMesh> animated = read_mesh(o, o.model_path, cancel);
     ImportedMesh& im = animated->imported;
     for (Eigen::Vector3d& p : im.mesh.positions) p *= o.scale;
     animated->rig.scale = o.scale;
@@ -119,8 +134,15 @@ void load_models(Scene& scene, const std::atomic<bool>* cancel) {
         std::error_code ec;
         if (!fs::is_regular_file(o.model_path, ec))
             throw Error(ErrorKind::BadInput, where + ": model file '" + o.model_path + "' not found");
-        CacheKey key{fs::weakly_canonical(o.model_path, ec).string(), o.tree, 0, fs::file_size(o.model_path, ec), o.scale,
-                     o.animated};
+        if (!o.mesh_path.empty() && !fs::is_regular_file(o.mesh_path, ec))
+            throw Error(ErrorKind::BadInput, scene.file + ": at /objects/" + std::to_string(i) + "/mesh: mesh file '" +
+                                                 o.mesh_path + "' not found");
+        if (!o.mesh_path.empty() && !is_spt_file(o.model_path))
+            throw Error(ErrorKind::BadInput, scene.file + ": at /objects/" + std::to_string(i) +
+                                                 "/mesh: 'mesh' goes with a .spt model (the model is the mesh already)");
+        CacheKey key{fs::weakly_canonical(o.model_path, ec).string(), o.tree,
+                     o.mesh_path.empty() ? std::string() : fs::weakly_canonical(o.mesh_path, ec).string(), 0,
+                     fs::file_size(o.model_path, ec), o.scale, o.animated};
         key.mtime = int64_t(fs::last_write_time(o.model_path, ec).time_since_epoch().count());
         Cached c;
         {
@@ -142,7 +164,7 @@ void load_models(Scene& scene, const std::atomic<bool>* cancel) {
         const bool exact = scene.effects.has(Effect::Exact) || scene.level == QueryLevel::Exact;
         if (exact && !c.model->has_mesh())
             throw Error(ErrorKind::BadInput, where + ": the exact level (effect 'exact' or level 'exact') tests "
-                                                     "triangles, and a .spt file holds none: give the mesh as the model");
+                                                     "triangles, and a .spt file holds none: give the mesh as the model, or as 'mesh' beside it");
         o.model = c.model;
         o.bound_center = c.center;
         o.bound_radius = c.radius;

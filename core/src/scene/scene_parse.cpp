@@ -95,7 +95,7 @@ AnimationSettings read_animation(const Reader& r, const json& j, const std::stri
 SceneObject read_object(const Reader& r, const json& j, const std::string& p, const std::filesystem::path& base) {
     r.fields(j, p,
              {"name", "model", "tree", "scale", "static", "position", "orientation", "velocity", "angular_velocity",
-              "path", "animation"});
+              "path", "animation", "mesh"});
     SceneObject o;
     if (!j.contains("name")) r.fail(p, "object needs a 'name'");
     o.name = r.text(j["name"], p + "/name");
@@ -104,6 +104,11 @@ SceneObject read_object(const Reader& r, const json& j, const std::string& p, co
     const std::string model = r.text(j["model"], p + "/model");
     if (model.empty()) r.fail(p + "/model", "must not be empty");
     o.model_path = (base / model).lexically_normal().string();
+    if (j.contains("mesh")) {
+        const std::string mesh = r.text(j["mesh"], p + "/mesh");
+        if (mesh.empty()) r.fail(p + "/mesh", "must not be empty");
+        o.mesh_path = (base / mesh).lexically_normal().string();
+    }
     if (j.contains("tree")) o.tree = r.text(j["tree"], p + "/tree");
     if (j.contains("scale")) {
         o.scale = r.number(j["scale"], p + "/scale");

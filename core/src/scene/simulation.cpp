@@ -58,7 +58,7 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
         for (size_t i = 0; i < scene_.objects.size(); ++i) {
             SceneObject& o = scene_.objects[i];
             if (!o.animated || !o.animated_mesh || !o.document) continue;
-            deforming_[i] = std::make_shared<DeformingModel>(*o.document, o.animated_mesh, o.tree);
+            deforming_[i] = std::make_shared<DeformingModel>(*o.document, o.animated_mesh, o.tree, exact);
             // Queries read the object's model: from now on, the deforming one's current pose.
             o.model = std::shared_ptr<const CollisionModel>(deforming_[i], &deforming_[i]->model());
         }
@@ -72,10 +72,8 @@ void Simulation::deform(double t) {
         SceneObject& o = scene_.objects[i];
         const Clip& clip = o.animated_mesh->clips[o.clip];
         const AnimationSettings& a = o.animation;
-        std::vector<Eigen::Vector3d> vertices;
-        pose_vertices(*o.animated_mesh, &clip, clip_time(clip, t, a.speed, a.offset, a.loop), vertices);
         DeformingModel& dm = *deforming_[i];
-        dm.pose_on(vertices);
+        dm.pose(&clip, clip_time(clip, t, a.speed, a.offset, a.loop));
         // The broad phase's sphere, around the posed root: every sphere and every vertex.
         const CollisionModel& m = dm.model();
         const CompactNode& root = m.tree().nodes().front();

@@ -56,6 +56,11 @@ public:
     static Eigen::Vector3d drawing_origin(const TriangleMesh& mesh);
     /// Frees an uploaded mesh; the handle becomes invalid. An unknown handle is ignored.
     void remove_mesh(MeshHandle mesh);
+    /// Replaces an uploaded mesh's vertex positions and normals (a deformed pose: the same
+    /// vertices and triangles, moved), relative to `origin` as add_mesh takes it; throws
+    /// std::invalid_argument for an unknown handle or another vertex count.
+    void update_mesh(MeshHandle mesh, const std::vector<Eigen::Vector3d>& positions,
+                     const std::vector<Eigen::Vector3d>& normals, const Eigen::Vector3d& origin = Eigen::Vector3d::Zero());
     /// Uploads solid spheres (object frame, model units) for instanced drawing and returns the set's handle.
     SphereSetHandle add_spheres(const std::vector<SphereInstance>& spheres);
     /// Replaces the spheres of a set (e.g. new colours after a split) and unmarks them all; throws

@@ -4,7 +4,9 @@
 /// `spt render SCENE.json` and a viewer, so both draw the same pixels. World frame, model units.
 #include "spt/render/frame.hpp"
 #include "spt/render/renderer.hpp"
+#include "spt/deforming_model.hpp"
 #include "spt/simulation.hpp"
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -33,9 +35,16 @@ EffectSet effects_for_overlays(EffectSet scene, const SceneOverlays& overlays);
 /// The uploaded geometry of one scene.
 class SceneDrawing {
 public:
-    /// Uploads each distinct model once: the mesh of a mesh model (imported again, scaled), and
-    /// every model's sampling spheres. Throws Error(BadInput) if a mesh cannot be read.
+    /// Uploads each distinct model once: the mesh of a mesh model (imported again, scaled) or of a
+    /// .spt model given its mesh, and every model's sampling spheres; an animated object gets its
+    /// own uploads, posed by show_time. Throws Error(BadInput) if a mesh cannot be read.
     SceneDrawing(Renderer& renderer, const Scene& scene);
+    ~SceneDrawing();
+
+    /// Poses every animated object at scene time `time` (seconds) as the effect `deform` does, or
+    /// at its bind pose when `deform` is false (a simulation without the effect), and uploads its
+    /// mesh and spheres: call before frame() for a scene whose objects deform.
+    void show_time(Renderer& renderer, double time, bool deform);
 
     /// The frame of one state: `poses` (world, object order), the step that led to it (nullptr
     /// for the initial state), the poses before its response (`ghost`), each object's origin
@@ -54,6 +63,9 @@ private:
     const Scene& scene_;
     std::vector<MeshHandle> mesh_;      // per object; id 0 without a mesh
     std::vector<SphereSetHandle> set_;  // per object
+    std::vector<std::unique_ptr<DeformingModel>> deforming_; // per object: its own pose when animated
+    // The model an object's spheres and pairs are drawn from: its posed one when animated.
+    const CollisionModel& model_of(size_t i) const;
 };
 
 } // namespace spt::render

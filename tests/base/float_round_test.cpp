@@ -1,0 +1,32 @@
+// Rounding of stored bounds (core/src/base/float_round.hpp).
+#include "base/float_round.hpp"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace {
+
+using spt::detail::next_up;
+
+TEST(FloatRound, NextUpIsNextafterTowardsInfinityForEveryKindOfFloat) {
+    const float inf = std::numeric_limits<float>::infinity();
+    const float cases[] = {0.0f, -0.0f, 1.0f, -1.0f, std::numeric_limits<float>::denorm_min(),
+                           -std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::min(),
+                           -std::numeric_limits<float>::min(), std::numeric_limits<float>::max(),
+                           -std::numeric_limits<float>::max(), inf, -inf, 3.5e-3f, -7.25e12f};
+    for (float f : cases) EXPECT_EQ(next_up(f), std::nextafter(f, inf)) << f;
+    EXPECT_TRUE(std::isnan(next_up(std::nanf(""))));
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<uint32_t> bits;
+    for (int i = 0; i < 100000; ++i) {
+        const uint32_t b = bits(rng);
+        float f;
+        std::memcpy(&f, &b, sizeof f);
+        if (std::isnan(f)) continue;
+        const float a = next_up(f), e = std::nextafter(f, inf);
+        ASSERT_EQ(std::memcmp(&a, &e, sizeof a), 0) << f;
+    }
+}
+
+} // namespace
