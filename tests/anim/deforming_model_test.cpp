@@ -2,6 +2,7 @@
 // deforming_model.cpp, core/src/tree/compact_refit.cpp).
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
+#include "spt/error.hpp"
 #include "spt/query.hpp"
 #include "meshgen.hpp"
 #include "query/model_access.hpp"

@@ -111,8 +111,9 @@ struct AnimatedMesh {
 };
 
 /// Reads a mesh file as import_mesh does, plus its skins, morph targets and animations
-/// (glTF 2.0, FBX, Collada, SMD, MDL: what assimp reads of them). A file without them gives an
-/// empty rig and no clips. Throws Error(BadInput) naming the file for joint weights that are not
+/// (glTF 2.0, FBX, Collada, SMD, MDL: what assimp reads of them; a glTF 2.0 file's clips and skin
+/// weights as its own samplers and accessors say, STEP and CUBICSPLINE kept). A file without them
+/// gives an empty rig and no clips. Throws Error(BadInput) naming the file for joint weights that are not
 /// finite or sum to 0, key times out of order or not finite, non-finite key values; more than 4
 /// joints on a vertex keeps the 4 heaviest and says so in imported.report.warnings.
 AnimatedMesh import_animated_mesh(const std::string& path, const ImportOptions& options = {});

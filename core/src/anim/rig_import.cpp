@@ -1,13 +1,16 @@
 // Reading a file's skins, morph targets and animations through assimp (spt/animation.hpp).
 // The mesh itself comes from import_mesh; the rig is read from the same assimp scene in the same
-// vertex order (nodes depth first, each node's meshes in turn), so welded_index maps it.
-#include "spt/animation.hpp"
+// vertex order (nodes depth first, each node's meshes in turn), so welded_index maps it. For
+// glTF 2.0 files the clips and skin weights are then read from the file too (gltf_animation.hpp).
+#include "anim/gltf_animation.hpp"
+#include "anim/rig_import.hpp"
 #include "spt/error.hpp"
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 
 namespace spt {
@@ -233,9 +236,11 @@ struct Reader {
 
 } // namespace
 
-AnimatedMesh import_animated_mesh(const std::string& path, const ImportOptions& options) {
-    AnimatedMesh out;
-    out.imported = import_mesh(path, options); // the checks of a mesh file, and the welded mesh
+} // namespace spt
+
+namespace spt::detail {
+
+void read_assimp_rig(const std::string& path, AnimatedMesh& out, std::vector<MorphMesh>& morphs) {
     Assimp::Importer importer;
     // The flags import_mesh reads with, so that vertices come in the same order.
     const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
@@ -282,6 +287,26 @@ AnimatedMesh import_animated_mesh(const std::string& path, const ImportOptions& 
         out.imported.report.warnings.push_back(std::to_string(r.trimmed) +
                                                " file vertices had more than 4 joints: each keeps its 4 heaviest, renormalised");
     out.rig = std::move(rig);
+    morphs.clear();
+    for (const MeshInstance& in : r.instances)
+        if (in.target_count) morphs.push_back({in.node, in.first_target, in.target_count});
+}
+
+} // namespace spt::detail
+
+namespace spt {
+
+AnimatedMesh import_animated_mesh(const std::string& path, const ImportOptions& options) {
+    AnimatedMesh out;
+    out.imported = import_mesh(path, options); // the checks of a mesh file, and the welded mesh
+    std::optional<detail::GltfFile> gltf;
+    if (detail::is_gltf_path(path)) gltf.emplace(path);
+    if (gltf && !gltf->is_version_2()) gltf.reset(); // glTF 1.0: assimp's reading only
+    // Before assimp's reading of the weights, which has lost the 0s and NaNs.
+    if (gltf) detail::check_gltf_skin_weights(*gltf);
+    std::vector<detail::MorphMesh> morphs;
+    detail::read_assimp_rig(path, out, morphs);
+    if (gltf && !out.rig.influences.empty()) detail::apply_gltf_animation(*gltf, out.rig, morphs, out.clips);
     return out;
 }
 
