@@ -11,6 +11,20 @@
 
 namespace spt {
 
+/// How well the sampling spheres cover the surface across a clip (docs/deforming.md, "Stretch"):
+/// surface points (each triangle's corners, edge middles and a grid inside) at poses every
+/// 1/frames_per_second seconds, and how far the farthest lies outside every sphere.
+struct ClipCoverage {
+    double bind_gap = 0;    ///< the largest gap at the bind pose, model units (0: covered)
+    double largest_gap = 0; ///< the largest gap at any pose measured, model units
+    double time = 0;        ///< clip seconds of that pose
+    Eigen::Vector3d where = Eigen::Vector3d::Zero(); ///< that surface point at the bind pose, object frame
+    double largest_growth = 0; ///< the most a point's gap grows over its bind gap at any pose (stretch)
+    double growth_time = 0;    ///< clip seconds of that pose
+    Eigen::Vector3d growth_where = Eigen::Vector3d::Zero(); ///< that point at the bind pose, object frame
+    int poses = 0;          ///< poses measured
+};
+
 /// One deforming object: a tree of a document bound to the animated mesh it was made from.
 class DeformingModel {
 public:
@@ -38,6 +52,10 @@ public:
     /// Each sample's surface point at the current pose (SampleSet order, the samples' local frame:
     /// add the document's origin for the object frame), model units.
     const std::vector<Eigen::Vector3f>& sample_points() const { return points_; }
+
+    /// Measures the coverage of the surface by the spheres across `clip` (see ClipCoverage) on
+    /// `threads` copies of the model (the same answer for any count); this model keeps its pose.
+    ClipCoverage measure_coverage(const Clip& clip, double frames_per_second = 30, int threads = 1) const;
 
 private:
     std::shared_ptr<const AnimatedMesh> mesh_;
