@@ -214,6 +214,28 @@ TEST(DeformingModel, TheTriangleTreeHoldsItsTrianglesAtEveryPose) {
     }
 }
 
+// A box wholly inside the bent tip, no surfaces meeting: found inside the posed closed triangles
+// (the solid grids were made for the bind pose), at the sphere and exact levels alike.
+TEST(DeformingModel, ContainmentIsFoundAtTheDeformedPose) {
+    const ImportedMesh box = meshgen::prepare(meshgen::box(0.1, 0.1, 0.1), "small_box.obj");
+    const SptDocument box_doc = make_document(box.mesh);
+    const CollisionModel inside(box_doc, box.mesh);
+    DeformingModel dm(bar().doc, bar().mesh);
+    const Pose bar_pose{Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero()};
+    const Pose in_tip{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0.7, 0)}; // where the tip stands up
+    QueryScratch scratch;
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        QueryOptions o;
+        o.level = level;
+        dm.pose(nullptr, 0);
+        EXPECT_FALSE(collide(dm.model(), bar_pose, inside, in_tip, o, scratch).collide) << int(level);
+        dm.pose(&bar().mesh->clips[0], 1.0);
+        EXPECT_TRUE(collide(dm.model(), bar_pose, inside, in_tip, o, scratch).collide) << int(level);
+        // And the other way round: the bar's pieces are not inside the box.
+        EXPECT_TRUE(collide(inside, in_tip, dm.model(), bar_pose, o, scratch).collide) << int(level);
+    }
+}
+
 TEST(DeformingModel, APoseOfTheWrongSizeOrNotFiniteIsRefused) {
     DeformingModel dm(bar().doc, bar().mesh);
     EXPECT_THROW(dm.pose_on({Eigen::Vector3d::Zero()}), Error);
