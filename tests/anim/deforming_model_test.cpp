@@ -263,6 +263,36 @@ Clip rigid_turn() {
     return c;
 }
 
+// The joints' ball holds every posed vertex and sampling sphere, at any time, without a pose.
+TEST(PoseBound, TheJointsBallHoldsThePosedModel) {
+    auto figure = std::make_shared<const AnimatedMesh>(
+        import_animated_mesh(std::string(SPT_SOURCE_DIR) + "/resources/models/walking_figure.gltf"));
+    ConvertOptions coarse;
+    coarse.tolerance = 0.05;
+    const SptDocument doc = make_document(figure->imported.mesh, coarse);
+    struct Case {
+        const SptDocument& doc;
+        std::shared_ptr<const AnimatedMesh> mesh;
+    };
+    for (const Case& c : {Case{bar().doc, bar().mesh}, Case{doc, figure}}) {
+        DeformingModel dm(c.doc, c.mesh);
+        for (double t : {0.0, 0.13, 0.5, 0.77, 1.0}) {
+            const auto [centre, radius] = dm.bound_at(&c.mesh->clips[0], t);
+            dm.pose(&c.mesh->clips[0], t);
+            for (const Eigen::Vector3d& v : dm.vertices()) ASSERT_LE((v - centre).norm(), radius) << t;
+            const CompactTree& tree = dm.model().tree();
+            for (const CompactNode& n : tree.nodes())
+                for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k)
+                    ASSERT_LE((dm.model().origin() + tree.sphere_center(n, k).cast<double>() - centre).norm() + n.ss_radius,
+                              radius) << t;
+            // And it is a bound, not the world: within twice the posed vertices' own ball.
+            double far = 0;
+            for (const Eigen::Vector3d& v : dm.vertices()) far = std::max(far, (v - centre).norm());
+            EXPECT_LT(radius, 2 * far + 0.2) << t;
+        }
+    }
+}
+
 TEST(Stretch, ARigidMotionStretchesNothing) {
     const ClipStretch s = measure_stretch(*bar().mesh, rigid_turn());
     EXPECT_NEAR(s.largest, 1, 1e-12);

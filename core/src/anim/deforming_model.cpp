@@ -48,6 +48,7 @@ DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const Ani
     vertices_ = m.positions;
     vertex_normals_ = m.normals;
     points_ = bind_points_, normals_ = bind_normals_;
+    measure_joints();
     face_sampled_.assign(m.triangles.size(), 0);
     for (size_t i = 0; i < s.size(); ++i)
         if (s.is_face_sample(i)) face_sampled_[s.source_index(i)] = 1;
