@@ -149,7 +149,7 @@ struct Body {
 // Two objects; A at the identity, B at base + s * u with rotation `rot`, in A's frame. u points
 // away from A: B first touches A coming in from a large s. Near contact is measured along u.
 struct Case {
-    std::string name, title, placement;
+    std::string name, title, about_b, placement;
     Body a, b;
     Eigen::Quaterniond rot = Eigen::Quaterniond::Identity();
     Eigen::Vector3d base = Eigen::Vector3d::Zero(), u = Eigen::Vector3d::UnitX();
@@ -616,8 +616,8 @@ void write_frames_csv(const std::string& path, const std::vector<CaseResult>& re
     for (const auto& r : results) {
         const Case& c = *r.c;
         for (size_t f = 0; f < c.frames; ++f) {
-            o << c.name << "," << f << "," << fixed(c.a.anim->times[f], 5) << "," << fixed(c.s / c.diag, 5) << ","
-              << (std::isfinite(r.s_star[f]) ? fixed(r.s_star[f] / c.diag, 5) : "") << "," << r.near[f] << "," << r.truth[f];
+            o << c.name << "," << f << "," << fixed(c.a.anim->times[f], 5) << "," << fixed(c.s / c.diag, 8) << ","
+              << (std::isfinite(r.s_star[f]) ? fixed(r.s_star[f] / c.diag, 8) : "") << "," << r.near[f] << "," << r.truth[f];
             for (const auto& t : r.timings) {
                 if (!t.in_main_table) continue;
                 std::vector<double> v;
@@ -645,27 +645,43 @@ void write_summary_csv(const std::string& path, const std::vector<CaseResult>& r
         }
 }
 
-// Agreement on the near-contact poses against the median time a frame (log scale), one panel a
-// case, as docs/accuracy-vs-time.md plots its configurations; plain SVG, no library.
+// Agreement near contact against the median time a frame (log scale), one panel a case, as
+// docs/accuracy-vs-time.md plots its configurations: filled marks for the near-contact poses
+// (first contact +-1% of the diagonal), hollow ones for the clip's own frames within +-1% of it.
+// Plain SVG, no library.
 void write_svg(const std::string& path, const std::vector<CaseResult>& results) {
     std::ofstream o(path);
     if (!o) throw Error(ErrorKind::CannotWrite, path + ": cannot write");
-    const double pw = 360, ph = 260, ml = 60, mt = 40, mb = 50, gap = 30;
-    const double W = ml + double(results.size()) * (pw + gap), H = mt + ph + mb + 30;
+    const double pw = 360, ph = 260, ml = 60, mt = 40, mb = 50, gap = 45, legend = 50;
+    const double W = ml + double(results.size()) * (pw + gap), H = mt + ph + mb + legend;
     const char* colours[] = {"#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b"};
+    // A mark of shape k (circle, square, diamond, triangle, cross) at (x, y).
+    auto mark = [&](double x, double y, size_t k, bool filled) {
+        const std::string c = colours[k % 5];
+        const std::string paint = filled ? "fill=\"" + c + "\" stroke=\"" + c + "\" stroke-width=\"2\"" : "fill=\"white\" stroke=\"" + c + "\" stroke-width=\"1.5\"";
+        std::ostringstream m;
+        switch (k % 5) {
+        case 0: m << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" "; break;
+        case 1: m << "<rect x=\"" << x - 4.5 << "\" y=\"" << y - 4.5 << "\" width=\"9\" height=\"9\" "; break;
+        case 2: m << "<polygon points=\"" << x << "," << y - 6 << " " << x + 6 << "," << y << " " << x << "," << y + 6 << " " << x - 6 << "," << y << "\" "; break;
+        case 3: m << "<polygon points=\"" << x << "," << y - 6 << " " << x + 6 << "," << y + 5 << " " << x - 6 << "," << y + 5 << "\" "; break;
+        default: m << "<path d=\"M" << x - 5 << "," << y - 5 << "L" << x + 5 << "," << y + 5 << "M" << x - 5 << "," << y + 5 << "L" << x + 5 << "," << y - 5 << "\" "; break;
+        }
+        o << m.str() << paint << "/>\n";
+    };
     o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    double lo = INFINITY, hi = 0;
+    auto pct = [](size_t a, size_t n) { return n ? 100.0 * double(a) / double(n) : 100.0; };
+    double lo = INFINITY, hi = 0, ymin = 100;
     for (const auto& r : results)
-        for (size_t i = 0; i < r.timings.size(); ++i)
-            if (r.timings[i].in_main_table) lo = std::min(lo, r.summary[i].total), hi = std::max(hi, r.summary[i].total);
+        for (size_t i = 0; i < r.timings.size(); ++i) {
+            if (!r.timings[i].in_main_table) continue;
+            const Summary& s = r.summary[i];
+            lo = std::min(lo, s.total), hi = std::max(hi, s.total);
+            ymin = std::min({ymin, pct(s.agree_pushed, s.pushed), pct(s.agree_near, s.near)});
+        }
     const double x0 = std::floor(std::log10(lo / 1e3)), x1 = std::ceil(std::log10(hi / 1e3));
-    double ymin = 100;
-    for (const auto& r : results)
-        for (size_t i = 0; i < r.timings.size(); ++i)
-            if (r.timings[i].in_main_table && r.summary[i].pushed)
-                ymin = std::min(ymin, 100.0 * double(r.summary[i].agree_pushed) / double(r.summary[i].pushed));
-    const double y0 = std::min(90.0, std::floor(ymin / 5) * 5), y1 = 100.5;
+    const double y0 = std::min(90.0, std::floor(ymin / 5) * 5), y1 = 101;
     for (size_t p = 0; p < results.size(); ++p) {
         const CaseResult& r = results[p];
         const double ox = ml + double(p) * (pw + gap), oy = mt;
@@ -676,31 +692,42 @@ void write_svg(const std::string& path, const std::vector<CaseResult>& results) 
         o << "<rect x=\"" << ox << "\" y=\"" << oy << "\" width=\"" << pw << "\" height=\"" << ph
           << "\" fill=\"none\" stroke=\"#444\"/>\n";
         for (double e = x0; e <= x1; e += 1) {
-            o << "<line x1=\"" << X(std::pow(10, e) * 1e3) << "\" y1=\"" << oy << "\" x2=\"" << X(std::pow(10, e) * 1e3)
-              << "\" y2=\"" << oy + ph << "\" stroke=\"#ddd\"/>\n";
-            o << "<text x=\"" << X(std::pow(10, e) * 1e3) << "\" y=\"" << oy + ph + 15 << "\" text-anchor=\"middle\">"
-              << fixed(std::pow(10, e), e < 0 ? 1 : 0) << "</text>\n";
+            const double x = X(std::pow(10, e) * 1e3);
+            o << "<line x1=\"" << x << "\" y1=\"" << oy << "\" x2=\"" << x << "\" y2=\"" << oy + ph << "\" stroke=\"#ddd\"/>\n";
+            o << "<text x=\"" << x << "\" y=\"" << oy + ph + 15 << "\" text-anchor=\"middle\">" << fixed(std::pow(10, e), e < 0 ? 1 : 0)
+              << "</text>\n";
         }
-        for (double y = std::ceil(y0 / 5) * 5; y <= 100; y += 5) {
-            o << "<line x1=\"" << ox << "\" y1=\"" << Y(y) << "\" x2=\"" << ox + pw << "\" y2=\"" << Y(y)
-              << "\" stroke=\"#ddd\"/>\n";
+        const double ystep = y1 - y0 > 30 ? 10 : 5;
+        for (double y = std::ceil(y0 / ystep) * ystep; y <= 100; y += ystep) {
+            o << "<line x1=\"" << ox << "\" y1=\"" << Y(y) << "\" x2=\"" << ox + pw << "\" y2=\"" << Y(y) << "\" stroke=\"#ddd\"/>\n";
             if (p == 0) o << "<text x=\"" << ox - 6 << "\" y=\"" << Y(y) + 4 << "\" text-anchor=\"end\">" << y << "</text>\n";
         }
         o << "<text x=\"" << ox + pw / 2 << "\" y=\"" << oy + ph + 32
           << "\" text-anchor=\"middle\">update + query, median µs a frame (log)</text>\n";
-        size_t ci = 0;
+        size_t k = 0;
         for (size_t i = 0; i < r.timings.size(); ++i) {
             if (!r.timings[i].in_main_table) continue;
             const Summary& s = r.summary[i];
-            const double pc = s.pushed ? 100.0 * double(s.agree_pushed) / double(s.pushed) : 100.0;
-            o << "<circle cx=\"" << X(s.total) << "\" cy=\"" << Y(pc) << "\" r=\"5\" fill=\"" << colours[ci % 5] << "\"/>\n";
-            o << "<text x=\"" << X(s.total) + 7 << "\" y=\"" << Y(pc) + 14 + 11 * double(ci % 2) << "\" fill=\""
-              << colours[ci % 5] << "\">" << r.timings[i].name << "</text>\n";
-            ++ci;
+            mark(X(s.total), Y(pct(s.agree_near, s.near)), k, false);
+            mark(X(s.total), Y(pct(s.agree_pushed, s.pushed)), k, true);
+            ++k;
         }
     }
+    // The legend: one entry a library, then what filled and hollow mean.
+    double lx = ml;
+    const double ly = mt + ph + mb + 12;
+    size_t k = 0;
+    for (const auto& t : results.front().timings) {
+        if (!t.in_main_table) continue;
+        mark(lx + 6, ly, k++, true);
+        o << "<text x=\"" << lx + 16 << "\" y=\"" << ly + 4 << "\">" << t.name << "</text>\n";
+        lx += 30 + 6.5 * double(t.name.size());
+    }
+    o << "<text x=\"" << ml << "\" y=\"" << ly + 24
+      << "\">filled: the near-contact poses (first contact ±1% of the diagonal); hollow: the clip's frames within ±1% "
+         "of first contact</text>\n";
     o << "<text x=\"14\" y=\"" << mt + ph / 2 << "\" transform=\"rotate(-90 14 " << mt + ph / 2
-      << ")\" text-anchor=\"middle\">agree with FCL at ±1% of the diagonal (%)</text>\n</svg>\n";
+      << ")\" text-anchor=\"middle\">agree with FCL near contact (%)</text>\n</svg>\n";
 }
 
 void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, const std::string& command,
@@ -712,7 +739,7 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
         const Case& c = *r.c;
         size_t colliding = 0, near = 0, no_contact = 0;
         for (size_t f = 0; f < c.frames; ++f) colliding += r.truth[f], near += r.near[f], no_contact += !std::isfinite(r.s_star[f]);
-        o << "**" << c.title << ".** " << c.placement << " " << c.frames << " frames over the clip, " << colliding
+        o << "**" << c.title << ".** " << c.about_b << " " << c.placement << " " << c.frames << " frames over the clip, " << colliding
           << " colliding (FCL, trees built afresh), " << near << " within ±1% of the diagonal (" << fixed(c.diag, 3)
           << ") of first contact; " << r.pushed_pose.size() << " near-contact poses. A: "
           << c.a.mesh().positions.size() << " vertices, " << c.a.mesh().triangles.size() << " triangles, "
@@ -779,7 +806,7 @@ int main(int argc, char** argv) {
     std::string figure = SPT_SOURCE_DIR "/resources/models/walking_figure.gltf";
     std::string fbx = "/usr/share/assimp/models/FBX/animation_with_skeleton.fbx";
     std::string out_dir, stem = "deforming-bench";
-    std::string command = "deforming_bench";
+    std::string command = argv[0];
     for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -840,6 +867,7 @@ int main(int argc, char** argv) {
             c.b.fixed_doc = std::make_shared<const SptDocument>(make_document(*c.b.fixed_mesh));
             c.u = -Eigen::Vector3d::UnitY(); // the tile comes up from below: its top at y = -s
             c.diag = fig_diag, c.frames = frames;
+            c.about_b = "B: a box 0.4 × 0.2 × 1.2 (x from 0 to 0.4: under the left foot only, z from -0.6 to 0.6).";
             c.s = -0.005 * fig_diag;
             c.placement = "The tile's top at y = " + fixed(-c.s, 4) + " (0.5% of the diagonal above the soles' floor).";
             cases.push_back(std::move(c));
@@ -881,6 +909,8 @@ int main(int argc, char** argv) {
             Eigen::Vector3d blo = across - Eigen::Vector3d::Constant(side / 2), bhi = across + Eigen::Vector3d::Constant(side / 2);
             blo[axis] = c.u[axis] > 0 ? 0 : -side, bhi[axis] = c.u[axis] > 0 ? side : 0;
             c.b.fixed_mesh = std::make_shared<const TriangleMesh>(box_mesh("box", blo, bhi));
+            c.about_b = "B: a cube a third of the diagonal on the side to which the clip's extreme point moves most, "
+                        "centred across on that point's mean position.";
             c.b.fixed_doc = std::make_shared<const SptDocument>(make_document(*c.b.fixed_mesh));
             c.diag = diag, c.frames = frames;
             cases.push_back(std::move(c));
@@ -894,6 +924,8 @@ int main(int argc, char** argv) {
             c.a.anim = &walker, c.b.anim = &walker2;
             c.rot = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitY()));
             c.u = Eigen::Vector3d::UnitZ();
+            c.about_b = "B: the same figure turned 180° about y, half a cycle (" + fixed(0.5 * walker.clip->duration, 2) +
+                        " s) on in the clip, in front of A (+z).";
             c.diag = fig_diag, c.frames = frames;
             cases.push_back(std::move(c));
         }
@@ -912,7 +944,7 @@ int main(int argc, char** argv) {
             c.s = median(s);
             std::ostringstream p;
             const auto [mn, mx] = std::minmax_element(s.begin(), s.end());
-            p << "B offset along (" << c.u.x() << ", " << c.u.y() << ", " << c.u.z() << ") by " << fixed(c.s, 4)
+            p << "B offset along (" << c.u.x() + 0.0 << ", " << c.u.y() + 0.0 << ", " << c.u.z() + 0.0 << ") by " << fixed(c.s, 4)
               << ", the median of the frames' first contacts (" << fixed(*mn, 4) << " to " << fixed(*mx, 4) << ").";
             c.placement = p.str();
             std::cerr << c.name << ": " << c.placement << "\n";
