@@ -205,6 +205,7 @@ struct Runner {
     virtual ~Runner() = default;
     virtual void update(size_t f) = 0;
     virtual bool query(const Pose& b_in_a) = 0;
+    QueryCounters work; // spt's: the last query's work
 };
 
 class SptRunner : public Runner {
@@ -221,7 +222,9 @@ public:
         if (b_) b_->pose_on(c_.b.anim->frames[f]);
     }
     bool query(const Pose& p) override {
-        return collide_relative(a_->model(), b_ ? b_->model() : b_fixed_, p, options_, scratch_).collide;
+        const QueryResult r = collide_relative(a_->model(), b_ ? b_->model() : b_fixed_, p, options_, scratch_);
+        work = r.counters;
+        return r.collide;
     }
     const CollisionModel& a() const { return a_->model(); }
     const CollisionModel& b() const { return b_ ? b_->model() : b_fixed_; }
@@ -248,7 +251,9 @@ public:
     }
     void update(size_t f) override { f_ = f; }
     bool query(const Pose& p) override {
-        return collide_relative(a_[f_], b_ ? (*b_)[f_] : *b_fixed_, p, options_, scratch_).collide;
+        const QueryResult r = collide_relative(a_[f_], b_ ? (*b_)[f_] : *b_fixed_, p, options_, scratch_);
+        work = r.counters;
+        return r.collide;
     }
 
 private:
@@ -412,6 +417,7 @@ struct Timing {
     std::vector<std::vector<double>> update_ns;   // [round][frame]
     std::vector<std::vector<double>> query_ns;    // [round][frame]
     std::vector<int> answer;                      // per frame at the clip's pose (last round)
+    std::vector<double> node_pairs, leaf_tests;   // per frame, spt's query work (last round)
     size_t inconsistent = 0;                      // frames whose answer changed between rounds
     std::vector<int> near_answer;                 // per pushed pose
     double round_median(size_t r, bool with_update) const {
@@ -566,6 +572,8 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
         t.update_ns.assign(size_t(rounds), std::vector<double>(c.frames, 0));
         t.query_ns.assign(size_t(rounds), std::vector<double>(c.frames, 0));
         t.answer.assign(c.frames, -1);
+        t.node_pairs.assign(c.frames, 0);
+        t.leaf_tests.assign(c.frames, 0);
     }
     for (int k = 0; k < rounds; ++k) {
         std::cerr << c.name << ": round " << k + 1 << " of " << rounds << ", load " << load_average() << "\n";
@@ -582,6 +590,8 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
                 t.query_ns[size_t(k)][f] = double(std::chrono::duration_cast<std::chrono::nanoseconds>(t2 - t1).count());
                 if (t.answer[f] >= 0 && t.answer[f] != int(hit)) ++t.inconsistent;
                 t.answer[f] = hit;
+                t.node_pairs[f] = double(t.runner->work.node_pairs);
+                t.leaf_tests[f] = double(t.runner->work.sphere_tests + t.runner->work.triangle_tests);
             }
         }
     }
@@ -748,7 +758,23 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
         if (c.b.deforming()) o << " and as much for B";
         else
             o << "; B: " << c.b.mesh().triangles.size() << " triangles, " << c.b.fixed_doc->samples.size() << " samples";
-        o << ". FCL refit answers that differ from FCL built afresh: " << r.fcl_refit_vs_fresh << ".\n\n";
+        o << ". FCL refit answers that differ from FCL built afresh: " << r.fcl_refit_vs_fresh << ".";
+        // Every frame on which a library disagrees with FCL, with its distance from first contact.
+        for (const auto& t : r.timings) {
+            if (!t.in_main_table) continue;
+            std::vector<std::string> miss;
+            for (size_t f = 0; f < c.frames; ++f)
+                if (t.answer[f] != r.truth[f])
+                    miss.push_back(std::to_string(f) + (r.truth[f] ? " (FN" : " (FP") +
+                                   (std::isfinite(r.s_star[f]) ? ", " + fixed(100 * (c.s - r.s_star[f]) / c.diag, 3) + "%" : "") + ")");
+            if (miss.empty()) continue;
+            o << " " << t.name << " disagrees at frame" << (miss.size() > 1 ? "s " : " ");
+            for (size_t k = 0; k < miss.size() && k < 8; ++k) o << (k ? ", " : "") << miss[k];
+            if (miss.size() > 8) o << " and " << miss.size() - 8 << " more";
+            o << ".";
+        }
+        o << " (A frame's percentage is B's offset minus first contact over the diagonal: negative is deeper than "
+             "first contact.)\n\n";
     }
     o << "| case | library | update µs | query µs | update + query µs (best round) | spt / FCL | spt / Bullet | agree, all "
          "frames (FP/FN) | agree, near-contact frames | agree, near-contact poses (FP/FN) |\n";
@@ -770,9 +796,10 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
     }
     o << "\nThe query alone at the same pose, on the deformed model (posed outside the timed span) and on a model "
          "converted from scratch from the posed mesh (default options):\n\n";
-    o << "| case | level | deformed query µs (best round) | rigid query µs (best round) | deformed / rigid | rigid agrees "
-         "with FCL, all frames / near-contact poses | rigid conversion ms a frame (samples) |\n";
-    o << "|---|---|---:|---:|---:|---|---|\n";
+    o << "| case | level | deformed query µs (best round) | rigid query µs (best round) | deformed / rigid | node pairs, "
+         "deformed / rigid (median) | sphere or triangle tests, deformed / rigid (median) | rigid agrees with FCL, all "
+         "frames / near-contact poses | rigid conversion ms a frame (samples) |\n";
+    o << "|---|---|---:|---:|---:|---|---|---|---|\n";
     for (const auto& r : results)
         for (size_t i = 0; i + 1 < r.timings.size(); ++i) {
             if (r.timings[i].in_main_table || r.timings[i].name.find("deformed") == std::string::npos) continue;
@@ -780,6 +807,8 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
             const Summary &sd = r.summary[i], &sg = r.summary[i + 1];
             o << "| " << r.c->name << " | " << d.name.substr(0, d.name.find(' ')) << " | " << us(sd.total) << " (" << us(sd.best)
               << ") | " << us(sg.total) << " (" << us(sg.best) << ") | " << fixed(ratio(d, g), 2) << " | "
+              << fixed(median(d.node_pairs), 0) << " / " << fixed(median(g.node_pairs), 0) << " | "
+              << fixed(median(d.leaf_tests), 0) << " / " << fixed(median(g.leaf_tests), 0) << " | "
               << percent(sg.agree_all, r.truth.size()) << " / " << percent(sg.agree_pushed, sg.pushed) << " | "
               << fixed(r.convert_ns / 1e6, 2) << " (" << fixed(r.rigid_samples, 0) << ") |\n";
         }
