@@ -213,8 +213,10 @@ public:
     SptRunner(const Case& c, QueryLevel level) : c_(c) {
         options_.level = level;
         options_.solids = false; // surfaces, as FCL and Bullet answer (a posed model has no solid anyway)
-        a_.emplace(*c.a.anim->doc, c.a.anim->mesh);
-        if (c.b.deforming()) b_.emplace(*c.b.anim->doc, c.b.anim->mesh);
+        // The spheres level poses the spheres only; exact poses the triangles too.
+        const bool triangles = level == QueryLevel::Exact;
+        a_.emplace(*c.a.anim->doc, c.a.anim->mesh, std::string(), triangles);
+        if (c.b.deforming()) b_.emplace(*c.b.anim->doc, c.b.anim->mesh, std::string(), triangles);
         else b_fixed_ = CollisionModel(*c.b.fixed_doc, *c.b.fixed_mesh);
     }
     void update(size_t f) override {
