@@ -210,13 +210,14 @@ struct Runner {
 
 class SptRunner : public Runner {
 public:
-    SptRunner(const Case& c, QueryLevel level) : c_(c) {
+    SptRunner(const Case& c, QueryLevel level, int threads = 1) : c_(c) {
         options_.level = level;
         options_.solids = false; // surfaces, as FCL and Bullet answer (a posed model has no solid anyway)
         // The spheres level poses the spheres only; exact poses the triangles too.
         const bool triangles = level == QueryLevel::Exact;
         a_.emplace(*c.a.anim->doc, c.a.anim->mesh, std::string(), triangles);
-        if (c.b.deforming()) b_.emplace(*c.b.anim->doc, c.b.anim->mesh, std::string(), triangles);
+        a_->set_threads(threads);
+        if (c.b.deforming()) b_.emplace(*c.b.anim->doc, c.b.anim->mesh, std::string(), triangles), b_->set_threads(threads);
         else b_fixed_ = CollisionModel(*c.b.fixed_doc, *c.b.fixed_mesh);
     }
     void update(size_t f) override {
@@ -573,6 +574,7 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
     };
     add("spt spheres", std::make_unique<SptRunner>(c, QueryLevel::Spheres), true, true);
     add("spt exact", std::make_unique<SptRunner>(c, QueryLevel::Exact), true, true);
+    add("spt spheres, 2 threads", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 2), true, true);
     add("FCL OBBRSS refit", std::make_unique<FclRunner>(c), true, true);
     add("Bullet GImpact", std::make_unique<BulletRunner>(c, false), true, true);
     add("Bullet GImpact rebuilt", std::make_unique<BulletRunner>(c, true), true, true);

@@ -236,6 +236,21 @@ TEST(DeformingModel, ContainmentIsFoundAtTheDeformedPose) {
     }
 }
 
+TEST(DeformingModel, APoseIsTheSameOnAnyThreadCount) {
+    DeformingModel one(bar().doc, bar().mesh), three(bar().doc, bar().mesh);
+    three.set_threads(3);
+    one.pose(&bar().mesh->clips[0], 0.6);
+    three.pose(&bar().mesh->clips[0], 0.6);
+    const CompactTree &a = one.model().tree(), &b = three.model().tree();
+    for (size_t i = 0; i < a.nodes().size(); ++i) {
+        const CompactNode &na = a.nodes()[i], &nb = b.nodes()[i];
+        ASSERT_EQ(na.bv_radius, nb.bv_radius);
+        for (int k = 0; k < 3; ++k) ASSERT_EQ(na.center[k], nb.center[k]);
+        for (uint32_t k = na.first; na.is_active() && k < na.first + na.count; ++k)
+            ASSERT_EQ(a.sphere_center(na, k), b.sphere_center(nb, k));
+    }
+}
+
 TEST(DeformingModel, APoseOfTheWrongSizeOrNotFiniteIsRefused) {
     DeformingModel dm(bar().doc, bar().mesh);
     EXPECT_THROW(dm.pose_on({Eigen::Vector3d::Zero()}), Error);

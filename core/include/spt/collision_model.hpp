@@ -62,7 +62,7 @@ private:
     // object frame), else the exact level is dropped; bounds refit. No containment: the solid
     // grid was made for the bind pose.
     void follow_surface(const std::vector<Eigen::Vector3d>& positions, const std::vector<Eigen::Vector3f>& points,
-                        const std::vector<Eigen::Vector3f>& normals, bool triangles);
+                        const std::vector<Eigen::Vector3f>& normals, bool triangles, int threads, TaskSystem* tasks);
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
     std::shared_ptr<const SolidData> solid_;

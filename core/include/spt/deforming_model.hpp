@@ -5,6 +5,7 @@
 /// bounding spheres are refit. Queries take model() as any CollisionModel.
 #include "spt/animation.hpp"
 #include "spt/collision_model.hpp"
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,6 +35,10 @@ public:
     /// model has no `exact` level (its triangle tree is a third of a pose's work).
     DeformingModel(const SptDocument& doc, std::shared_ptr<const AnimatedMesh> mesh, const std::string& tree_name = "",
                    bool triangles = true);
+
+    /// Spreads each pose over `threads` jobs (default 1) on the host's `tasks` (null: the library's
+    /// pool, spt/task_system.hpp); a pose is the same for any count.
+    void set_threads(int threads, TaskSystem* tasks = nullptr) { threads_ = std::max(1, threads), tasks_ = tasks; }
 
     /// Poses the model at `time` seconds of `clip` (a null clip: the bind pose, the mesh as imported).
     void pose(const Clip* clip, double time);
@@ -68,6 +73,8 @@ private:
     std::shared_ptr<const AnimatedMesh> mesh_;
     CollisionModel model_;
     bool triangles_;
+    int threads_ = 1;
+    TaskSystem* tasks_ = nullptr;
     std::vector<Eigen::Vector3f> bind_points_, bind_normals_; // the document's samples (local frame)
     std::vector<uint32_t> source_;                            // per sample: vertex, or triangle | kFaceSampleBit
     std::vector<Eigen::Vector3d> barycentric_;                // per face sample: weights of its triangle's corners

@@ -158,8 +158,8 @@ void CollisionModel::measure(bool by_leaves) {
 
 void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& positions,
                                     const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
-                                    bool triangles) {
-    tree_.follow_samples(points, normals);
+                                    bool triangles, int threads, TaskSystem* tasks) {
+    tree_.follow_samples(points, normals, threads, tasks);
     if (!triangles) exact_.reset();
     if (has_mesh()) {
         // Shared with copies of this model: those keep the pose they had.

@@ -2,6 +2,7 @@
 // bottom up (docs/deforming.md, "Refit").
 #include "spt/compact_tree.hpp"
 #include "base/float_round.hpp"
+#include "base/parallel.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -20,27 +21,39 @@ void store_ball(CompactNode& n, const Eigen::Vector3d& c, double r) {
 
 } // namespace
 
-void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals) {
-    for (const CompactNode& n : nodes_) {
-        if (!n.is_active()) continue;
-        float* block = centers_.data() + 3 * size_t(n.first);
-        for (uint32_t k = 0; k < n.count; ++k) {
-            const uint32_t sphere = n.first + k, s = sample_index_[sphere];
-            const bool flat = !two_sided_.empty() && two_sided_[sphere];
-            const Eigen::Vector3f c = flat ? points[s] : Eigen::Vector3f(points[s] - n.ss_radius * normals[s]);
-            block[k] = c.x(), block[n.count + k] = c.y(), block[2 * n.count + k] = c.z();
-            nx_[sphere] = snorm8(normals[s].x()), ny_[sphere] = snorm8(normals[s].y()), nz_[sphere] = snorm8(normals[s].z());
+void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
+                                 int threads, TaskSystem* tasks) {
+    if (active_.empty())
+        for (uint32_t i = 0; i < nodes_.size(); ++i)
+            if (nodes_[i].is_active()) active_.push_back(i);
+    detail::parallel_for(size_t(std::max(threads, 1)), threads, [&](size_t job, int) {
+        const size_t jobs = size_t(std::max(threads, 1));
+        for (size_t a = active_.size() * job / jobs; a < active_.size() * (job + 1) / jobs; ++a) {
+            const CompactNode& n = nodes_[active_[a]];
+            float* block = centers_.data() + 3 * size_t(n.first);
+            for (uint32_t k = 0; k < n.count; ++k) {
+                const uint32_t sphere = n.first + k, s = sample_index_[sphere];
+                const bool flat = !two_sided_.empty() && two_sided_[sphere];
+                const Eigen::Vector3f c = flat ? points[s] : Eigen::Vector3f(points[s] - n.ss_radius * normals[s]);
+                block[k] = c.x(), block[n.count + k] = c.y(), block[2 * n.count + k] = c.z();
+                nx_[sphere] = snorm8(normals[s].x()), ny_[sphere] = snorm8(normals[s].y()), nz_[sphere] = snorm8(normals[s].z());
+            }
         }
-    }
-    refit_bounds();
+    }, tasks);
+    refit_bounds(threads, tasks);
     if (!two_sided_.empty()) build_node_discs();
 }
 
-void CompactTree::refit_bounds() {
-    // Children follow their parent: from the last node back, every child is fitted before its parent.
-    for (size_t i = nodes_.size(); i-- > 0;) {
-        CompactNode& n = nodes_[i];
-        if (n.is_active()) {
+void CompactTree::refit_bounds(int threads, TaskSystem* tasks) {
+    // Active nodes first (on the jobs), then inner nodes from the last back: children follow
+    // their parent, so every child is fitted before its parent.
+    if (active_.empty())
+        for (uint32_t i = 0; i < nodes_.size(); ++i)
+            if (nodes_[i].is_active()) active_.push_back(i);
+    detail::parallel_for(size_t(std::max(threads, 1)), threads, [&](size_t job, int) {
+        const size_t jobs = size_t(std::max(threads, 1));
+        for (size_t a = active_.size() * job / jobs; a < active_.size() * (job + 1) / jobs; ++a) {
+            CompactNode& n = nodes_[active_[a]];
             Eigen::Vector3d lo = sphere_center(n, n.first).cast<double>(), hi = lo;
             for (uint32_t k = n.first + 1; k < n.first + n.count; ++k) {
                 const Eigen::Vector3d c = sphere_center(n, k).cast<double>();
@@ -51,8 +64,11 @@ void CompactTree::refit_bounds() {
             for (uint32_t k = n.first; k < n.first + n.count; ++k)
                 far = std::max(far, (sphere_center(n, k).cast<double>() - mid).norm());
             store_ball(n, mid, far + double(n.ss_radius));
-            continue;
         }
+    }, tasks);
+    for (size_t i = nodes_.size(); i-- > 0;) {
+        CompactNode& n = nodes_[i];
+        if (n.is_active()) continue;
         const CompactNode &a = nodes_[i + 1], &b = nodes_[n.first];
         const Eigen::Vector3d ca(a.center[0], a.center[1], a.center[2]), cb(b.center[0], b.center[1], b.center[2]);
         const double ra = a.bv_radius, rb = b.bv_radius, d = (cb - ca).norm();
