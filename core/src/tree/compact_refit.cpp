@@ -19,27 +19,35 @@ void store_ball(CompactNode& n, const Eigen::Vector3d& c, double r) {
     n.bv_radius = detail::round_up(r + (f - c).norm());
 }
 
+// f(node index) for every active node, the nodes split evenly over `threads` jobs; `active`
+// (the active nodes' indices) is filled on the first call.
+template <class F>
+void each_active(const std::vector<CompactNode>& nodes, std::vector<uint32_t>& active, int threads, TaskSystem* tasks,
+                 F&& f) {
+    if (active.empty())
+        for (uint32_t i = 0; i < nodes.size(); ++i)
+            if (nodes[i].is_active()) active.push_back(i);
+    const size_t jobs = size_t(std::max(threads, 1));
+    detail::parallel_for(jobs, int(jobs), [&](size_t job, int) {
+        for (size_t a = active.size() * job / jobs; a < active.size() * (job + 1) / jobs; ++a) f(active[a]);
+    }, tasks);
+}
+
 } // namespace
 
 void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
                                  int threads, TaskSystem* tasks) {
-    if (active_.empty())
-        for (uint32_t i = 0; i < nodes_.size(); ++i)
-            if (nodes_[i].is_active()) active_.push_back(i);
-    detail::parallel_for(size_t(std::max(threads, 1)), threads, [&](size_t job, int) {
-        const size_t jobs = size_t(std::max(threads, 1));
-        for (size_t a = active_.size() * job / jobs; a < active_.size() * (job + 1) / jobs; ++a) {
-            const CompactNode& n = nodes_[active_[a]];
-            float* block = centers_.data() + 3 * size_t(n.first);
-            for (uint32_t k = 0; k < n.count; ++k) {
-                const uint32_t sphere = n.first + k, s = sample_index_[sphere];
-                const bool flat = !two_sided_.empty() && two_sided_[sphere];
-                const Eigen::Vector3f c = flat ? points[s] : Eigen::Vector3f(points[s] - n.ss_radius * normals[s]);
-                block[k] = c.x(), block[n.count + k] = c.y(), block[2 * n.count + k] = c.z();
-                nx_[sphere] = snorm8(normals[s].x()), ny_[sphere] = snorm8(normals[s].y()), nz_[sphere] = snorm8(normals[s].z());
-            }
+    each_active(nodes_, active_, threads, tasks, [&](uint32_t i) {
+        const CompactNode& n = nodes_[i];
+        float* block = centers_.data() + 3 * size_t(n.first);
+        for (uint32_t k = 0; k < n.count; ++k) {
+            const uint32_t sphere = n.first + k, s = sample_index_[sphere];
+            const bool flat = !two_sided_.empty() && two_sided_[sphere];
+            const Eigen::Vector3f c = flat ? points[s] : Eigen::Vector3f(points[s] - n.ss_radius * normals[s]);
+            block[k] = c.x(), block[n.count + k] = c.y(), block[2 * n.count + k] = c.z();
+            nx_[sphere] = snorm8(normals[s].x()), ny_[sphere] = snorm8(normals[s].y()), nz_[sphere] = snorm8(normals[s].z());
         }
-    }, tasks);
+    });
     refit_bounds(threads, tasks);
     if (!two_sided_.empty()) build_node_discs();
 }
@@ -47,25 +55,19 @@ void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, con
 void CompactTree::refit_bounds(int threads, TaskSystem* tasks) {
     // Active nodes first (on the jobs), then inner nodes from the last back: children follow
     // their parent, so every child is fitted before its parent.
-    if (active_.empty())
-        for (uint32_t i = 0; i < nodes_.size(); ++i)
-            if (nodes_[i].is_active()) active_.push_back(i);
-    detail::parallel_for(size_t(std::max(threads, 1)), threads, [&](size_t job, int) {
-        const size_t jobs = size_t(std::max(threads, 1));
-        for (size_t a = active_.size() * job / jobs; a < active_.size() * (job + 1) / jobs; ++a) {
-            CompactNode& n = nodes_[active_[a]];
-            Eigen::Vector3d lo = sphere_center(n, n.first).cast<double>(), hi = lo;
-            for (uint32_t k = n.first + 1; k < n.first + n.count; ++k) {
-                const Eigen::Vector3d c = sphere_center(n, k).cast<double>();
-                lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
-            }
-            const Eigen::Vector3d mid = 0.5 * (lo + hi);
-            double far = 0;
-            for (uint32_t k = n.first; k < n.first + n.count; ++k)
-                far = std::max(far, (sphere_center(n, k).cast<double>() - mid).norm());
-            store_ball(n, mid, far + double(n.ss_radius));
+    each_active(nodes_, active_, threads, tasks, [&](uint32_t i) {
+        CompactNode& n = nodes_[i];
+        Eigen::Vector3d lo = sphere_center(n, n.first).cast<double>(), hi = lo;
+        for (uint32_t k = n.first + 1; k < n.first + n.count; ++k) {
+            const Eigen::Vector3d c = sphere_center(n, k).cast<double>();
+            lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
         }
-    }, tasks);
+        const Eigen::Vector3d mid = 0.5 * (lo + hi);
+        double far = 0;
+        for (uint32_t k = n.first; k < n.first + n.count; ++k)
+            far = std::max(far, (sphere_center(n, k).cast<double>() - mid).norm());
+        store_ball(n, mid, far + double(n.ss_radius));
+    });
     for (size_t i = nodes_.size(); i-- > 0;) {
         CompactNode& n = nodes_[i];
         if (n.is_active()) continue;
