@@ -3,7 +3,9 @@
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
+#include "spt/ccd.hpp"
 #include "spt/query.hpp"
+#include "spt/response.hpp"
 #include "meshgen.hpp"
 #include "query/model_access.hpp"
 #include <gtest/gtest.h>
@@ -234,6 +236,34 @@ TEST(DeformingModel, ContainmentIsFoundAtTheDeformedPose) {
         // And the other way round: the bar's pieces are not inside the box.
         EXPECT_TRUE(collide(inside, in_tip, dm.model(), bar_pose, o, scratch).collide) << int(level);
     }
+}
+
+// The box above the bar, moved down onto the bent tip: backtrack (exact rule) moves it back out,
+// and continuous detection finds the contact within the motion, on the deformed pose.
+TEST(DeformingModel, BacktrackAndContinuousDetectionSeeTheDeformedPose) {
+    const ImportedMesh box = meshgen::prepare(meshgen::box(0.6, 0.3, 0.6), "box.obj");
+    const SptDocument box_doc = make_document(box.mesh);
+    const CollisionModel obstacle(box_doc, box.mesh);
+    DeformingModel dm(bar().doc, bar().mesh);
+    dm.pose(&bar().mesh->clips[0], 1.0); // the tip stands up to y = 1
+    QueryScratch scratch;
+    QueryOptions o;
+    const Pose bar_pose{Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero()};
+    const Pose into{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0.9, 0)};
+    ASSERT_TRUE(collide(dm.model(), bar_pose, obstacle, into, o, scratch).collide);
+    const BacktrackResult back =
+        backtrack(dm.model(), bar_pose, obstacle, into, Eigen::Vector3d(0, -1, 0), o, BacktrackRule::Exact, scratch);
+    ASSERT_TRUE(back.converged);
+    Pose out = into;
+    out.translation.y() += back.distance;
+    EXPECT_FALSE(collide(dm.model(), bar_pose, obstacle, out, o, scratch).collide);
+    EXPECT_GT(out.translation.y(), 1.0); // above the bent tip, which the bind pose does not reach
+    CcdOptions c;
+    const Pose from{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 2, 0)};
+    const CcdResult hit = first_contact(dm.model(), obstacle, from, into, c, scratch);
+    ASSERT_TRUE(hit.hit);
+    EXPECT_GT(hit.toi, 0.0);
+    EXPECT_LT(hit.toi, 1.0);
 }
 
 TEST(DeformingModel, APoseIsTheSameOnAnyThreadCount) {
