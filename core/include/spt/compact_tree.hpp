@@ -26,7 +26,8 @@ struct CompactNode {
 };
 static_assert(sizeof(CompactNode) == 32, "CompactNode must stay 32 bytes");
 
-/// Contiguous, SIMD-friendly copy of a tree for queries; immutable once built.
+/// Contiguous, SIMD-friendly copy of a tree for queries; changed after it is built only by
+/// follow_samples and refit_bounds (a deformed pose).
 class CompactTree {
 public:
     /// An empty layout (no nodes).
