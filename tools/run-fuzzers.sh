@@ -10,6 +10,8 @@ shift 2
 src=$(cd "$(dirname "$0")/.." && pwd)
 log=$build/fuzz/log.txt
 mkdir -p "$build/fuzz"
+# Leaks of the system's libraries (assimp's, on some refused files) are theirs, not findings.
+export LSAN_OPTIONS="suppressions=$src/tools/lsan-suppressions.txt${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 status=0
 for t in "$@"; do
   work=$build/fuzz/$t artifacts=$build/fuzz/artifacts/$t/

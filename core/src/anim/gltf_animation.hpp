@@ -3,7 +3,7 @@
 // interpolation (STEP comes through as plain keys, CUBICSPLINE as its values without tangents)
 // and the skin weights it drops without a word (0 and NaN, so a vertex with a NaN weight is
 // renormalised instead of refused).
-#include "anim/gltf_file.hpp"
+#include "io/gltf_file.hpp"
 #include "anim/rig_import.hpp"
 #include "spt/animation.hpp"
 

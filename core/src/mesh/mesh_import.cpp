@@ -2,6 +2,7 @@
 #include "base/cancel.hpp"
 #include "mesh/cancellable_io.hpp"
 #include "mesh/recentre.hpp"
+#include "io/gltf_file.hpp"
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include <assimp/Importer.hpp>
@@ -96,6 +97,7 @@ ImportedMesh import_mesh(const std::string& path, const ImportOptions& options) 
     if (!std::ifstream(path).good()) throw_bad_input(path, "cannot be opened for reading");
     if (std::filesystem::file_size(path, ec) == 0) throw_bad_input(path, "is empty");
 
+    detail::check_gltf_references(path); // assimp follows some of a glTF's indices unchecked
     RawMesh raw = read_raw(path, options, std::nullopt);
     // Far from the origin assimp's floats lose the mesh's detail: read again from the file's own
     // digits made relative (OBJ, PLY), when the file carries them.

@@ -1,5 +1,5 @@
 // Reading a glTF 2.0 file's JSON, buffers and accessors with every bound checked (gltf_file.hpp).
-#include "anim/gltf_file.hpp"
+#include "io/gltf_file.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
 #include <cctype>

@@ -56,3 +56,15 @@ private:
 };
 
 } // namespace spt::detail
+
+namespace spt::detail {
+
+// Before assimp reads a glTF 2.0 file: every index the file's objects give (scene nodes, node
+// children, meshes and skins, skin joints, primitive accessors, animation channels' nodes and
+// samplers, sampler accessors, buffer views, textures and images) is present where assimp needs
+// it and within its array; else Error(BadInput) naming the file and the JSON path. assimp 5.2.5
+// dereferences some of these unchecked (an animation channel with no node crashed it).
+// Files that are not glTF 2.0 pass unread.
+void check_gltf_references(const std::string& path);
+
+} // namespace spt::detail
