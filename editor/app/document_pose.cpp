@@ -27,17 +27,25 @@ bool DocumentPose::set(int clip, double time) {
     return true;
 }
 
-void DocumentPose::update(const SptDocument& doc, const std::string& tree_name, bool tree_changed) {
+std::string DocumentPose::update(const SptDocument& doc, const std::string& tree_name, bool tree_changed) {
     if (clip_ < 0 || doc.trees.empty()) {
         model_.reset();
-        return;
+        return {};
     }
-    // Without the exact level's triangles: the views draw spheres and the mesh, nothing queries it.
-    if (!model_ || tree_changed) model_ = std::make_unique<DeformingModel>(doc, animated_, tree_name, false);
-    model_->pose(&animated_->clips[size_t(clip_)], time_);
+    try {
+        // Without the exact level's triangles: the views draw spheres and the mesh, nothing queries it.
+        if (!model_ || tree_changed) model_ = std::make_unique<DeformingModel>(doc, animated_, tree_name, false);
+        model_->pose(&animated_->clips[size_t(clip_)], time_);
+    } catch (const std::exception& e) {
+        // Shown at the bind pose rather than not at all; a slot must not throw into Qt.
+        clip_ = -1, time_ = 0;
+        model_.reset();
+        return e.what();
+    }
     if (mesh_.triangles.empty()) mesh_ = animated_->imported.mesh;
     mesh_.positions = model_->vertices();
     mesh_.normals = model_->vertex_normals();
+    return {};
 }
 
 } // namespace spt::editor

@@ -5,6 +5,7 @@
 #include "spt/deforming_model.hpp"
 #include "spt/split_recipe.hpp"
 #include <memory>
+#include <string>
 
 namespace spt::editor {
 
@@ -25,8 +26,10 @@ public:
     /// seconds, held within the clip; false when that is the pose already.
     bool set(int clip, double time);
     /// Poses tree `tree_name` of `doc` at the chosen pose, bound to it again when `tree_changed`
-    /// (an edit changes the tree's nodes, radii and sphere order); at the bind pose it drops the model.
-    void update(const SptDocument& doc, const std::string& tree_name, bool tree_changed);
+    /// (an edit changes the tree's nodes, radii and sphere order); at the bind pose it drops the
+    /// model. A pose core refuses (a vertex posed to no finite point) goes back to the bind pose;
+    /// the returned text says why (empty when posed).
+    std::string update(const SptDocument& doc, const std::string& tree_name, bool tree_changed);
     /// The tree at the pose (posed spheres, sample points, vertices), or null at the bind pose.
     const DeformingModel* model() const { return model_.get(); }
     /// The mesh at the pose (visible-only selection), or null at the bind pose.

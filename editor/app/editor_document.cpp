@@ -27,7 +27,7 @@ void EditorDocument::tree_edited() {
     current_ = has_tree() && tree().find(current_) ? current_ : root_id();
     selection_.clear();
     forget_strokes();
-    if (has_tree()) pose_.update(doc_, tree().name(), true);
+    update_pose(true);
     emit treeChanged();
 }
 
@@ -83,8 +83,14 @@ size_t EditorDocument::select_rect(const ViewProjection& view, const PixelRect& 
 
 void EditorDocument::set_pose(int clip, double time) {
     if (!pose_.set(clip, time)) return;
-    if (has_tree()) pose_.update(doc_, tree().name(), false);
+    update_pose(false);
     emit poseChanged();
+}
+
+void EditorDocument::update_pose(bool tree_changed) {
+    if (!has_tree()) return;
+    const std::string why = pose_.update(doc_, tree().name(), tree_changed);
+    if (!why.empty()) emit poseRefused(QString::fromStdString(why));
 }
 
 void EditorDocument::set_tree(int index, const SamplingTree& tree, NodeId current) {

@@ -89,6 +89,8 @@ signals:
     void selectionChanged();
     /// The pose shown changed (clip or time), or the tree was bound to it again after a change.
     void poseChanged();
+    /// Core could not pose the mesh (why); the views show the bind pose instead.
+    void poseRefused(const QString& why);
 
 private:
     SptDocument doc_;
@@ -102,6 +104,7 @@ private:
     DocumentPose pose_;
     void forget_strokes();
     void tree_edited(); // the edited tree changed: its pose is bound again, then announced
+    void update_pose(bool tree_changed);
 };
 
 } // namespace spt::editor

@@ -40,6 +40,7 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     column->addWidget(timeline_);
     setCentralWidget(centre);
     for (int i = 0; i < 4; ++i) connect(grid_->view(i), &ViewWidget::message, this, &MainWindow::show_message);
+    connect(&doc_, &EditorDocument::poseRefused, this, [this](const QString& why) { show_message("not posed: " + why); });
     build_docks();
     build_menus();
 

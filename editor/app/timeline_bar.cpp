@@ -56,6 +56,7 @@ TimelineBar::TimelineBar(EditorDocument& doc, QWidget* parent) : QWidget(parent)
     connect(&timer_, &QTimer::timeout, this, &TimelineBar::tick);
     connect(&doc_, &EditorDocument::documentReset, this, &TimelineBar::document_reset);
     connect(&doc_, &EditorDocument::poseChanged, this, &TimelineBar::show_pose);
+    connect(&doc_, &EditorDocument::poseRefused, this, &TimelineBar::show_pose); // back at the bind pose
     document_reset();
 }
 
