@@ -1,7 +1,6 @@
 // replay_recipe: the recorded strokes of every manual split select again on new samples, at the
 // pose each split was made at.
 #include "spt/recipe.hpp"
-#include "io/recipe_codec.hpp"
 #include "selection/step_poses.hpp"
 #include "spt/selection.hpp"
 #include "spt/spt_file.hpp"
@@ -59,7 +58,8 @@ SamplingTree replay_recipe(const SamplingTree& authored, const SptDocument& doc,
 
 bool recipe_has_poses(const SptDocument& doc) {
     for (const SamplingTree& t : doc.trees)
-        if (detail::has_poses(t.recipe())) return true;
+        for (const RecipeStep& step : t.recipe())
+            if (!step.pose.bind()) return true;
     return false;
 }
 
