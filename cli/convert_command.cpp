@@ -5,6 +5,7 @@
 #include "process_pool.hpp"
 #include "spt/animation.hpp"
 #include "spt/convert.hpp"
+#include "spt/deforming_model.hpp"
 #include "spt/recipe.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
@@ -69,6 +70,34 @@ void replay_recipe_file(SptDocument& doc, const TriangleMesh& mesh, const BuildO
     }
 }
 
+// Formats that hold no animation: not read a second time for clips.
+bool static_format(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".off";
+}
+
+// An animated mesh's clips: how far each stretches the surface and how deep the gaps between the
+// new document's spheres get across it (docs/deforming.md, "Stretch").
+void report_clips(const std::string& in, const SptDocument& doc, const std::string& tree, int threads) {
+    if (static_format(in)) return;
+    auto mesh = std::make_shared<const AnimatedMesh>(import_animated_mesh(in));
+    if (mesh->clips.empty()) return;
+    const DeformingModel model(doc, mesh, doc.tree(tree) ? tree : std::string(), false);
+    for (const Clip& clip : mesh->clips) {
+        const ClipStretch st = measure_stretch(*mesh, clip);
+        const ClipCoverage cov = model.measure_coverage(clip, 30, threads);
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "  clip '%s' (%.3g s): stretch up to %.3g at %.3g s%s%s%s; largest coverage gap %.3g (bind pose "
+                      "%.3g), a gap grows by up to %.3g at %.3g s near (%.4g, %.4g, %.4g) (%d poses)\n",
+                      clip.name.c_str(), clip.duration, st.largest, st.time, st.joint.empty() ? "" : " (joint '",
+                      st.joint.c_str(), st.joint.empty() ? "" : "')", cov.largest_gap, cov.bind_gap, cov.largest_growth,
+                      cov.growth_time, cov.growth_where.x(), cov.growth_where.y(), cov.growth_where.z(), cov.poses);
+        std::cerr << line;
+    }
+}
+
 // Converts one file; runs in a worker process. Prints one summary line and the report.
 int convert_one(const std::string& in, const std::string& out, const ConvertArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -110,6 +139,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
         doc = make_document(m.mesh, opt, &st);
     }
     if (recipes) replay_recipe_file(doc, m.mesh, opt.build, *recipes, a.recipe, in, animated);
+    report_clips(in, doc, a.tree_name, a.threads);
     const auto t_save = std::chrono::steady_clock::now();
     save_spt(doc, out);
     const double save_secs = seconds_since(t_save);

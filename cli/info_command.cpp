@@ -75,11 +75,20 @@ nlohmann::json describe_model(const AnimatedMesh& m, const std::string& path) {
     j["joints"] = m.rig.joint_count;
     j["morph_targets"] = m.rig.morph_targets.size();
     j["clips"] = json::array();
-    for (size_t i = 0; i < m.clips.size(); ++i)
+    for (size_t i = 0; i < m.clips.size(); ++i) {
+        const ClipStretch st = measure_stretch(m, m.clips[i]);
         j["clips"].push_back({{"index", i},
                               {"name", m.clips[i].name},
                               {"duration", m.clips[i].duration},
-                              {"joints", m.clips[i].joints_animated}});
+                              {"joints", m.clips[i].joints_animated},
+                              {"stretch",
+                               {{"largest", st.largest},
+                                {"smallest", st.smallest},
+                                {"time", st.time},
+                                {"where", {st.where.x(), st.where.y(), st.where.z()}},
+                                {"joint", st.joint},
+                                {"gap_factor", st.gap_factor()}}}});
+    }
     j["warnings"] = r.warnings;
     return j;
 }
@@ -102,6 +111,16 @@ int run_model_info(const InfoArgs& a) {
         char line[64];
         std::snprintf(line, sizeof line, "  %5zu  %10.4f  %6u  ", i, m.clips[i].duration, m.clips[i].joints_animated);
         std::cout << line << m.clips[i].name << "\n";
+    }
+    for (const auto& c : j["clips"]) {
+        const auto& st = c["stretch"];
+        char line[256];
+        std::snprintf(line, sizeof line, "  stretch of clip %d: largest %.3f at %.3f s, near (%.4g, %.4g, %.4g)",
+                      c["index"].get<int>(), st["largest"].get<double>(), st["time"].get<double>(),
+                      st["where"][0].get<double>(), st["where"][1].get<double>(), st["where"][2].get<double>());
+        std::cout << line << (st["joint"].get<std::string>().empty() ? "" : " on joint '" + st["joint"].get<std::string>() + "'");
+        std::snprintf(line, sizeof line, "; coverage gaps there up to %.3gx the bind pose's\n", st["gap_factor"].get<double>());
+        std::cout << line;
     }
     for (const std::string& w : m.imported.report.warnings) std::cout << "warning: " << w << "\n";
     return 0;

@@ -3,7 +3,9 @@
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
+#include "spt/ccd.hpp"
 #include "spt/query.hpp"
+#include "spt/response.hpp"
 #include "meshgen.hpp"
 #include "query/model_access.hpp"
 #include <gtest/gtest.h>
@@ -214,12 +216,167 @@ TEST(DeformingModel, TheTriangleTreeHoldsItsTrianglesAtEveryPose) {
     }
 }
 
+// A box wholly inside the bent tip, no surfaces meeting: found inside the posed closed triangles
+// (the solid grids were made for the bind pose), at the sphere and exact levels alike.
+TEST(DeformingModel, ContainmentIsFoundAtTheDeformedPose) {
+    const ImportedMesh box = meshgen::prepare(meshgen::box(0.1, 0.1, 0.1), "small_box.obj");
+    const SptDocument box_doc = make_document(box.mesh);
+    const CollisionModel inside(box_doc, box.mesh);
+    DeformingModel dm(bar().doc, bar().mesh);
+    const Pose bar_pose{Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero()};
+    const Pose in_tip{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0.7, 0)}; // where the tip stands up
+    QueryScratch scratch;
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        QueryOptions o;
+        o.level = level;
+        dm.pose(nullptr, 0);
+        EXPECT_FALSE(collide(dm.model(), bar_pose, inside, in_tip, o, scratch).collide) << int(level);
+        dm.pose(&bar().mesh->clips[0], 1.0);
+        EXPECT_TRUE(collide(dm.model(), bar_pose, inside, in_tip, o, scratch).collide) << int(level);
+        // And the other way round: the bar's pieces are not inside the box.
+        EXPECT_TRUE(collide(inside, in_tip, dm.model(), bar_pose, o, scratch).collide) << int(level);
+    }
+}
+
+// The box above the bar, moved down onto the bent tip: backtrack (exact rule) moves it back out,
+// and continuous detection finds the contact within the motion, on the deformed pose.
+TEST(DeformingModel, BacktrackAndContinuousDetectionSeeTheDeformedPose) {
+    const ImportedMesh box = meshgen::prepare(meshgen::box(0.6, 0.3, 0.6), "box.obj");
+    const SptDocument box_doc = make_document(box.mesh);
+    const CollisionModel obstacle(box_doc, box.mesh);
+    DeformingModel dm(bar().doc, bar().mesh);
+    dm.pose(&bar().mesh->clips[0], 1.0); // the tip stands up to y = 1
+    QueryScratch scratch;
+    QueryOptions o;
+    const Pose bar_pose{Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero()};
+    const Pose into{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0.9, 0)};
+    ASSERT_TRUE(collide(dm.model(), bar_pose, obstacle, into, o, scratch).collide);
+    const BacktrackResult back =
+        backtrack(dm.model(), bar_pose, obstacle, into, Eigen::Vector3d(0, -1, 0), o, BacktrackRule::Exact, scratch);
+    ASSERT_TRUE(back.converged);
+    Pose out = into;
+    out.translation.y() += back.distance;
+    EXPECT_FALSE(collide(dm.model(), bar_pose, obstacle, out, o, scratch).collide);
+    EXPECT_GT(out.translation.y(), 1.0); // above the bent tip, which the bind pose does not reach
+    CcdOptions c;
+    const Pose from{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 2, 0)};
+    const CcdResult hit = first_contact(dm.model(), obstacle, from, into, c, scratch);
+    ASSERT_TRUE(hit.hit);
+    EXPECT_GT(hit.toi, 0.0);
+    EXPECT_LT(hit.toi, 1.0);
+}
+
+TEST(DeformingModel, APoseIsTheSameOnAnyThreadCount) {
+    DeformingModel one(bar().doc, bar().mesh), three(bar().doc, bar().mesh);
+    three.set_threads(3);
+    one.pose(&bar().mesh->clips[0], 0.6);
+    three.pose(&bar().mesh->clips[0], 0.6);
+    const CompactTree &a = one.model().tree(), &b = three.model().tree();
+    for (size_t i = 0; i < a.nodes().size(); ++i) {
+        const CompactNode &na = a.nodes()[i], &nb = b.nodes()[i];
+        ASSERT_EQ(na.bv_radius, nb.bv_radius);
+        for (int k = 0; k < 3; ++k) ASSERT_EQ(na.center[k], nb.center[k]);
+        for (uint32_t k = na.first; na.is_active() && k < na.first + na.count; ++k)
+            ASSERT_EQ(a.sphere_center(na, k), b.sphere_center(nb, k));
+    }
+}
+
 TEST(DeformingModel, APoseOfTheWrongSizeOrNotFiniteIsRefused) {
     DeformingModel dm(bar().doc, bar().mesh);
     EXPECT_THROW(dm.pose_on({Eigen::Vector3d::Zero()}), Error);
     std::vector<Eigen::Vector3d> p = bar().mesh->imported.mesh.positions;
     p[3].x() = NAN;
     EXPECT_THROW(dm.pose_on(p), Error);
+}
+
+} // namespace
+} // namespace spt
+
+namespace spt {
+namespace {
+
+// A clip that turns the whole bar rigidly (the root) stretches nothing.
+Clip rigid_turn() {
+    Clip c;
+    c.name = "turn", c.duration = 1;
+    NodeChannel ch;
+    ch.node = 0;
+    ch.rotation.times = {0, 1};
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitY()));
+    ch.rotation.values = {Eigen::Vector4d(0, 0, 0, 1), Eigen::Vector4d(q.x(), q.y(), q.z(), q.w())};
+    c.nodes = {ch};
+    return c;
+}
+
+// The joints' ball holds every posed vertex and sampling sphere, at any time, without a pose.
+TEST(PoseBound, TheJointsBallHoldsThePosedModel) {
+    auto figure = std::make_shared<const AnimatedMesh>(
+        import_animated_mesh(std::string(SPT_SOURCE_DIR) + "/resources/models/walking_figure.gltf"));
+    ConvertOptions coarse;
+    coarse.tolerance = 0.05;
+    const SptDocument doc = make_document(figure->imported.mesh, coarse);
+    struct Case {
+        const SptDocument& doc;
+        std::shared_ptr<const AnimatedMesh> mesh;
+    };
+    for (const Case& c : {Case{bar().doc, bar().mesh}, Case{doc, figure}}) {
+        DeformingModel dm(c.doc, c.mesh);
+        for (double t : {0.0, 0.13, 0.5, 0.77, 1.0}) {
+            const auto [centre, radius] = dm.bound_at(&c.mesh->clips[0], t);
+            dm.pose(&c.mesh->clips[0], t);
+            for (const Eigen::Vector3d& v : dm.vertices()) ASSERT_LE((v - centre).norm(), radius) << t;
+            const CompactTree& tree = dm.model().tree();
+            for (const CompactNode& n : tree.nodes())
+                for (uint32_t k = n.first; n.is_active() && k < n.first + n.count; ++k)
+                    ASSERT_LE((dm.model().origin() + tree.sphere_center(n, k).cast<double>() - centre).norm() + n.ss_radius,
+                              radius) << t;
+            // And it is a bound, not the world: within twice the posed vertices' own ball.
+            double far = 0;
+            for (const Eigen::Vector3d& v : dm.vertices()) far = std::max(far, (v - centre).norm());
+            EXPECT_LT(radius, 2 * far + 0.2) << t;
+        }
+    }
+}
+
+TEST(Stretch, ARigidMotionStretchesNothing) {
+    const ClipStretch s = measure_stretch(*bar().mesh, rigid_turn());
+    EXPECT_NEAR(s.largest, 1, 1e-12);
+    EXPECT_NEAR(s.smallest, 1, 1e-12);
+}
+
+// Bending the bar by 90 degrees about its middle stretches the outer side of the blended part
+// (linear blend skinning): more than a tenth, at the end of the bend, on one of its two joints.
+TEST(Stretch, BendingStretchesTheBlendedPartAtTheBendsEnd) {
+    const ClipStretch s = measure_stretch(*bar().mesh, bar().mesh->clips[0]);
+    EXPECT_GT(s.largest, 1.1);
+    EXPECT_LT(s.smallest, 1.0); // and compresses the inner side
+    EXPECT_DOUBLE_EQ(s.time, 1.0);
+    EXPECT_LE(std::abs(s.where.x()), 0.25 + 1e-9); // in the blended band
+    EXPECT_TRUE(s.joint == "root" || s.joint == "tip") << s.joint;
+    EXPECT_DOUBLE_EQ(s.gap_factor(), s.largest * s.largest);
+}
+
+TEST(Coverage, ARigidMotionOpensNoGap) {
+    const DeformingModel dm(bar().doc, bar().mesh);
+    const ClipCoverage c = dm.measure_coverage(rigid_turn(), 10);
+    EXPECT_EQ(c.poses, 11);
+    // Up to rounding: normals are stored snapped, so a turned sphere sits a few millionths off.
+    const double diagonal = bar().mesh->imported.mesh.diagonal();
+    EXPECT_NEAR(c.largest_gap, c.bind_gap, 1e-5 * diagonal);
+    EXPECT_LT(c.largest_growth, 1e-5 * diagonal);
+}
+
+TEST(Coverage, BendingOpensGapsWhereItStretchesTheSameOnAnyThreadCount) {
+    const DeformingModel dm(bar().doc, bar().mesh);
+    const ClipCoverage one = dm.measure_coverage(bar().mesh->clips[0], 10, 1);
+    const ClipCoverage two = dm.measure_coverage(bar().mesh->clips[0], 10, 2);
+    EXPECT_GT(one.largest_growth, 0.0);
+    EXPECT_LE(std::abs(one.growth_where.x()), 0.25 + 1e-9); // where the bar stretches
+    EXPECT_EQ(one.largest_gap, two.largest_gap);
+    EXPECT_EQ(one.largest_growth, two.largest_growth);
+    EXPECT_EQ(one.growth_where, two.growth_where);
+    // The model measured keeps its own pose.
+    EXPECT_EQ(dm.vertices(), bar().mesh->imported.mesh.positions);
 }
 
 } // namespace

@@ -206,3 +206,26 @@ TEST(ConvertCli, HelpListsEveryOption) {
          {"--out-dir", "--leaf-size", "--radius", "--tolerance", "--bounds", "--jobs", "--threads", "--times", "--force"})
         EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
+
+namespace {
+
+// An animated mesh's conversion reports each clip's stretch and coverage.
+TEST(ConvertClips, EachClipOfAnAnimatedMeshIsReportedWithItsStretchAndGaps) {
+    spt::test::TempDir dir{"convert-clips"};
+    const auto r = spt::test::run_command(spt::test::spt_binary() + " convert " +
+                                          spt::test::q(std::string(SPT_SOURCE_DIR) + "/tests/data/anim/bending_bar.gltf") +
+                                          " -o " + spt::test::q(dir.file("bar.spt")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const char* clip : {"clip 'linear'", "clip 'step'", "clip 'cubic'"})
+        EXPECT_NE(r.output.find(clip), std::string::npos) << clip << "\n" << r.output;
+    EXPECT_NE(r.output.find("stretch up to"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("largest coverage gap"), std::string::npos) << r.output;
+    // A static mesh has no such line.
+    const auto s = spt::test::run_command(spt::test::spt_binary() + " convert " +
+                                          spt::test::q(spt::test::project_meshes() + "/box.ply") + " -o " +
+                                          spt::test::q(dir.file("box.spt")));
+    ASSERT_EQ(s.exit_code, 0) << s.output;
+    EXPECT_EQ(s.output.find("clip '"), std::string::npos) << s.output;
+}
+
+} // namespace

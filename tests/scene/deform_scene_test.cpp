@@ -111,3 +111,32 @@ TEST(DeformScene, AnAnimatedSptFileIsRefusedForWantOfItsSkin) {
 }
 
 } // namespace
+
+namespace {
+
+// Two bars turning up: one under the box, one far from everything. Only the one a query needs is
+// posed (the other's broad-phase sphere, from its joints, meets nothing): its layout stays at bind.
+TEST(DeformScene, OnlyObjectsAQueryNeedsArePosed) {
+    const test::SceneDir dir;
+    const std::string json = R"({"spt_scene": 1, "dt": 0.25, "effects": ["contacts", "deform"], "objects": [
+        {"name": "near", "model": ")" + kBar + R"(", "static": true, "animation": {"clip": "step"}},
+        {"name": "far", "model": ")" + kBar + R"(", "static": true, "position": [50, 0, 0], "animation": {"clip": "step"}},
+        {"name": "box", "model": "box.obj", "scale": 0.3, "static": true, "position": [1, 0.8, 0]}]})";
+    const Scene s = load_scene(dir.write("s.json", json));
+    Simulation sim(s, s.effects);
+    for (int i = 0; i < 4; ++i) sim.step(); // 1 s: both clips have turned their tips up
+    const CompactTree& bind = s.objects[1].model->tree(); // the scene as loaded: the bind pose
+    auto same_spheres = [&](const CompactTree& t) {
+        for (size_t n = 0; n < t.nodes().size(); ++n) {
+            const CompactNode& a = t.nodes()[n];
+            for (uint32_t k = a.first; a.is_active() && k < a.first + a.count; ++k)
+                if (t.sphere_center(a, k) != bind.sphere_center(bind.nodes()[n], k)) return false;
+        }
+        return true;
+    };
+    EXPECT_FALSE(same_spheres(sim.scene().objects[0].model->tree())); // posed for its query with the box
+    EXPECT_TRUE(same_spheres(sim.scene().objects[1].model->tree()));  // never needed
+    EXPECT_EQ(sim.step().counters.colliding_pairs, 1u);
+}
+
+} // namespace

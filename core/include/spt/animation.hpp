@@ -130,6 +130,24 @@ void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std:
 /// positions from pose_vertices, vertex normals recomputed as import computes them.
 TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time);
 
+/// How much a clip stretches the mesh's surface (docs/deforming.md, "Stretch"): over poses every
+/// 1/frames_per_second seconds of the clip (its ends included), the largest ratio of an edge's
+/// posed length to its bind length, when and where. Coverage gaps between sampling spheres grow
+/// about as the square of the stretch (the spacing of the samples grows with it, their radii do not).
+struct ClipStretch {
+    double largest = 1;        ///< largest posed / bind edge length (1: nothing stretches)
+    double smallest = 1;       ///< smallest ratio (compression)
+    double time = 0;           ///< clip seconds of the pose with the largest stretch
+    uint32_t edge[2] = {0, 0}; ///< the edge's two welded vertices
+    Eigen::Vector3d where = Eigen::Vector3d::Zero(); ///< the edge's middle at the bind pose, object frame
+    std::string joint;         ///< the joint its first vertex follows most ("" without a skin)
+    /// How much deeper the coverage gaps there get than at the bind pose: largest squared.
+    double gap_factor() const { return largest * largest; }
+};
+
+/// Measures `clip`'s stretch of `mesh` (see ClipStretch); frames_per_second > 0.
+ClipStretch measure_stretch(const AnimatedMesh& mesh, const Clip& clip, double frames_per_second = 60);
+
 /// Global transforms of every rig node posed by `clip` at `time` (a null clip: at rest), in
 /// Rig::nodes order.
 std::vector<Eigen::Affine3d> pose_nodes(const Rig& rig, const Clip* clip, double time);

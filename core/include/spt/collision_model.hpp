@@ -1,7 +1,7 @@
 #pragma once
 /// What a query needs of one object: the compact sampling tree and, for the
 /// `exact` level, the mesh's triangles assigned to the tree's active nodes.
-/// Immutable after construction; share one model between threads freely.
+/// Immutable after construction (a DeformingModel poses its own); share one model between threads freely.
 #include "spt/compact_tree.hpp"
 #include "spt/mesh.hpp"
 #include "spt/spt_file.hpp"
@@ -59,10 +59,10 @@ private:
     void measure(bool by_leaves = false);
     // The model on a deformed surface: the spheres follow `points` and `normals` (per sample,
     // local frame), with `triangles` the exact level's triangles `positions` (per mesh vertex,
-    // object frame), else the exact level is dropped; bounds refit. No containment: the solid
-    // grid was made for the bind pose.
+    // object frame), else the exact level is dropped; bounds refit. Containment asks the posed
+    // triangles (the solid grids were made for the bind pose); none without them.
     void follow_surface(const std::vector<Eigen::Vector3d>& positions, const std::vector<Eigen::Vector3f>& points,
-                        const std::vector<Eigen::Vector3f>& normals, bool triangles);
+                        const std::vector<Eigen::Vector3f>& normals, bool triangles, int threads, TaskSystem* tasks);
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
     std::shared_ptr<const SolidData> solid_;

@@ -6,6 +6,7 @@
 /// is linear in the samples whatever the tree's shape. Float32 model units in the samples'
 /// local frame (object frame minus origin()).
 #include "spt/sampling_tree.hpp"
+#include "spt/task_system.hpp"
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
@@ -25,7 +26,8 @@ struct CompactNode {
 };
 static_assert(sizeof(CompactNode) == 32, "CompactNode must stay 32 bytes");
 
-/// Contiguous, SIMD-friendly copy of a tree for queries; immutable once built.
+/// Contiguous, SIMD-friendly copy of a tree for queries; changed after it is built only by
+/// follow_samples and refit_bounds (a deformed pose).
 class CompactTree {
 public:
     /// An empty layout (no nodes).
@@ -69,12 +71,15 @@ public:
     /// Moves every sphere to follow its sample on a deformed surface: `points` and unit `normals`
     /// per sample of the SampleSet the layout was built over (local frame, model units), centre
     /// p - r*n (p if two-sided); then refit_bounds(). The tree's shape, radii and sphere order stay.
-    void follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals);
+    /// Active nodes are spread over `threads` jobs on `tasks` (null: the library's pool); the
+    /// layout is the same for any count.
+    void follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
+                        int threads = 1, TaskSystem* tasks = nullptr);
     /// Fits every node's bounding sphere to the spheres below it, bottom up: an active node's
     /// around the middle of its centres' box, an inner node's the smallest holding its two
     /// children's. A function of the centres alone: refitting after any sequence of poses gives
     /// what refitting a fresh layout at the last pose gives.
-    void refit_bounds();
+    void refit_bounds(int threads = 1, TaskSystem* tasks = nullptr);
 
 private:
     Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
@@ -86,6 +91,7 @@ private:
     void build_node_discs();
     std::vector<uint32_t> sample_index_;
     size_t sphere_count_ = 0;
+    std::vector<uint32_t> active_; // the active nodes, found at the first refit (a refit's jobs split them)
 };
 
 } // namespace spt

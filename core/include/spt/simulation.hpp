@@ -93,7 +93,8 @@ public:
 
 private:
     void move(double t1); // to the poses at time t1, the end of the step (seconds)
-    void deform(double t); // animated objects to their clips' poses at scene time t (seconds)
+    void deform(double t); // animated objects' clip times and broad-phase spheres at scene time t (seconds)
+    void pose_needed(const std::vector<CandidatePair>& pairs); // poses the animated objects of these pairs
     void run_contacts(StepCounters& c);
     void respond(StepCounters& c);
     bool respond_pair(const PairContact& pc, const std::vector<SpherePair>& start_pairs, QueryScratch& scratch);
@@ -111,6 +112,8 @@ private:
     // Per object: its deforming model when it is animated and the effect deform runs (its
     // scene object's model then points into it), else null.
     std::vector<std::shared_ptr<DeformingModel>> deforming_;
+    std::vector<double> clip_time_; // per object: its clip's time this step (animated objects)
+    std::vector<uint8_t> posed_;    // per object: its model is at that time (posed when a query needs it)
     // Per contact of the step: the sphere pairs depth's `all` query found, which are the
     // response's first backtrack query when the pair's poses have not changed since.
     std::vector<std::vector<SpherePair>> start_pairs_;

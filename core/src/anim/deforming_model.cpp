@@ -1,5 +1,6 @@
 // Samples that follow a deforming mesh (spt/deforming_model.hpp).
 #include "spt/deforming_model.hpp"
+#include "base/parallel.hpp"
 #include "mesh/vertex_normals.hpp"
 #include "sampling/encoding.hpp"
 #include "spt/error.hpp"
@@ -48,6 +49,7 @@ DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const Ani
     vertices_ = m.positions;
     vertex_normals_ = m.normals;
     points_ = bind_points_, normals_ = bind_normals_;
+    measure_joints();
     face_sampled_.assign(m.triangles.size(), 0);
     for (size_t i = 0; i < s.size(); ++i)
         if (s.is_face_sample(i)) face_sampled_[s.source_index(i)] = 1;
@@ -79,35 +81,41 @@ void DeformingModel::follow() {
     const size_t nv = vertices_.size(), nf = m.triangles.size();
     snapped_.resize(nv + nf);
     snapped_ok_.assign(nv + nf, 0);
-    for (size_t v = 0; v < nv; ++v)
-        if (normal_valid_[v]) snapped_[v] = stored(vertex_normals_[v]), snapped_ok_[v] = 1;
-    for (size_t f = 0; f < nf; ++f) {
-        if (!face_sampled_[f]) continue;
-        const Triangle& t = m.triangles[f];
-        Eigen::Vector3d normal = (vertices_[t[1]] - vertices_[t[0]]).cross(vertices_[t[2]] - vertices_[t[0]]);
-        if (!(normal.norm() > 0)) normal = vertex_normals_[t[0]] + vertex_normals_[t[1]] + vertex_normals_[t[2]];
-        if (normal.norm() > 0) snapped_[nv + f] = stored(normal.normalized()), snapped_ok_[nv + f] = 1;
-    }
     const size_t n = source_.size();
     points_.resize(n), normals_.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const uint32_t src = source_[i] & kMaxSourceIndex;
-        const bool face = source_[i] & kFaceSampleBit;
-        Eigen::Vector3d at;
-        if (face) {
-            const Triangle& t = m.triangles[src];
-            const Eigen::Vector3d& w = barycentric_[i];
-            at = w[0] * vertices_[t[0]] + w[1] * vertices_[t[1]] + w[2] * vertices_[t[2]];
-        } else {
-            at = vertices_[src];
+    const size_t jobs = size_t(threads_);
+    // Each job a share of the vertices, faces and samples; the samples read only the normals.
+    detail::parallel_for(jobs, threads_, [&](size_t job, int) {
+        for (size_t v = nv * job / jobs; v < nv * (job + 1) / jobs; ++v)
+            if (normal_valid_[v]) snapped_[v] = stored(vertex_normals_[v]), snapped_ok_[v] = 1;
+        for (size_t f = nf * job / jobs; f < nf * (job + 1) / jobs; ++f) {
+            if (!face_sampled_[f]) continue;
+            const Triangle& t = m.triangles[f];
+            Eigen::Vector3d normal = (vertices_[t[1]] - vertices_[t[0]]).cross(vertices_[t[2]] - vertices_[t[0]]);
+            if (!(normal.norm() > 0)) normal = vertex_normals_[t[0]] + vertex_normals_[t[1]] + vertex_normals_[t[2]];
+            if (normal.norm() > 0) snapped_[nv + f] = stored(normal.normalized()), snapped_ok_[nv + f] = 1;
         }
-        // The stored point plus how far its surface point moved: the bind pose gives the document's
-        // spheres bit for bit.
-        points_[i] = bind_points_[i] + (at - bind_at_[i]).cast<float>();
-        const size_t k = face ? nv + src : src;
-        normals_[i] = snapped_ok_[k] ? snapped_[k] : bind_normals_[i];
-    }
-    model_.follow_surface(vertices_, points_, normals_, triangles_);
+    }, tasks_);
+    detail::parallel_for(jobs, threads_, [&](size_t job, int) {
+        for (size_t i = n * job / jobs; i < n * (job + 1) / jobs; ++i) {
+            const uint32_t src = source_[i] & kMaxSourceIndex;
+            const bool face = source_[i] & kFaceSampleBit;
+            Eigen::Vector3d at;
+            if (face) {
+                const Triangle& t = m.triangles[src];
+                const Eigen::Vector3d& w = barycentric_[i];
+                at = w[0] * vertices_[t[0]] + w[1] * vertices_[t[1]] + w[2] * vertices_[t[2]];
+            } else {
+                at = vertices_[src];
+            }
+            // The stored point plus how far its surface point moved: the bind pose gives the
+            // document's spheres bit for bit.
+            points_[i] = bind_points_[i] + (at - bind_at_[i]).cast<float>();
+            const size_t k = face ? nv + src : src;
+            normals_[i] = snapped_ok_[k] ? snapped_[k] : bind_normals_[i];
+        }
+    }, tasks_);
+    model_.follow_surface(vertices_, points_, normals_, triangles_, threads_, tasks_);
 }
 
 } // namespace spt

@@ -158,8 +158,8 @@ void CollisionModel::measure(bool by_leaves) {
 
 void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& positions,
                                     const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
-                                    bool triangles) {
-    tree_.follow_samples(points, normals);
+                                    bool triangles, int threads, TaskSystem* tasks) {
+    tree_.follow_samples(points, normals, threads, tasks);
     if (!triangles) exact_.reset();
     if (has_mesh()) {
         // Shared with copies of this model: those keep the pose they had.
@@ -169,7 +169,16 @@ void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& position
         detail::refit_triangle_tree(*e);
         exact_ = std::move(e);
     }
-    solid_.reset(); // made for the bind pose
+    // The grids were made for the bind pose; with the triangles, containment asks them instead.
+    if (has_mesh() && solid_) {
+        auto posed = std::make_shared<SolidData>();
+        posed->posed = true;
+        posed->anchor_vertex = solid_->anchor_vertex;
+        for (uint32_t v : posed->anchor_vertex) posed->anchors.push_back((positions[v] - origin()).cast<float>());
+        solid_ = std::move(posed);
+    } else {
+        solid_.reset();
+    }
     measure(true);
 }
 

@@ -19,8 +19,13 @@ void QueryRun::check_containment() {
         }
     };
     // Is local point p (holder's frame; `exact_p` the same point in double) inside `holder`?
-    auto inside = [&](const SolidGrid& grid, const ExactData& holder, const Eigen::Vector3f& p,
+    // A posed holder has no grid: its posed triangles answer.
+    auto inside = [&](const SolidGrid& grid, bool posed, const ExactData& holder, const Eigen::Vector3f& p,
                       const Eigen::Vector3d& exact_p) {
+        if (posed) {
+            ++res.counters.bound_tests;
+            return inside_closed_parts(holder, exact_p);
+        }
         if (!grid.solid_box().contains(p)) return false;
         ++res.counters.bound_tests;
         switch (grid.at(p)) {
@@ -33,19 +38,19 @@ void QueryRun::check_containment() {
     const SolidGrid& grid_a = exact ? sa.of_triangles : sa.of_spheres;
     const SolidGrid& grid_b = exact ? sb.of_triangles : sb.of_spheres;
     // B's pieces in A: B's anchors moved into A's frame as B's vertices are.
-    if (grid_a.has_solid())
+    if (grid_a.has_solid() || sa.posed)
         for (size_t k = 0; k < sb.anchors.size(); ++k) {
             const Eigen::Vector3f p = f.R * sb.anchors[k] + f.t;
             const Eigen::Vector3d pd = exact ? b_vertex(sb.anchor_vertex[k]) : p.cast<double>();
-            if (inside(grid_a, EA, p, pd)) return contain(pd);
+            if (inside(grid_a, sa.posed, EA, p, pd)) return contain(pd);
         }
     // A's pieces in B: A's anchors moved into B's frame by the inverse placement.
-    if (grid_b.has_solid())
+    if (grid_b.has_solid() || sb.posed)
         for (size_t k = 0; k < sa.anchors.size(); ++k) {
             const Eigen::Vector3f p = f.R.transpose() * (sa.anchors[k] - f.t);
             const Eigen::Vector3d pd = exact ? Eigen::Vector3d(f.Rd.transpose() * (EA.positions[sa.anchor_vertex[k]] - f.td))
                                              : p.cast<double>();
-            if (inside(grid_b, EB, p, pd)) return contain(exact ? EA.positions[sa.anchor_vertex[k]] : sa.anchors[k].cast<double>());
+            if (inside(grid_b, sb.posed, EB, p, pd)) return contain(exact ? EA.positions[sa.anchor_vertex[k]] : sa.anchors[k].cast<double>());
         }
 }
 

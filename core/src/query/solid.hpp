@@ -16,6 +16,10 @@ struct SolidData {
     SolidGrid of_triangles;                // level exact: walled in by the triangles of closed parts
     std::vector<Eigen::Vector3f> anchors;  // local frame: a point on each connected piece of the model
     std::vector<uint32_t> anchor_vertex;   // with a mesh: the vertex each anchor is (exact level)
+    // A deformed pose (CollisionModel::follow_surface): no grids, which were made for the bind
+    // pose; the anchors are at the posed vertices, and a point is inside when it is inside the
+    // posed closed triangles (inside_closed_parts), at every level.
+    bool posed = false;
 
     /// Grids and anchors of a model: pieces are the mesh's vertex-connected components when
     /// `e` has triangles, else the subtrees of the sampling tree three levels down. `wall`:

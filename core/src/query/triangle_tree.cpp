@@ -6,6 +6,7 @@
 #include "geometry/tri_tri.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace spt::detail {
 namespace {
@@ -136,7 +137,8 @@ void refit_triangle_tree(ExactData& e) {
             double ext[3], half_norm, radius;
         } child[2];
         const uint32_t ids[2] = {uint32_t(i + 1), n.first};
-        double lo[3], hi[3];
+        const double inf = std::numeric_limits<double>::infinity();
+        double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
         for (int h = 0; h < 2; ++h) {
             const TriangleNode& m = e.tri_nodes[ids[h]];
             const Eigen::Vector3f mw = third_axis(m.axis[0], m.axis[1]);
@@ -150,8 +152,8 @@ void refit_triangle_tree(ExactData& e) {
                 ch.ext[k] = 0;
                 for (int j = 0; j < 3; ++j) ch.ext[k] += double(m.half[j]) * std::abs(axis[k].dot(u[j]));
                 const double at = axis[k].dot(ch.c);
-                lo[k] = h ? std::min(lo[k], at - ch.ext[k]) : at - ch.ext[k];
-                hi[k] = h ? std::max(hi[k], at + ch.ext[k]) : at + ch.ext[k];
+                lo[k] = std::min(lo[k], at - ch.ext[k]);
+                hi[k] = std::max(hi[k], at + ch.ext[k]);
             }
         }
         Eigen::Vector3d centre = Eigen::Vector3d::Zero();

@@ -54,6 +54,8 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
     previous_ = ghost_ = poses_;
     scratch_.resize(size_t(threads_));
     deforming_.resize(scene_.objects.size());
+    clip_time_.assign(scene_.objects.size(), 0);
+    posed_.assign(scene_.objects.size(), 0);
     if (effects_.has(Effect::Deform)) {
         for (size_t i = 0; i < scene_.objects.size(); ++i) {
             SceneObject& o = scene_.objects[i];
@@ -67,21 +69,30 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
 }
 
 void Simulation::deform(double t) {
-    detail::parallel_for(deforming_.size(), threads_, [&](size_t i, int) {
-        if (!deforming_[i]) return;
+    // Only the broad phase's spheres now, from the joints; an object is posed when a query needs
+    // it (pose_needed), as the paper updates only what a test needs.
+    for (size_t i = 0; i < deforming_.size(); ++i) {
+        if (!deforming_[i]) continue;
         SceneObject& o = scene_.objects[i];
         const Clip& clip = o.animated_mesh->clips[o.clip];
         const AnimationSettings& a = o.animation;
-        DeformingModel& dm = *deforming_[i];
-        dm.pose(&clip, clip_time(clip, t, a.speed, a.offset, a.loop));
-        // The broad phase's sphere, around the posed root: every sphere and every vertex.
-        const CollisionModel& m = dm.model();
-        const CompactNode& root = m.tree().nodes().front();
-        const Eigen::Vector3d c = m.origin() + Eigen::Vector3d(root.center[0], root.center[1], root.center[2]);
-        double r = root.bv_radius;
-        for (const Eigen::Vector3d& v : dm.vertices()) r = std::max(r, (v - c).norm());
-        o.bound_center = c;
-        o.bound_radius = r * (1 + 1e-6) + 1e-6 * c.norm();
+        clip_time_[i] = clip_time(clip, t, a.speed, a.offset, a.loop);
+        posed_[i] = 0;
+        const auto [centre, radius] = deforming_[i]->bound_at(&clip, clip_time_[i]);
+        o.bound_center = centre;
+        o.bound_radius = radius;
+    }
+}
+
+void Simulation::pose_needed(const std::vector<CandidatePair>& pairs) {
+    std::vector<uint32_t> wanted;
+    for (const CandidatePair& p : pairs)
+        for (uint32_t i : {p.a, p.b})
+            if (deforming_[i] && !posed_[i]) posed_[i] = 1, wanted.push_back(i);
+    detail::parallel_for(wanted.size(), threads_, [&](size_t k, int) {
+        const uint32_t i = wanted[k];
+        const SceneObject& o = scene_.objects[i];
+        deforming_[i]->pose(&o.animated_mesh->clips[o.clip], clip_time_[i]);
     }, tasks_);
 }
 
@@ -137,7 +148,7 @@ const StepResult& Simulation::step() {
     if (effects_.has(Effect::Deform)) {
         const auto t0 = Clock::now();
         deform(t1);
-        r.counters.ns_deform = ns_since(t0);
+        r.counters.ns_deform += ns_since(t0);
     }
     ++steps_;
     r.step = steps_;
@@ -173,6 +184,11 @@ void Simulation::run_contacts(StepCounters& c) {
     const std::vector<CandidatePair>& cand = broad_.find(spheres_);
     c.ns_broad = ns_since(t0);
     c.candidate_pairs = cand.size();
+    if (effects_.has(Effect::Deform)) {
+        t0 = Clock::now();
+        pose_needed(cand);
+        c.ns_deform += ns_since(t0);
+    }
     std::vector<detail::PairWork> work(cand.size());
     const QueryLevel level = scene_.level;
     const QueryLevel sphere_level = level == QueryLevel::Bounds ? QueryLevel::Bounds : QueryLevel::Spheres;

@@ -1,0 +1,114 @@
+// How far the surface of a posed model lies outside its sampling spheres (ClipCoverage).
+#include "spt/deforming_model.hpp"
+#include "base/parallel.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace spt {
+namespace {
+
+// Barycentric weights of the points measured on each triangle: a grid of 3 per edge, corners and
+// the middle included (the gaps open between samples, mid-face as well as along edges).
+std::vector<Eigen::Vector3d> probe_weights() {
+    std::vector<Eigen::Vector3d> w;
+    const int n = 3;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) w.emplace_back(double(n - i - j) / n, double(i) / n, double(j) / n);
+    return w;
+}
+
+// How far local point p lies outside every sphere of `t` (0 inside one), when that is more than
+// `floor` (the largest gap so far), else some value at most `floor`: a nearest-sphere walk that
+// leaves a node whose ball is no nearer than the best sphere so far, and stops once a sphere is
+// nearer than the floor (most points lie on a sphere: they cannot raise the largest gap).
+double gap_at(const CompactTree& t, const Eigen::Vector3f& p, double floor, std::vector<uint32_t>& stack) {
+    const auto& nodes = t.nodes();
+    double best = INFINITY;
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+        const uint32_t i = stack.back();
+        stack.pop_back();
+        const CompactNode& n = nodes[i];
+        const Eigen::Vector3f c(n.center[0], n.center[1], n.center[2]);
+        if (double((p - c).norm()) - double(n.bv_radius) >= best) continue;
+        if (n.is_active()) {
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                best = std::min(best, double((p - t.sphere_center(n, k)).norm()) - double(n.ss_radius));
+            if (best <= floor) return std::max(0.0, best);
+            continue;
+        }
+        // The nearer child's ball first: a sphere near the point comes early and ends the walk.
+        const CompactNode &l = nodes[i + 1], &r = nodes[n.first];
+        const float dl = (p - Eigen::Vector3f(l.center[0], l.center[1], l.center[2])).norm() - l.bv_radius;
+        const float dr = (p - Eigen::Vector3f(r.center[0], r.center[1], r.center[2])).norm() - r.bv_radius;
+        if (dl < dr) stack.push_back(n.first), stack.push_back(i + 1);
+        else stack.push_back(i + 1), stack.push_back(n.first);
+    }
+    return std::max(0.0, best);
+}
+
+} // namespace
+
+ClipCoverage DeformingModel::measure_coverage(const Clip& clip, double frames_per_second, int threads) const {
+    ClipCoverage out;
+    const TriangleMesh& m = mesh_->imported.mesh;
+    const std::vector<Eigen::Vector3d> weights = probe_weights();
+    // Surface points: each weight on each triangle, in this order.
+    auto for_each_point = [&](auto&& f) {
+        size_t k = 0;
+        for (size_t t = 0; t < m.triangles.size(); ++t) {
+            if (m.copies_earlier_face(t)) continue;
+            for (const Eigen::Vector3d& w : weights) f(k++, m.triangles[t], w);
+        }
+    };
+    // Every point's gap at the bind pose, measured whole: a pose's gaps are compared with these.
+    DeformingModel bind = *this;
+    bind.pose(nullptr, 0);
+    std::vector<double> bind_gap;
+    std::vector<uint32_t> stack;
+    for_each_point([&](size_t, const Triangle& t, const Eigen::Vector3d& w) {
+        const Eigen::Vector3d p = w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]];
+        bind_gap.push_back(gap_at(bind.model_.tree(), (p - bind.model_.origin()).cast<float>(), -INFINITY, stack));
+        out.bind_gap = std::max(out.bind_gap, bind_gap.back());
+    });
+    const double fps = frames_per_second > 0 && std::isfinite(frames_per_second) ? frames_per_second : 30;
+    const int frames = int(std::clamp(std::ceil(clip.duration * fps), 1.0, 10000.0));
+    // Per pose: the largest gap, and the largest growth of a point's gap over its bind gap; a
+    // point is measured only as far as it could raise either.
+    struct Result {
+        double gap = 0, growth = 0;
+        Eigen::Vector3d gap_at = Eigen::Vector3d::Zero(), growth_at = Eigen::Vector3d::Zero();
+    };
+    std::vector<Result> results(size_t(frames) + 1);
+    const int jobs = std::max(1, std::min(threads, frames + 1));
+    detail::parallel_for(size_t(jobs), jobs, [&](size_t job, int) {
+        DeformingModel local = *this; // each job poses its own copy
+        std::vector<uint32_t> walk;
+        for (size_t k = job; k < results.size(); k += size_t(jobs)) {
+            local.pose(&clip, clip.duration * double(k) / double(frames));
+            Result& r = results[k];
+            const Eigen::Vector3d& o = local.model_.origin();
+            for_each_point([&](size_t i, const Triangle& t, const Eigen::Vector3d& w) {
+                const std::vector<Eigen::Vector3d>& v = local.vertices_;
+                const Eigen::Vector3d p = w[0] * v[t[0]] + w[1] * v[t[1]] + w[2] * v[t[2]];
+                const double floor = std::min(r.gap, bind_gap[i] + r.growth);
+                const double g = gap_at(local.model_.tree(), (p - o).cast<float>(), floor, walk);
+                if (g <= floor) return;
+                const Eigen::Vector3d at = w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]];
+                if (g > r.gap) r.gap = g, r.gap_at = at;
+                if (g - bind_gap[i] > r.growth) r.growth = g - bind_gap[i], r.growth_at = at;
+            });
+        }
+    });
+    for (size_t k = 0; k < results.size(); ++k) {
+        const double t = clip.duration * double(k) / double(frames);
+        ++out.poses;
+        if (k == 0 || results[k].gap > out.largest_gap)
+            out.largest_gap = results[k].gap, out.time = t, out.where = results[k].gap_at;
+        if (k == 0 || results[k].growth > out.largest_growth)
+            out.largest_growth = results[k].growth, out.growth_time = t, out.growth_where = results[k].growth_at;
+    }
+    return out;
+}
+
+} // namespace spt
