@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "number_checks.hpp"
 #include "process_pool.hpp"
+#include "spt/animation.hpp"
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/recipe.hpp"
@@ -15,6 +16,8 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <malloc.h>
@@ -52,10 +55,11 @@ long peak_mib() {
     return u.ru_maxrss / 1024;
 }
 
-// The trees of the recipe file over the new samples, with a line on each.
-void replay_recipe_file(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions& build, const std::string& recipe,
-                  const std::string& in) {
-    for (const TreeReplay& r : replay_trees(doc, mesh, load_spt(recipe), build)) {
+// The trees of the recipe file over the new samples, with a line on each; `animated` (null
+// unless some split was made at a clip's pose) poses the samples as the splits were made.
+void replay_recipe_file(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions& build, const SptDocument& recipes,
+                        const std::string& recipe, const std::string& in, std::shared_ptr<const AnimatedMesh> animated) {
+    for (const TreeReplay& r : replay_trees(doc, mesh, recipes, build, std::move(animated))) {
         if (r.built_automatically) {
             std::cerr << "  recipe: tree '" << r.tree << "' of " << recipe << " has no recipe; built automatically\n";
             continue;
@@ -106,7 +110,13 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
     ImportOptions import_options;
     import_options.threads = a.threads;
-    ImportedMesh m = import_mesh(in, import_options);
+    // A recipe whose splits were made at a clip's pose replays at that pose: the new mesh's clips
+    // are read too.
+    std::optional<SptDocument> recipes;
+    if (!a.recipe.empty()) recipes = load_spt(a.recipe);
+    std::shared_ptr<const AnimatedMesh> animated;
+    if (recipes && recipe_has_poses(*recipes)) animated = std::make_shared<AnimatedMesh>(import_animated_mesh(in, import_options));
+    const ImportedMesh m = animated ? animated->imported : import_mesh(in, import_options);
     const double import_secs = seconds_since(t0);
     ConvertOptions opt;
     opt.tree_name = a.tree_name;
@@ -128,7 +138,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     } else {
         doc = make_document(m.mesh, opt, &st);
     }
-    if (!a.recipe.empty()) replay_recipe_file(doc, m.mesh, opt.build, a.recipe, in);
+    if (recipes) replay_recipe_file(doc, m.mesh, opt.build, *recipes, a.recipe, in, animated);
     report_clips(in, doc, a.tree_name, a.threads);
     const auto t_save = std::chrono::steady_clock::now();
     save_spt(doc, out);
@@ -298,8 +308,8 @@ Action add_convert_command(CLI::App& app) {
         ->check(CLI::IsMember({"volume", "median"}));
     c->add_option("--tree-name", a->tree_name, "Name of the tree in the file");
     c->add_option("--recipe", a->recipe,
-                  "Redo the manual splits recorded in this .spt file (made from an earlier version of the mesh); "
-                  "its trees replace the automatic one")
+                  "Redo the manual splits recorded in this .spt file (made from an earlier version of the mesh), "
+                  "each at the clip and time it was made at; its trees replace the automatic one")
         ->check(CLI::ExistingFile);
     c->add_option("-j,--jobs", a->jobs, "Files converted at once (default: all cores)")->check(CLI::Range(1, 1024));
     c->add_option("--threads", a->threads,

@@ -11,6 +11,44 @@ namespace spt::editor {
 
 bool is_spt_file(const QString& path) { return spt::is_spt_file(QFile::encodeName(path).toStdString()); }
 
+namespace {
+
+// A mesh file read, with its clips when it has some.
+struct ReadMesh {
+    TriangleMesh mesh;
+    std::shared_ptr<const AnimatedMesh> animated; // null without clips
+    QString warning;                              // the clips could not be read
+};
+
+// Formats assimp reads without skins or clips: read once, as they were before the timeline
+// (reading a file's animation reads it a second time).
+bool may_animate(const QString& path) {
+    static const QStringList still{"stl", "ply", "obj", "off"};
+    return !still.contains(QFileInfo(path).suffix().toLower());
+}
+
+ReadMesh read_mesh(const QString& path, const ImportOptions& reading) {
+    ReadMesh r;
+    if (may_animate(path)) {
+        try {
+            auto animated = std::make_shared<AnimatedMesh>(import_animated_mesh(path.toStdString(), reading));
+            r.mesh = animated->imported.mesh;
+            if (!animated->clips.empty()) r.animated = std::move(animated);
+            return r;
+        } catch (const Cancelled&) {
+            throw;
+        } catch (const Error& e) {
+            // Refused weights or keys: the mesh alone opens as it did before (import_mesh below
+            // throws again if the mesh itself is the problem).
+            r.warning = QString("%1; the mesh opens without its animation").arg(QString::fromStdString(e.what()));
+        }
+    }
+    r.mesh = import_mesh(path.toStdString(), reading).mesh;
+    return r;
+}
+
+} // namespace
+
 LoadResult load_document(const QString& path, const QString& mesh_path, const std::atomic<bool>* cancel,
                          const std::function<void(const std::string&)>& on_stage) {
     LoadResult r;
@@ -21,17 +59,19 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
         if (!is_spt_file(path)) {
             ImportOptions reading;
             reading.cancel = cancel;
-            TriangleMesh mesh = import_mesh(path.toStdString(), reading).mesh;
+            ReadMesh read = read_mesh(path, reading);
             ConvertOptions options;
             options.cancel = cancel;
             options.on_stage = on_stage;
             converting = true;
-            r.doc = make_document(mesh, options);
+            r.doc = make_document(read.mesh, options);
             // Authoring starts where the paper's tool does: the root holds every sample (B builds
             // the automatic tree under any node).
             const std::string name = r.doc->trees.front().name();
             r.doc->trees = {unsplit_tree(name, r.doc->samples)};
-            r.mesh = std::move(mesh);
+            r.mesh = std::move(read.mesh);
+            r.animated = std::move(read.animated);
+            r.warning = read.warning;
             r.mesh_path = path;
             r.converted = true;
             return r;
@@ -47,14 +87,16 @@ LoadResult load_document(const QString& path, const QString& mesh_path, const st
         try {
             ImportOptions reading;
             reading.cancel = cancel;
-            TriangleMesh mesh = import_mesh(candidate.toStdString(), reading).mesh;
-            const std::string mismatch = check_mesh_matches(r.doc->mesh, mesh);
+            ReadMesh read = read_mesh(candidate, reading);
+            const std::string mismatch = check_mesh_matches(r.doc->mesh, read.mesh);
             if (!mismatch.empty()) {
                 r.warning = QString("%1 is not the mesh %2 was made from (%3); showing the sampling spheres only")
                                 .arg(candidate, path, QString::fromStdString(mismatch));
                 return r;
             }
-            r.mesh = std::move(mesh);
+            r.mesh = std::move(read.mesh);
+            r.animated = std::move(read.animated);
+            r.warning = read.warning;
             r.mesh_path = candidate;
         } catch (const Cancelled&) {
             throw; // the whole opening stops, not only the mesh

@@ -1,11 +1,14 @@
 #pragma once
 // Opening a file for the editor, run off the UI thread: a .spt file with its mesh (found
 // beside it by the recorded name, or given), or a mesh converted with default options
-// whose one tree is the unsplit root, where manual authoring starts.
+// whose one tree is the unsplit root, where manual authoring starts. A mesh whose file has
+// animation clips comes with them (the timeline).
+#include "spt/animation.hpp"
 #include "spt/spt_file.hpp"
 #include <QString>
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -16,6 +19,7 @@ struct LoadResult {
     QString path;                       ///< the file asked for
     std::optional<SptDocument> doc;     ///< empty when the file could not be opened
     std::optional<TriangleMesh> mesh;   ///< the document's mesh, when found and matching
+    std::shared_ptr<const AnimatedMesh> animated; ///< that mesh with its clips, when its file has some
     QString mesh_path;                  ///< where the mesh was read from (empty if not used)
     bool converted = false;             ///< the file was a mesh, converted to a new document
     bool cancelled = false;             ///< the opening was stopped by the cancel flag

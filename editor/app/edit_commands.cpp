@@ -80,11 +80,13 @@ EditOutcome make_split(EditorDocument& doc) {
     if (doc.selection().empty()) return refused(QString("nothing is selected: drag a rectangle over node %1's samples").arg(node_text(id)));
     const EditResult r = after.split(id, doc.selection(), doc.samples());
     if (!r) return refused(r.reason);
-    // How the selection was drawn goes with the split, so `spt convert --recipe` can redo it.
-    if (!doc.strokes().empty()) after.add_recipe_step({id, doc.strokes()});
-    return {std::make_unique<TreeStateCommand>(doc, std::move(after), right_child(id),
-                                               QString("Split node %1 (%2 selected)").arg(node_text(id)).arg(doc.selection().size())),
-            {}};
+    // How the selection was drawn, and at which pose, goes with the split, so `spt convert
+    // --recipe` can redo it. The split itself is of the document's (bind-pose) samples.
+    if (!doc.strokes().empty()) after.add_recipe_step({id, doc.strokes(), doc.strokes_pose()});
+    QString text = QString("Split node %1 (%2 selected").arg(node_text(id)).arg(doc.selection().size());
+    if (!doc.strokes().empty() && !doc.strokes_pose().bind())
+        text += QString(" at %1 %2 s").arg(QString::fromStdString(doc.strokes_pose().clip)).arg(doc.strokes_pose().time, 0, 'f', 3);
+    return {std::make_unique<TreeStateCommand>(doc, std::move(after), right_child(id), text + ")"), {}};
 }
 
 EditOutcome make_merge(EditorDocument& doc, NodeId id) {

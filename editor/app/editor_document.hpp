@@ -1,6 +1,8 @@
 #pragma once
 // The open document of the editor: the .spt document, its mesh (if found), the current
-// tree and node, and the selection. Every change goes through here and is announced.
+// tree and node, the selection, and the pose the views show it at (a clip of an animated mesh
+// at a time: a view state, not an edit). Every change goes through here and is announced.
+#include "document_pose.hpp"
 #include "spt/selection.hpp"
 #include "spt/spt_file.hpp"
 #include <QObject>
@@ -18,8 +20,10 @@ public:
     /// An empty document (no samples, no trees).
     explicit EditorDocument(QObject* parent = nullptr);
 
-    /// Replaces everything (a file was opened or recovered); the first tree's root becomes current.
-    void reset(SptDocument doc, std::optional<TriangleMesh> mesh);
+    /// Replaces everything (a file was opened or recovered); the first tree's root becomes current
+    /// and the views show the bind pose. `animated`: the mesh with its clips, if it has some.
+    void reset(SptDocument doc, std::optional<TriangleMesh> mesh,
+               std::shared_ptr<const AnimatedMesh> animated = nullptr);
     /// True once a document with at least one tree is open.
     bool has_tree() const { return !doc_.trees.empty(); }
 
@@ -45,11 +49,24 @@ public:
     /// Replaces the selection (sorted sample indices); how it was made is not known, so a
     /// split by it records no recipe step.
     void set_selection(std::vector<uint32_t> selection);
-    /// The rectangles that made the selection, in order (the next split's recipe step).
+    /// The rectangles that made the selection, in order (the next split's recipe step); empty
+    /// when it cannot be recorded (made in code, or drawn at two poses: a step holds one).
     const std::vector<RecipeStroke>& strokes() const { return strokes_; }
-    /// Applies a rectangle drawn in a view: through, or visible only when the mesh is known.
-    /// Returns the number of samples the rectangle hit.
+    /// The pose the strokes were drawn at.
+    const RecipePose& strokes_pose() const { return strokes_pose_; }
+    /// Applies a rectangle drawn in a view to the samples where the pose shown puts them: through,
+    /// or visible only when the mesh is known. Returns the number of samples the rectangle hit.
     size_t select_rect(const ViewProjection& view, const PixelRect& rect, SelectionMode mode, bool visible_only);
+
+    /// The mesh with its clips, or null when it has none (no timeline).
+    const AnimatedMesh* animation() const { return pose_.animation(); }
+    /// The pose the views show: clip index (-1 for the bind pose) and seconds into it.
+    const DocumentPose& pose() const { return pose_; }
+    /// Shows clip `clip` (-1: the bind pose) at `time` seconds, held within the clip. A view
+    /// state, not an edit: the tree and the selection stay, and nothing goes on the undo stack.
+    void set_pose(int clip, double time);
+    /// The edited tree at the pose shown (its posed spheres and sample points), or null at the bind pose.
+    const DeformingModel* posed() const { return pose_.model(); }
 
     /// Replaces tree `index` (an undo command's redo or undo) and sets the current node.
     void set_tree(int index, const SamplingTree& tree, NodeId current);
@@ -70,6 +87,10 @@ signals:
     void currentChanged();
     /// The selection changed.
     void selectionChanged();
+    /// The pose shown changed (clip or time), or the tree was bound to it again after a change.
+    void poseChanged();
+    /// Core could not pose the mesh (why); the views show the bind pose instead.
+    void poseRefused(const QString& why);
 
 private:
     SptDocument doc_;
@@ -78,6 +99,12 @@ private:
     NodeId current_ = root_id();
     std::vector<uint32_t> selection_;
     std::vector<RecipeStroke> strokes_;
+    RecipePose strokes_pose_;
+    bool strokes_unrecorded_ = false; // strokes at two poses: none recorded until one replaces
+    DocumentPose pose_;
+    void forget_strokes();
+    void tree_edited(); // the edited tree changed: its pose is bound again, then announced
+    void update_pose(bool tree_changed);
 };
 
 } // namespace spt::editor

@@ -2,6 +2,7 @@
 #include "main_window.hpp"
 #include "cost_panel.hpp"
 #include "preferences.hpp"
+#include "timeline_bar.hpp"
 #include "tree_panel.hpp"
 #include <QAction>
 #include <QCloseEvent>
@@ -20,6 +21,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoView>
+#include <QVBoxLayout>
 
 namespace spt::editor {
 
@@ -27,9 +29,18 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     : QMainWindow(parent), start_(options), scene_(doc_), recovery_(options.recovery_dir) {
     setObjectName("spt_editor");
     setAcceptDrops(true);
-    grid_ = new ViewGrid(doc_, scene_, options_, this);
-    setCentralWidget(grid_);
+    // The views over the timeline, which takes no room while the mesh has no clips.
+    auto* centre = new QWidget(this);
+    auto* column = new QVBoxLayout(centre);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    grid_ = new ViewGrid(doc_, scene_, options_, centre);
+    timeline_ = new TimelineBar(doc_, centre);
+    column->addWidget(grid_, 1);
+    column->addWidget(timeline_);
+    setCentralWidget(centre);
     for (int i = 0; i < 4; ++i) connect(grid_->view(i), &ViewWidget::message, this, &MainWindow::show_message);
+    connect(&doc_, &EditorDocument::poseRefused, this, [this](const QString& why) { show_message("not posed: " + why); });
     build_docks();
     build_menus();
 
@@ -239,6 +250,7 @@ void MainWindow::show_message(const QString& text) {
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (maybe_save()) {
         recovery_.clear();
+        timeline_->pause(); // the document closes: no clip plays on for a hidden window
         event->accept();
     } else {
         event->ignore();

@@ -25,6 +25,7 @@ class QPushButton;
 namespace spt::editor {
 
 class CostPanel;
+class TimelineBar;
 class TreePanel;
 
 /// How the editor was started (spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS]).
@@ -54,6 +55,8 @@ public:
     TreePanel& tree_panel() { return *panel_; }
     /// The dock's cost panel.
     CostPanel& cost_panel() { return *cost_; }
+    /// The timeline under the views (shown while the mesh has animation clips).
+    TimelineBar& timeline() { return *timeline_; }
     /// Shared view settings (visible-only selection, modifier swap).
     ViewOptions& view_options() { return options_; }
     /// True while a file is being opened in the background.
@@ -136,6 +139,7 @@ private:
     Scene scene_;
     ViewOptions options_;
     ViewGrid* grid_ = nullptr;
+    TimelineBar* timeline_ = nullptr;
     TreePanel* panel_ = nullptr;
     CostPanel* cost_ = nullptr;
     QUndoView* history_ = nullptr;

@@ -51,7 +51,7 @@ void MainWindow::loaded(const LoadResult& r) {
     const bool recovered = recovering_;
     recovering_ = false;
     stack_.clear();
-    doc_.reset(*r.doc, r.mesh);
+    doc_.reset(*r.doc, r.mesh, r.animated);
     history_->setEmptyLabel(recovered ? QString("Recovered unsaved work") : QString("Opened %1").arg(QFileInfo(r.path).fileName()));
     source_path_ = r.path;
     mesh_path_ = r.mesh_path;

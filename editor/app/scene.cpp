@@ -16,6 +16,13 @@ Scene::Scene(EditorDocument& doc, QObject* parent) : QObject(parent), doc_(doc) 
         rebuild_selection();
     });
     connect(&doc_, &EditorDocument::selectionChanged, this, &Scene::rebuild_selection);
+    // Another pose moves the mesh and the spheres; the layout, the highlight and the selection stay.
+    connect(&doc_, &EditorDocument::poseChanged, this, [this] {
+        rebuild_pose();
+        rebuild_spheres();
+        rebuild_current();
+        rebuild_selection();
+    });
 }
 
 void Scene::set_color_by(render::ColorBy by) {
@@ -28,22 +35,42 @@ void Scene::rebuild_mesh() {
     data_.mesh = doc_.mesh();
     data_.origin = doc_.samples().origin;
     ++data_.mesh_revision;
+    rebuild_pose();
+}
+
+void Scene::rebuild_pose() {
+    data_.vertices = data_.normals = nullptr;
+    if (!doc_.animation() || !data_.mesh) return; // a mesh without clips stays as uploaded
+    // At the bind pose, the mesh's own vertices: back where the timeline started.
+    const DeformingModel* posed = doc_.posed();
+    data_.vertices = posed ? &posed->vertices() : &data_.mesh->positions;
+    data_.normals = posed ? &posed->vertex_normals() : &data_.mesh->normals;
+    ++data_.pose_revision;
 }
 
 void Scene::rebuild_tree() {
-    data_.spheres.clear();
     compact_.reset();
     sphere_of_sample_.assign(doc_.samples().size(), UINT32_MAX);
     if (doc_.has_tree()) {
         compact_ = std::make_unique<CompactTree>(doc_.tree(), doc_.samples());
-        data_.spheres = render::sampling_spheres(*compact_, doc_.tree(), color_by_, data_.origin);
         const uint32_t* sample = compact_->sample_index();
         for (uint32_t k = 0; k < uint32_t(compact_->sphere_count()); ++k)
             if (sample[k] < sphere_of_sample_.size()) sphere_of_sample_[sample[k]] = k;
     }
-    ++data_.spheres_revision;
+    rebuild_pose(); // an edit binds the tree to the pose again: the model is new
+    rebuild_spheres();
     rebuild_current();
     rebuild_selection();
+}
+
+void Scene::rebuild_spheres() {
+    data_.spheres.clear();
+    if (doc_.has_tree() && compact_) {
+        // At a pose, the posed layout: the same tree and sphere order, the centres moved.
+        const CompactTree& drawn = doc_.posed() ? doc_.posed()->model().tree() : *compact_;
+        data_.spheres = render::sampling_spheres(drawn, doc_.tree(), color_by_, data_.origin);
+    }
+    ++data_.spheres_revision;
 }
 
 void Scene::rebuild_current() {
@@ -51,8 +78,10 @@ void Scene::rebuild_current() {
     data_.wires.clear();
     if (doc_.has_tree() && compact_) {
         data_.highlight = render::sphere_range(*compact_, doc_.tree(), doc_.current());
-        data_.wires = render::bounding_spheres(doc_.tree(), doc_.samples().origin, doc_.current(), 0,
-                                               render::highlight_color());
+        data_.wires = doc_.posed() ? render::bounding_sphere(doc_.posed()->model().tree(), doc_.tree(), doc_.current(),
+                                                             render::highlight_color())
+                                   : render::bounding_spheres(doc_.tree(), doc_.samples().origin, doc_.current(), 0,
+                                                              render::highlight_color());
     }
     ++data_.revision;
 }

@@ -2,8 +2,8 @@
 // What the four views draw, made once from the document for all of them: the mesh, the
 // sampling spheres of the edited tree (coloured by level or node), the current node
 // highlighted with its bounding sphere, and the selected samples' spheres (marks on the
-// sampling spheres, drawn in the selection colour). Each part carries a revision so a view
-// re-uploads only what changed.
+// sampling spheres, drawn in the selection colour), all at the pose the timeline shows. Each
+// part carries a revision so a view re-uploads only what changed.
 #include "editor_document.hpp"
 #include "spt/render/frame.hpp"
 #include "spt/render/tree_overlay.hpp"
@@ -24,7 +24,12 @@ struct SceneData {
     /// The mesh and `spheres` are relative to it (the document's local origin), drawn with
     /// render::local_frame(origin): far from the origin float keeps their detail only so.
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    /// The mesh's vertices and normals at the pose shown (object frame; Renderer::update_mesh), null
+    /// when the mesh has no clips: it stays as uploaded.
+    const std::vector<Eigen::Vector3d>* vertices = nullptr;
+    const std::vector<Eigen::Vector3d>* normals = nullptr; ///< with `vertices`
     uint64_t mesh_revision = 0;      ///< changes when the mesh changes
+    uint64_t pose_revision = 0;      ///< changes when `vertices` move
     uint64_t spheres_revision = 0;   ///< changes when `spheres` changes
     uint64_t selected_revision = 0;  ///< changes when `selected` changes
     uint64_t revision = 0;           ///< changes on any change (views repaint)
@@ -53,8 +58,10 @@ signals:
 private:
     void rebuild_mesh();
     void rebuild_tree();
+    void rebuild_spheres();
     void rebuild_current();
     void rebuild_selection();
+    void rebuild_pose();
     EditorDocument& doc_;
     SceneData data_;
     render::ColorBy color_by_ = render::ColorBy::Level;

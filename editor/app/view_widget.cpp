@@ -38,7 +38,7 @@ void ViewWidget::frame_selection() {
 }
 
 void ViewWidget::forget_uploads() {
-    mesh_rev_ = spheres_rev_ = selected_rev_ = 0;
+    mesh_rev_ = spheres_rev_ = selected_rev_ = pose_rev_ = 0;
     mesh_ = {}, spheres_ = {};
 }
 
@@ -48,6 +48,11 @@ void ViewWidget::upload(render::Renderer& renderer) {
         renderer.remove_mesh(mesh_);
         mesh_ = d.mesh ? renderer.add_mesh(*d.mesh, d.origin) : render::MeshHandle{};
         mesh_rev_ = d.mesh_revision;
+        pose_rev_ = 0; // uploaded at the bind pose
+    }
+    if (pose_rev_ != d.pose_revision) {
+        if (mesh_.id && d.vertices) renderer.update_mesh(mesh_, *d.vertices, *d.normals, d.origin);
+        pose_rev_ = d.pose_revision;
     }
     if (spheres_rev_ != d.spheres_revision) {
         renderer.remove_spheres(spheres_);

@@ -45,7 +45,7 @@ private:
     const ViewOptions& options_;
     render::MeshHandle mesh_;
     render::SphereSetHandle spheres_;
-    uint64_t mesh_rev_ = 0, spheres_rev_ = 0, selected_rev_ = 0;
+    uint64_t mesh_rev_ = 0, spheres_rev_ = 0, selected_rev_ = 0, pose_rev_ = 0;
     bool selecting_ = false;
     SelectionMode mode_ = SelectionMode::Replace;
     QPoint press_;

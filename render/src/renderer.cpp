@@ -87,6 +87,9 @@ void Renderer::update_mesh(MeshHandle mesh, const std::vector<Eigen::Vector3d>& 
     gl.BufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(verts.size() * sizeof(float)), verts.data());
     gl.BindBuffer(GL_ARRAY_BUFFER, 0);
     check_gl(gl, "Renderer::update_mesh");
+    // The cached layers hold the mesh where it was: a frame whose only change is a moved mesh
+    // (the same handles, camera and sphere sets) must be drawn again, not composited.
+    impl_->layers.valid = false;
 }
 
 void Renderer::remove_mesh(MeshHandle mesh) {

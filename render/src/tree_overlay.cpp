@@ -82,17 +82,37 @@ std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const S
     return out;
 }
 
-SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
-    const auto nodes = tree.nodes();
-    const int64_t index = node_index(nodes, id);
-    if (index < 0) return {};
+namespace {
+
+// Index in compact.nodes() of node `id` of `tree`, or -1.
+int64_t compact_index(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
+    const int64_t index = node_index(tree.nodes(), id);
+    if (index < 0) return -1;
     const auto& cn = compact.nodes();
     for (uint32_t i = 0; i < cn.size(); ++i)
-        if (cn[i].tree_node == uint32_t(index)) {
-            const SubtreeSpan s = span_of(cn, i);
-            return {s.first, s.end_sphere - s.first};
-        }
-    return {};
+        if (cn[i].tree_node == uint32_t(index)) return i;
+    return -1;
+}
+
+} // namespace
+
+SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
+    const int64_t i = compact_index(compact, tree, id);
+    if (i < 0) return {};
+    const SubtreeSpan s = span_of(compact.nodes(), uint32_t(i));
+    return {s.first, s.end_sphere - s.first};
+}
+
+std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const SamplingTree& tree, NodeId id,
+                                        const Color& color) {
+    const int64_t i = compact_index(compact, tree, id);
+    if (i < 0) return {};
+    const CompactNode& n = compact.nodes()[size_t(i)];
+    WireSphere w;
+    w.sphere.center = (compact.origin() + Eigen::Vector3d(n.center[0], n.center[1], n.center[2])).cast<float>();
+    w.sphere.radius = n.bv_radius;
+    w.color = color;
+    return {w};
 }
 
 std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all) {

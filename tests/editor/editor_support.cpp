@@ -72,6 +72,10 @@ bool wait_ready(editor::MainWindow& window) {
     // Shortcuts (Ctrl+S, S) reach only the active window.
     window.activateWindow();
     if (!QTest::qWaitForWindowActive(&window)) return false;
+    return wait_drawn(window);
+}
+
+bool wait_drawn(editor::MainWindow& window) {
     return QTest::qWaitFor(
         [&] {
             for (int i = 0; i < 4; ++i)

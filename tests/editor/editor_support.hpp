@@ -23,6 +23,9 @@ editor::StartOptions test_start(const TempDir& dir);
 /// Waits until the window has finished opening and every view has drawn; false on timeout.
 bool wait_ready(editor::MainWindow& window);
 
+/// Waits until every view has drawn (with its camera fitted, after frame_all); false on timeout.
+bool wait_drawn(editor::MainWindow& window);
+
 /// A shown window (test_start options) that has opened `file` and drawn every view; null
 /// (with the reason in `error`) if it did not get there.
 std::unique_ptr<editor::MainWindow> open_editor(const TempDir& dir, const QString& file, std::string* error);

@@ -5,21 +5,13 @@
 #include "spt/collision_model.hpp"
 #include "spt/query.hpp"
 #include "spt/spt_file.hpp"
-#include <zlib.h>
+#include "spt_reseal.hpp"
 #include <cmath>
 #include <vector>
 
 namespace {
 
-// Length field and both CRC-32s made right (docs/spt-format.md), so the checks after them run.
-void reseal(std::vector<uint8_t>& b) {
-    const uint64_t length = b.size();
-    std::memcpy(b.data() + 16, &length, 8);
-    const uint32_t body = uint32_t(crc32(0, b.data() + 32, uInt(b.size() - 32)));
-    std::memcpy(b.data() + 24, &body, 4);
-    const uint32_t head = uint32_t(crc32(0, b.data(), 28));
-    std::memcpy(b.data() + 28, &head, 4);
-}
+using spt::test::reseal;
 
 void use(const spt::SptDocument& doc) {
     using namespace spt;

@@ -3,6 +3,7 @@
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include "spt/query.hpp"
+#include "spt_reseal.hpp"
 #include "test_support.hpp"
 #include <cmath>
 #include <cstring>
@@ -13,6 +14,7 @@
 
 using namespace spt;
 using spt::test::TempDir;
+using spt::test::reseal;
 
 namespace {
 
@@ -62,14 +64,6 @@ void expect_same(const SptDocument& a, const SptDocument& b) {
             EXPECT_EQ(na[i]->samples, nb[i]->samples);
         }
     }
-}
-
-// Rewrites both checksums so that a deliberately hostile edit gets past them.
-void reseal(std::vector<uint8_t>& b) {
-    const uint32_t body = uint32_t(crc32(0, b.data() + 32, uInt(b.size() - 32)));
-    std::memcpy(b.data() + 24, &body, 4);
-    const uint32_t head = uint32_t(crc32(0, b.data(), 28));
-    std::memcpy(b.data() + 28, &head, 4);
 }
 
 size_t sample_count_offset(const SptDocument& doc) { return 32 + 4 + doc.mesh.name.size() + 4 + 4 + 8 + 8; }

@@ -2,6 +2,7 @@
 // layers and gives the pixels of a full draw; an unchanged frame is composited again; any other
 // change draws everything.
 #include "scenes.hpp"
+#include "test_meshes.hpp"
 #include <gtest/gtest.h>
 
 using namespace spt::render;
@@ -102,4 +103,22 @@ TEST(frame_cache, any_other_change_draws_everything) {
     r.view(f, cam);
     EXPECT_TRUE(same_pixels(after_marks, r.view(f, nudged(cam))));
     EXPECT_EQ(r.renderer->last_draw_kind(), DrawKind::Full);
+}
+
+TEST(frame_cache, a_moved_mesh_draws_everything_again) {
+    // A deformed pose moves the mesh's vertices under the same handle (the editor's timeline, a
+    // scene's animated objects): the cached layers showed it where it was.
+    OffscreenRenderer r("osmesa", 160, 120);
+    const Frame f = spt::test::level_spheres_scene(*r.renderer);
+    const Camera cam = fit_camera(View::Front, r.renderer->bounds(f));
+    const Image before = r.view(f, cam);
+    const spt::TriangleMesh mesh = spt::test::torus(1.0, 0.35, 48, 24); // the scene's mesh
+    std::vector<Eigen::Vector3d> moved = mesh.positions;
+    for (Eigen::Vector3d& p : moved) p.x() += 0.2;
+    r.renderer->update_mesh(f.meshes.front().mesh, moved, mesh.normals);
+    const Image after = r.view(f, cam);
+    EXPECT_EQ(r.renderer->last_draw_kind(), DrawKind::Full);
+    EXPECT_FALSE(same_pixels(after, before)) << "the moved mesh did not show";
+    r.renderer->update_mesh(f.meshes.front().mesh, mesh.positions, mesh.normals);
+    EXPECT_TRUE(same_pixels(r.view(f, cam), before)) << "the mesh back where it was draws as it did";
 }

@@ -83,6 +83,30 @@ TEST_F(TreeFixture, bounding_spheres_cover_the_requested_levels) {
     EXPECT_TRUE(bounding_spheres(tree, doc.samples.origin, NodeId(1) << 40, 1, red).empty());
 }
 
+TEST_F(TreeFixture, bounding_sphere_of_the_layout_is_the_trees_at_the_bind_pose_and_follows_a_refit) {
+    const Color red{1, 0, 0, 1};
+    for (const TreeNode* n : tree.nodes()) {
+        const auto from_layout = bounding_sphere(compact, tree, n->id, red);
+        const auto from_tree = bounding_spheres(tree, doc.samples.origin, n->id, 0, red);
+        ASSERT_EQ(from_layout.size(), 1u);
+        EXPECT_EQ(from_layout[0].sphere.center, from_tree[0].sphere.center) << "node " << n->id;
+        EXPECT_EQ(from_layout[0].sphere.radius, from_tree[0].sphere.radius) << "node " << n->id;
+        EXPECT_EQ(from_layout[0].color.r, 1.0f);
+    }
+    // Every sample moved by 2 in y: the layout's refit balls move with them.
+    CompactTree still = compact, moved = compact;
+    still.refit_bounds();
+    std::vector<Eigen::Vector3f> points = doc.samples.points;
+    for (Eigen::Vector3f& p : points) p.y() += 2;
+    moved.follow_samples(points, doc.samples.normals);
+    for (const TreeNode* n : tree.nodes()) {
+        const WireSphere a = bounding_sphere(still, tree, n->id, red)[0], b = bounding_sphere(moved, tree, n->id, red)[0];
+        EXPECT_NEAR(b.sphere.center.y(), a.sphere.center.y() + 2, 1e-4f) << "node " << n->id;
+        EXPECT_NEAR(b.sphere.radius, a.sphere.radius, 1e-4f) << "node " << n->id;
+    }
+    EXPECT_TRUE(bounding_sphere(compact, tree, NodeId(1) << 40, red).empty());
+}
+
 TEST(overlay, node_colours_are_stable_and_distinct) {
     EXPECT_EQ(node_color(5).r, node_color(5).r);
     int same = 0;

@@ -82,9 +82,11 @@ struct TreeReplay {
 /// Replaces `doc`'s trees with the trees of `recipes` (an authored document of an earlier mesh)
 /// over `doc`'s samples of `mesh`: a tree with an authoring recipe is replayed split by split,
 /// one without is built with `build`. One entry per tree, in order; on an exception `doc` is
-/// unchanged. What `spt convert NEW_MESH --recipe OLD.spt` does after sampling.
+/// unchanged. What `spt convert NEW_MESH --recipe OLD.spt` does after sampling. Steps made at a
+/// clip's pose (recipe_has_poses) need `animated`, `mesh` with its clips (mesh must be its
+/// imported.mesh), and select at that pose; without it they are Error(BadInput).
 std::vector<TreeReplay> replay_trees(SptDocument& doc, const TriangleMesh& mesh, const SptDocument& recipes,
-                                     const BuildOptions& build);
+                                     const BuildOptions& build, std::shared_ptr<const AnimatedMesh> animated = nullptr);
 
 /// Builds another tree named `name` over the samples already in `doc` (the paper keeps one a
 /// kind of motion) and adds it, replacing one of that name only if `replace`. `mesh` must be

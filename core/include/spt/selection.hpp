@@ -23,9 +23,24 @@ Eigen::Vector3f project_to_window(const ViewProjection& view, const Eigen::Vecto
 /// the tree has no such node.
 std::vector<uint32_t> samples_below(const SamplingTree& tree, NodeId id);
 
-/// Samples below node `id` whose surface point (SampleSet::position) projects inside
-/// `rect`, whatever is in front of them; sorted.
-std::vector<uint32_t> samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+/// Where a selection finds each sample's surface point: `points` (SampleSet order, the samples'
+/// local frame) plus `origin` for the object frame. A SampleSet converts to its own points; a
+/// deformed pose gives DeformingModel::sample_points() with the document's origin, so a rectangle
+/// selects the samples where that pose draws them.
+struct SamplePoints {
+    const std::vector<Eigen::Vector3f>& points; ///< per sample, local frame, model units
+    Eigen::Vector3d origin;                      ///< object-frame point `points` are relative to
+    /// The samples' own surface points (implicit: every call with a SampleSet reads as it did).
+    SamplePoints(const SampleSet& samples) : points(samples.points), origin(samples.origin) {} // NOLINT
+    /// Surface points of a pose, relative to `local_origin`.
+    SamplePoints(const std::vector<Eigen::Vector3f>& posed, const Eigen::Vector3d& local_origin)
+        : points(posed), origin(local_origin) {}
+};
+
+/// Samples below node `id` whose surface point (origin + point) projects inside `rect`,
+/// whatever is in front of them; sorted. Error(Usage) if `samples` has fewer points than the
+/// tree's samples.
+std::vector<uint32_t> samples_in_rect(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                       const ViewProjection& view, const PixelRect& rect);
 
 /// Eye depth (model units) of the nearest mesh surface at each pixel centre of a view;
@@ -52,7 +67,7 @@ DepthMap render_depth(const TriangleMesh& mesh, const ViewProjection& view, cons
 /// visible when its eye depth is at most `tolerance` (model units) behind the farthest
 /// surface in the 3x3 pixels around it, so a sample on the surface is never missed
 /// where the depth map's pixel centres fall on neighbouring, steeper triangles.
-std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+std::vector<uint32_t> visible_samples_in_rect(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                               const ViewProjection& view, const PixelRect& rect,
                                               const DepthMap& depth, float tolerance);
 
@@ -60,13 +75,14 @@ std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const Sa
 float visible_tolerance(const TriangleMesh& mesh);
 
 /// The selection after `stroke` is applied to `current` (sorted) among the samples below
-/// node `id`: through, or visible only against `mesh` (then `mesh` must not be null).
-std::vector<uint32_t> apply_stroke(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+/// node `id`: through, or visible only against `mesh` (then `mesh` must not be null; at a pose,
+/// the mesh at that pose).
+std::vector<uint32_t> apply_stroke(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                    const std::vector<uint32_t>& current, const RecipeStroke& stroke,
                                    const TriangleMesh* mesh);
 
 /// The selection a recipe step's strokes make, from nothing, below its node.
-std::vector<uint32_t> select_strokes(const SampleSet& samples, const SamplingTree& tree, const RecipeStep& step,
+std::vector<uint32_t> select_strokes(const SamplePoints& samples, const SamplingTree& tree, const RecipeStep& step,
                                      const TriangleMesh* mesh);
 
 /// The selection after a rectangle's `hits` are applied to `current` in `mode` (all sorted).

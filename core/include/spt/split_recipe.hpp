@@ -2,10 +2,13 @@
 /// How a manual split was made (the authoring recipe): the rectangles, with the view that
 /// drew each and how it combined with the selection. A rectangle with its view's matrices
 /// is a region of the object frame (a prism for an orthographic view, a frustum for the
-/// camera), so it selects again on a changed mesh. Stored in .spt version 3.
+/// camera), so it selects again on a changed mesh. Stored in .spt version 3; a split made at a
+/// pose of an animated mesh records the pose too (version 4).
 #include "spt/node_id.hpp"
 #include <Eigen/Core>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace spt {
@@ -43,10 +46,31 @@ struct RecipeStroke {
     bool visible_only = false;    ///< depth-tested against the mesh (spt/selection.hpp)
 };
 
+/// The pose of an animated mesh the strokes were drawn at (docs/deforming.md): the samples
+/// selected where the clip put them at that time.
+struct RecipePose {
+    std::string clip; ///< the clip's name; empty for the bind pose (the mesh as imported)
+    double time = 0;  ///< seconds into the clip (0 at the bind pose)
+    /// True for the bind pose.
+    bool bind() const { return clip.empty(); }
+    /// Same clip and time.
+    bool operator==(const RecipePose& o) const { return clip == o.clip && time == o.time; }
+    /// Another clip or time.
+    bool operator!=(const RecipePose& o) const { return !(*this == o); }
+};
+
 /// One manual split: node `node` split by the selection its strokes make (left = selection).
 struct RecipeStep {
     NodeId node = root_id();           ///< paper id of the node that was split
     std::vector<RecipeStroke> strokes; ///< in the order drawn; the first usually replaces
+    RecipePose pose;                   ///< where the samples were when the strokes were drawn
+
+    /// A step of the root with no strokes, at the bind pose.
+    RecipeStep() = default;
+    /// The split of `split_node` by `drawn`, at `at` (the bind pose unless given; a constructor, so
+    /// that a step written {node, strokes} as before poses needs no third field).
+    RecipeStep(NodeId split_node, std::vector<RecipeStroke> drawn, RecipePose at = {})
+        : node(split_node), strokes(std::move(drawn)), pose(std::move(at)) {}
 };
 
 } // namespace spt

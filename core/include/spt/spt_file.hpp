@@ -31,9 +31,9 @@ struct SptDocument {
 
 /// Newest format version this build reads and writes. encode_spt writes the oldest version
 /// that holds the document (1 when the local origin is zero and no tree has a recipe, 2 with
-/// a local origin, 3 with authoring recipes), so an old file saved again without edits stays
-/// byte-identical.
-constexpr uint32_t kSptVersion = 3;
+/// a local origin, 3 with authoring recipes, 4 when a recipe step was made at a clip's pose),
+/// so an old file saved again without edits stays byte-identical.
+constexpr uint32_t kSptVersion = 4;
 
 /// The format version encode_spt writes for `doc`.
 uint32_t spt_version_for(const SptDocument& doc);

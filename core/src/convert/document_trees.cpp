@@ -7,7 +7,7 @@
 namespace spt {
 
 std::vector<TreeReplay> replay_trees(SptDocument& doc, const TriangleMesh& mesh, const SptDocument& recipes,
-                                     const BuildOptions& build) {
+                                     const BuildOptions& build, std::shared_ptr<const AnimatedMesh> animated) {
     std::vector<TreeReplay> done;
     std::vector<SamplingTree> trees;
     for (const SamplingTree& t : recipes.trees) {
@@ -15,8 +15,9 @@ std::vector<TreeReplay> replay_trees(SptDocument& doc, const TriangleMesh& mesh,
         r.tree = t.name();
         r.steps = t.recipe().size();
         r.built_automatically = t.recipe().empty();
-        trees.push_back(r.built_automatically ? build_tree(t.name(), doc.samples, build)
-                                              : replay_recipe(t, doc.samples, mesh, &r.report));
+        if (r.built_automatically) trees.push_back(build_tree(t.name(), doc.samples, build));
+        else if (animated) trees.push_back(replay_recipe(t, doc, animated, &r.report));
+        else trees.push_back(replay_recipe(t, doc.samples, mesh, &r.report));
         done.push_back(std::move(r));
     }
     doc.trees = std::move(trees); // only once every tree is made: a failure leaves doc as it was

@@ -6,6 +6,7 @@ namespace spt::detail {
 namespace {
 
 constexpr int kMaxViewPixels = 16384;
+constexpr uint32_t kMaxClipName = 4096;
 
 void put_matrix(Writer& w, const Eigen::Matrix4f& m) {
     for (int k = 0; k < 16; ++k) w.put(m.data()[k]); // column-major, as Eigen and OpenGL keep it
@@ -19,9 +20,32 @@ Eigen::Matrix4f get_matrix(Reader& r, const char* what) {
     return m;
 }
 
+// A step's pose (version 4): the clip's name, empty for the bind pose, and seconds into it.
+void put_pose(Writer& w, const RecipePose& pose) {
+    w.put_string(pose.clip);
+    w.put(pose.time);
+}
+
+RecipePose get_pose(Reader& r) {
+    RecipePose pose;
+    pose.clip = r.get_string("recipe clip name", kMaxClipName);
+    const size_t at = r.offset();
+    pose.time = r.get<double>("recipe clip time");
+    if (!std::isfinite(pose.time) || pose.time < 0) r.fail(at, "recipe clip time is not a finite time >= 0");
+    // One encoding of the bind pose, so a file read and written again keeps its bytes.
+    if (pose.clip.empty() && pose.time != 0) r.fail(at, "recipe step at the bind pose (no clip) with a time");
+    return pose;
+}
+
 } // namespace
 
-void put_recipe(Writer& w, const std::vector<RecipeStep>& recipe) {
+bool has_poses(const std::vector<RecipeStep>& recipe) {
+    for (const RecipeStep& step : recipe)
+        if (!step.pose.bind()) return true;
+    return false;
+}
+
+void put_recipe(Writer& w, const std::vector<RecipeStep>& recipe, uint32_t version) {
     w.put(uint32_t(recipe.size()));
     for (const RecipeStep& step : recipe) {
         w.put(step.node);
@@ -36,10 +60,11 @@ void put_recipe(Writer& w, const std::vector<RecipeStep>& recipe) {
             w.put(uint32_t(s.view.width)), w.put(uint32_t(s.view.height));
             w.put(s.rect.x0), w.put(s.rect.y0), w.put(s.rect.x1), w.put(s.rect.y1);
         }
+        if (version >= 4) put_pose(w, step.pose);
     }
 }
 
-std::vector<RecipeStep> get_recipe(Reader& r, const SamplingTree& tree) {
+std::vector<RecipeStep> get_recipe(Reader& r, const SamplingTree& tree, uint32_t version) {
     const auto steps = r.get<uint32_t>("recipe step count");
     // A step takes at least 12 bytes: a bound before any allocation.
     r.need(uint64_t(steps) * 12, std::to_string(steps) + " recipe steps");
@@ -77,6 +102,7 @@ std::vector<RecipeStep> get_recipe(Reader& r, const SamplingTree& tree) {
                 !std::isfinite(s.rect.y1))
                 r.fail(at, "recipe rectangle is not finite");
         }
+        if (version >= 4) step.pose = get_pose(r);
     }
     return recipe;
 }

@@ -56,9 +56,12 @@ std::string SptDocument::validate() const {
 }
 
 uint32_t spt_version_for(const SptDocument& doc) {
-    for (const auto& t : doc.trees)
-        if (!t.recipe().empty()) return 3;
-    return doc.samples.origin.isZero(0) ? 1 : 2;
+    uint32_t version = doc.samples.origin.isZero(0) ? 1 : 2;
+    for (const auto& t : doc.trees) {
+        if (detail::has_poses(t.recipe())) return 4;
+        if (!t.recipe().empty()) version = 3;
+    }
+    return version;
 }
 
 std::vector<uint8_t> encode_spt(const SptDocument& doc) {
@@ -103,7 +106,7 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc) {
         w.put(total);
         for (const TreeNode* n : nodes)
             for (uint32_t idx : n->samples) w.put(idx);
-        if (version >= 3) detail::put_recipe(w, tree.recipe());
+        if (version >= 3) detail::put_recipe(w, tree.recipe(), version);
     }
     std::vector<uint8_t> b = w.take();
     std::memcpy(b.data(), kMagic, 8);
@@ -232,11 +235,14 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         SamplingTree tree(std::move(name), std::move(nodes));
         const std::string why = tree.validate(count);
         if (!why.empty()) r.fail(tree_at, "tree '" + tree.name() + "': " + why);
-        if (version >= 3) tree.set_recipe(detail::get_recipe(r, tree));
+        if (version >= 3) tree.set_recipe(detail::get_recipe(r, tree, version));
         doc.trees.push_back(std::move(tree));
     }
+    // Each document has one encoding: the oldest version that holds it.
     if (version == 3 && spt_version_for(doc) != 3)
         r.fail(8, "a version 3 file without recipe steps (written as version 1 or 2)");
+    if (version == 4 && spt_version_for(doc) != 4)
+        r.fail(8, "a version 4 file without a recipe step made at a clip's pose (written as version 3 or older)");
     if (r.remaining() != 0) r.fail(r.offset(), std::to_string(r.remaining()) + " bytes of unexpected trailing data");
     return doc;
 }

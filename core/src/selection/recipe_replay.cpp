@@ -1,18 +1,15 @@
-// replay_recipe: the recorded strokes of every manual split select again on new samples.
+// replay_recipe: the recorded strokes of every manual split select again on new samples, at the
+// pose each split was made at.
 #include "spt/recipe.hpp"
+#include "selection/step_poses.hpp"
 #include "spt/selection.hpp"
+#include "spt/spt_file.hpp"
 
 namespace spt {
+namespace {
 
-SamplingTree unsplit_tree(const std::string& name, const SampleSet& samples) {
-    SamplingTree tree(name, uint32_t(samples.size()));
-    tree.assign_radii(samples, RadiusRule{});
-    tree.compute_bounds(samples, BoundsMethod::Tight);
-    return tree;
-}
-
-SamplingTree replay_recipe(const SamplingTree& authored, const SampleSet& samples, const TriangleMesh& mesh,
-                           ReplayReport* report) {
+SamplingTree replay(const SamplingTree& authored, const SampleSet& samples, detail::StepPoses& poses,
+                    ReplayReport* report) {
     ReplayReport local;
     ReplayReport& out = report ? *report : local;
     SamplingTree tree = unsplit_tree(authored.name(), samples);
@@ -25,7 +22,9 @@ SamplingTree replay_recipe(const SamplingTree& authored, const SampleSet& sample
             out.skipped.push_back(which + ": the node does not exist, an earlier step was not replayed");
             continue;
         }
-        const EditResult r = tree.split(step.node, select_strokes(samples, tree, step, &mesh), samples);
+        const detail::PosedSamples at = poses.at(step.pose, "tree '" + authored.name() + "' " + which);
+        // The tree's geometry stays the bind pose's: only where the strokes find the samples moves.
+        const EditResult r = tree.split(step.node, select_strokes(at.points, tree, step, at.mesh), samples);
         if (!r) {
             out.skipped.push_back(which + ": " + r.reason);
             continue;
@@ -34,6 +33,34 @@ SamplingTree replay_recipe(const SamplingTree& authored, const SampleSet& sample
         ++out.replayed;
     }
     return tree;
+}
+
+} // namespace
+
+SamplingTree unsplit_tree(const std::string& name, const SampleSet& samples) {
+    SamplingTree tree(name, uint32_t(samples.size()));
+    tree.assign_radii(samples, RadiusRule{});
+    tree.compute_bounds(samples, BoundsMethod::Tight);
+    return tree;
+}
+
+SamplingTree replay_recipe(const SamplingTree& authored, const SampleSet& samples, const TriangleMesh& mesh,
+                           ReplayReport* report) {
+    detail::StepPoses poses(samples, mesh);
+    return replay(authored, samples, poses, report);
+}
+
+SamplingTree replay_recipe(const SamplingTree& authored, const SptDocument& doc,
+                           std::shared_ptr<const AnimatedMesh> animated, ReplayReport* report) {
+    detail::StepPoses poses(doc, std::move(animated));
+    return replay(authored, doc.samples, poses, report);
+}
+
+bool recipe_has_poses(const SptDocument& doc) {
+    for (const SamplingTree& t : doc.trees)
+        for (const RecipeStep& step : t.recipe())
+            if (!step.pose.bind()) return true;
+    return false;
 }
 
 } // namespace spt

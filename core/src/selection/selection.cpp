@@ -2,6 +2,7 @@
 #include "spt/selection.hpp"
 #include "selection/window_point.hpp"
 #include "base/parallel.hpp"
+#include "spt/error.hpp"
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -47,9 +48,14 @@ constexpr size_t kChunk = size_t(1) << 16;
 // read before its slot is written), then closed up in order: the result does not depend on
 // the thread count.
 template <bool Perspective, class Keep>
-std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+std::vector<uint32_t> kept_samples(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                    const detail::WindowMap& window, const Keep& keep) {
     std::vector<uint32_t> out = samples_below(tree, id);
+    // Sorted: the last index is the largest. Points of another sample set (a pose of another
+    // mesh) would be read past their end.
+    if (!out.empty() && out.back() >= samples.points.size())
+        throw Error(ErrorKind::Usage, "selection: " + std::to_string(samples.points.size()) +
+                                          " sample points for a tree over sample " + std::to_string(out.back()));
     const double ox = samples.origin.x(), oy = samples.origin.y(), oz = samples.origin.z();
     const size_t chunks = (out.size() + kChunk - 1) / kChunk;
     std::vector<size_t> kept(chunks);
@@ -58,7 +64,7 @@ std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree&
         size_t n = b;
         for (size_t k = b; k < e; ++k) {
             const uint32_t s = out[k];
-            const Eigen::Vector3f& q = samples.points[s]; // SampleSet::position, unrolled
+            const Eigen::Vector3f& q = samples.points[s]; // origin + point (SampleSet::position), unrolled
             const Eigen::Vector3f w = window.map<Perspective>(ox + double(q.x()), oy + double(q.y()), oz + double(q.z()));
             out[n] = s;
             n += size_t(keep(w));
@@ -76,7 +82,7 @@ std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree&
 }
 
 template <class Keep>
-std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+std::vector<uint32_t> kept_samples(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                    const detail::WindowMap& window, const Keep& keep) {
     return window.perspective() ? kept_samples<true>(samples, tree, id, window, keep)
                                 : kept_samples<false>(samples, tree, id, window, keep);
@@ -84,7 +90,7 @@ std::vector<uint32_t> kept_samples(const SampleSet& samples, const SamplingTree&
 
 } // namespace
 
-std::vector<uint32_t> samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+std::vector<uint32_t> samples_in_rect(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                       const ViewProjection& view, const PixelRect& rect) {
     const Box box(rect);
     return kept_samples(samples, tree, id, detail::WindowMap(view),
@@ -136,7 +142,7 @@ private:
 
 } // namespace
 
-std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+std::vector<uint32_t> visible_samples_in_rect(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                               const ViewProjection& view, const PixelRect& rect,
                                               const DepthMap& depth, float tolerance) {
     const Box box(rect);
@@ -148,7 +154,7 @@ std::vector<uint32_t> visible_samples_in_rect(const SampleSet& samples, const Sa
 
 float visible_tolerance(const TriangleMesh& mesh) { return float(0.005 * mesh.diagonal()); }
 
-std::vector<uint32_t> apply_stroke(const SampleSet& samples, const SamplingTree& tree, NodeId id,
+std::vector<uint32_t> apply_stroke(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                    const std::vector<uint32_t>& current, const RecipeStroke& stroke,
                                    const TriangleMesh* mesh) {
     const std::vector<uint32_t> hits =
@@ -159,7 +165,7 @@ std::vector<uint32_t> apply_stroke(const SampleSet& samples, const SamplingTree&
     return combine_selection(current, hits, stroke.mode);
 }
 
-std::vector<uint32_t> select_strokes(const SampleSet& samples, const SamplingTree& tree, const RecipeStep& step,
+std::vector<uint32_t> select_strokes(const SamplePoints& samples, const SamplingTree& tree, const RecipeStep& step,
                                      const TriangleMesh* mesh) {
     std::vector<uint32_t> selection;
     for (const RecipeStroke& s : step.strokes) selection = apply_stroke(samples, tree, step.node, selection, s, mesh);

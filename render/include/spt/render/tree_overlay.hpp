@@ -54,4 +54,10 @@ std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size,
 std::vector<WireSphere> bounding_spheres(const SamplingTree& tree, const Eigen::Vector3d& origin, NodeId id, int levels,
                                          const Color& color, const Eigen::Affine3f& pose = Eigen::Affine3f::Identity());
 
+/// The bounding sphere of node `id` as `compact` (a layout of `tree`) holds it, in the object frame:
+/// at a deformed pose (DeformingModel::model().tree()) the ball refit around the posed spheres.
+/// Empty if the tree has no such node.
+std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const SamplingTree& tree, NodeId id,
+                                        const Color& color);
+
 } // namespace spt::render
