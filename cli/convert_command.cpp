@@ -70,17 +70,10 @@ void replay_recipe_file(SptDocument& doc, const TriangleMesh& mesh, const BuildO
     }
 }
 
-// Formats that hold no animation: not read a second time for clips.
-bool static_format(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".off";
-}
-
 // An animated mesh's clips: how far each stretches the surface and how deep the gaps between the
 // new document's spheres get across it (docs/deforming.md, "Stretch").
 void report_clips(const std::string& in, const SptDocument& doc, const std::string& tree, int threads) {
-    if (static_format(in)) return;
+    if (!may_hold_animation(in)) return;
     auto mesh = std::make_shared<const AnimatedMesh>(import_animated_mesh(in));
     if (mesh->clips.empty()) return;
     const DeformingModel model(doc, mesh, doc.tree(tree) ? tree : std::string(), false);

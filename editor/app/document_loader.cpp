@@ -20,16 +20,11 @@ struct ReadMesh {
     QString warning;                              // the clips could not be read
 };
 
-// Formats assimp reads without skins or clips: read once, as they were before the timeline
-// (reading a file's animation reads it a second time).
-bool may_animate(const QString& path) {
-    static const QStringList still{"stl", "ply", "obj", "off"};
-    return !still.contains(QFileInfo(path).suffix().toLower());
-}
-
 ReadMesh read_mesh(const QString& path, const ImportOptions& reading) {
     ReadMesh r;
-    if (may_animate(path)) {
+    // Formats without skins or clips are read once, as before the timeline (reading a file's
+    // animation reads it a second time).
+    if (may_hold_animation(path.toStdString())) {
         try {
             auto animated = std::make_shared<AnimatedMesh>(import_animated_mesh(path.toStdString(), reading));
             r.mesh = animated->imported.mesh;

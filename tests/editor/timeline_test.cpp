@@ -84,7 +84,6 @@ protected:
     std::unique_ptr<editor::MainWindow> window_;
 };
 
-} // namespace
 
 TEST_F(Timeline, ShowsForAMeshWithClipsAndNotForOneWithout) {
     editor::MainWindow& w = this->w();
@@ -287,3 +286,5 @@ TEST_F(Timeline, OpeningAnotherFileStopsPlayingAndHidesTheTimeline) {
     EXPECT_TRUE(w.timeline().isVisible());
     EXPECT_EQ(w.timeline().clips()->currentIndex(), 0);
 }
+
+} // namespace

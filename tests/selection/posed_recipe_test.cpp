@@ -31,7 +31,7 @@ const Bar& bar() {
 
 const Clip* clip(const Bar& b, const std::string& name) { return &b.mesh->clips[b.mesh->find_clip(name)]; }
 
-ViewProjection front_view() { return test::bar_front_view(); }
+ViewProjection posed_bar_front_view() { return test::bar_front_view(); }
 RecipeStroke above() { return test::above_the_bar(); }
 
 // Samples whose surface point at `points` (local frame) lies above object y = 0.45.
@@ -80,24 +80,24 @@ TEST(Selection, PosedPointsSelectTheSamplesWhereThePosePutsThem) {
     DeformingModel posed(b.doc, b.mesh, "", false);
     posed.pose(clip(b, "step"), 1.0);
     const SamplePoints points(posed.sample_points(), b.doc.samples.origin);
-    const std::vector<uint32_t> hits = samples_in_rect(points, tree, root_id(), front_view(), above().rect);
+    const std::vector<uint32_t> hits = samples_in_rect(points, tree, root_id(), posed_bar_front_view(), above().rect);
     EXPECT_EQ(hits, above_in(posed.sample_points(), b.doc.samples.origin));
     ASSERT_FALSE(hits.empty());
     // The tip's samples: at the bind pose they lie along the bar's far half, where the same
     // rectangle selects nothing.
     for (uint32_t i : hits) EXPECT_GT(b.doc.samples.position(i).x(), 1.3) << "sample " << i;
-    EXPECT_TRUE(samples_in_rect(b.doc.samples, tree, root_id(), front_view(), above().rect).empty());
+    EXPECT_TRUE(samples_in_rect(b.doc.samples, tree, root_id(), posed_bar_front_view(), above().rect).empty());
     // The same as a sample set whose own points are the posed ones.
     SampleSet moved = b.doc.samples;
     moved.points = posed.sample_points();
-    EXPECT_EQ(samples_in_rect(moved, tree, root_id(), front_view(), above().rect), hits);
+    EXPECT_EQ(samples_in_rect(moved, tree, root_id(), posed_bar_front_view(), above().rect), hits);
 }
 
 TEST(Selection, FewerPointsThanTheTreesSamplesIsAUsageError) {
     const Bar& b = bar();
     const std::vector<Eigen::Vector3f> few(b.doc.samples.points.begin(), b.doc.samples.points.end() - 1);
     try {
-        samples_in_rect(SamplePoints(few, b.doc.samples.origin), b.doc.trees.front(), root_id(), front_view(), above().rect);
+        samples_in_rect(SamplePoints(few, b.doc.samples.origin), b.doc.trees.front(), root_id(), posed_bar_front_view(), above().rect);
         ADD_FAILURE() << "points of another sample set were read";
     } catch (const Error& e) {
         EXPECT_EQ(e.kind(), ErrorKind::Usage) << e.what();
@@ -182,10 +182,10 @@ TEST(Recipe, AnOldRecipeWithoutPosesReplaysAsBefore) {
     // animation gives.
     const Bar& b = bar();
     SamplingTree t = unsplit_tree("t", b.doc.samples);
-    const RecipeStep first{1, {{front_view(), test::bar_band(-1, 1.5f), SelectionMode::Replace, false}}};
+    const RecipeStep first{1, {{posed_bar_front_view(), test::bar_band(-1, 1.5f), SelectionMode::Replace, false}}};
     ASSERT_TRUE(t.split(1, select_strokes(b.doc.samples, t, first, &b.mesh->imported.mesh), b.doc.samples));
     t.add_recipe_step(first);
-    const RecipeStep second{3, {{front_view(), test::bar_band(-1, 1.75f), SelectionMode::Replace, true}}};
+    const RecipeStep second{3, {{posed_bar_front_view(), test::bar_band(-1, 1.75f), SelectionMode::Replace, true}}};
     ASSERT_TRUE(t.split(3, select_strokes(b.doc.samples, t, second, &b.mesh->imported.mesh), b.doc.samples));
     t.add_recipe_step(second);
     ReplayReport old_report, posed_report;

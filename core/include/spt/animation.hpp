@@ -118,6 +118,10 @@ struct AnimatedMesh {
 /// joints on a vertex keeps the 4 heaviest and says so in imported.report.warnings.
 AnimatedMesh import_animated_mesh(const std::string& path, const ImportOptions& options = {});
 
+/// Whether a mesh file's format can hold skins, morph targets or clips: false for OBJ, PLY, STL
+/// and OFF (by the file name's extension, any case), which a caller need not read again for them.
+bool may_hold_animation(const std::string& path);
+
 /// A clip's time for a scene's time `t` (seconds): offset + speed * t, wrapped into
 /// [0, duration] when `loop`, held at 0 or duration otherwise. A clip of zero duration gives 0.
 double clip_time(const Clip& clip, double t, double speed = 1, double offset = 0, bool loop = true);

@@ -3,7 +3,10 @@
 #include "mesh/vertex_normals.hpp"
 #include "spt/animation.hpp"
 #include "spt/error.hpp"
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 
 namespace spt {
 
@@ -19,6 +22,12 @@ size_t AnimatedMesh::find_clip(const std::string& name) const {
     for (size_t i = 0; i < clips.size(); ++i) have += (i ? ", " : "") + std::to_string(i) + " '" + clips[i].name + "'";
     throw Error(ErrorKind::Usage, imported.mesh.name + " has no clip '" + name + "'" +
                                       (clips.empty() ? std::string(": it has no clips") : "; its clips: " + have));
+}
+
+bool may_hold_animation(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return !(ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".off");
 }
 
 double clip_time(const Clip& clip, double t, double speed, double offset, bool loop) {
