@@ -72,10 +72,9 @@ void replay_recipe_file(SptDocument& doc, const TriangleMesh& mesh, const BuildO
 
 // An animated mesh's clips: how far each stretches the surface and how deep the gaps between the
 // new document's spheres get across it (docs/deforming.md, "Stretch").
-void report_clips(const std::string& in, const SptDocument& doc, const std::string& tree, int threads) {
-    if (!may_hold_animation(in)) return;
-    auto mesh = std::make_shared<const AnimatedMesh>(import_animated_mesh(in));
-    if (mesh->clips.empty()) return;
+void report_clips(const std::shared_ptr<const AnimatedMesh>& mesh, const SptDocument& doc, const std::string& tree,
+                  int threads) {
+    if (!mesh || mesh->clips.empty()) return;
     const DeformingModel model(doc, mesh, doc.tree(tree) ? tree : std::string(), false);
     for (const Clip& clip : mesh->clips) {
         const ClipStretch st = measure_stretch(*mesh, clip);
@@ -103,12 +102,13 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
     ImportOptions import_options;
     import_options.threads = a.threads;
-    // A recipe whose splits were made at a clip's pose replays at that pose: the new mesh's clips
-    // are read too.
+    // A format that may hold clips is read with them, once: the clips are reported, and a recipe
+    // whose splits were made at a clip's pose replays at that pose.
     std::optional<SptDocument> recipes;
     if (!a.recipe.empty()) recipes = load_spt(a.recipe);
     std::shared_ptr<const AnimatedMesh> animated;
-    if (recipes && recipe_has_poses(*recipes)) animated = std::make_shared<AnimatedMesh>(import_animated_mesh(in, import_options));
+    if (may_hold_animation(in) || (recipes && recipe_has_poses(*recipes)))
+        animated = std::make_shared<AnimatedMesh>(import_animated_mesh(in, import_options));
     const ImportedMesh m = animated ? animated->imported : import_mesh(in, import_options);
     const double import_secs = seconds_since(t0);
     ConvertOptions opt;
@@ -132,7 +132,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
         doc = make_document(m.mesh, opt, &st);
     }
     if (recipes) replay_recipe_file(doc, m.mesh, opt.build, *recipes, a.recipe, in, animated);
-    report_clips(in, doc, a.tree_name, a.threads);
+    report_clips(animated, doc, a.tree_name, a.threads);
     const auto t_save = std::chrono::steady_clock::now();
     save_spt(doc, out);
     const double save_secs = seconds_since(t_save);

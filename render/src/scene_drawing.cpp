@@ -1,19 +1,12 @@
 // A simulated scene as a Frame: objects at their poses and the scene overlays.
 #include "spt/render/scene_drawing.hpp"
 #include "spt/mesh.hpp"
+#include "spt/spt_file.hpp"
 #include "spt/render/renderer.hpp"
-#include <cstring>
-#include <fstream>
 #include <map>
 
 namespace spt::render {
 namespace {
-
-bool is_spt_file(const std::string& path) {
-    char magic[6] = {};
-    std::ifstream(path, std::ios::binary).read(magic, 6);
-    return std::memcmp(magic, "SPTREE", 6) == 0;
-}
 
 Eigen::Affine3f affine(const Pose& p) {
     Eigen::Affine3f a = Eigen::Affine3f::Identity();

@@ -73,6 +73,7 @@ private:
     std::shared_ptr<const AnimatedMesh> mesh_;
     CollisionModel model_;
     bool triangles_;
+    double diagonal_ = 0; // the bind pose's bounding-box diagonal, model units
     int threads_ = 1;
     TaskSystem* tasks_ = nullptr;
     std::vector<Eigen::Vector3f> bind_points_, bind_normals_; // the document's samples (local frame)

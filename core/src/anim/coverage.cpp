@@ -1,5 +1,6 @@
 // How far the surface of a posed model lies outside its sampling spheres (ClipCoverage).
 #include "spt/deforming_model.hpp"
+#include "anim/keyframes.hpp"
 #include "base/parallel.hpp"
 #include <algorithm>
 #include <cmath>
@@ -71,8 +72,8 @@ ClipCoverage DeformingModel::measure_coverage(const Clip& clip, double frames_pe
         bind_gap.push_back(gap_at(bind.model_.tree(), (p - bind.model_.origin()).cast<float>(), -INFINITY, stack));
         out.bind_gap = std::max(out.bind_gap, bind_gap.back());
     });
-    const double fps = frames_per_second > 0 && std::isfinite(frames_per_second) ? frames_per_second : 30;
-    const int frames = int(std::clamp(std::ceil(clip.duration * fps), 1.0, 10000.0));
+    const detail::ClipPoses poses(clip, frames_per_second, 30);
+    const int frames = poses.count;
     // Per pose: the largest gap, and the largest growth of a point's gap over its bind gap; a
     // point is measured only as far as it could raise either.
     struct Result {
@@ -85,7 +86,7 @@ ClipCoverage DeformingModel::measure_coverage(const Clip& clip, double frames_pe
         DeformingModel local = *this; // each job poses its own copy
         std::vector<uint32_t> walk;
         for (size_t k = job; k < results.size(); k += size_t(jobs)) {
-            local.pose(&clip, clip.duration * double(k) / double(frames));
+            local.pose(&clip, poses.time(int(k)));
             Result& r = results[k];
             const Eigen::Vector3d& o = local.model_.origin();
             for_each_point([&](size_t i, const Triangle& t, const Eigen::Vector3d& w) {
@@ -101,7 +102,7 @@ ClipCoverage DeformingModel::measure_coverage(const Clip& clip, double frames_pe
         }
     });
     for (size_t k = 0; k < results.size(); ++k) {
-        const double t = clip.duration * double(k) / double(frames);
+        const double t = poses.time(int(k));
         ++out.poses;
         if (k == 0 || results[k].gap > out.largest_gap)
             out.largest_gap = results[k].gap, out.time = t, out.where = results[k].gap_at;

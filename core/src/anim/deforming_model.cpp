@@ -46,6 +46,7 @@ DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const Ani
             bind_at_[i] = m.positions[src];
         }
     }
+    diagonal_ = m.diagonal();
     vertices_ = m.positions;
     vertex_normals_ = m.normals;
     points_ = bind_points_, normals_ = bind_normals_;
@@ -74,8 +75,9 @@ void DeformingModel::follow() {
     const TriangleMesh& m = mesh_->imported.mesh;
     for (const Eigen::Vector3d& p : vertices_)
         if (!p.allFinite()) throw_bad_input(m.name, "a posed vertex is not finite");
-    const double diag = m.diagonal();
-    detail::angle_weighted_normals(vertices_, m.triangles, 1e-14 * diag * diag, m.is_copy, vertex_normals_, normal_valid_);
+    // Degenerate faces as import decided them, at the bind pose's size.
+    detail::angle_weighted_normals(vertices_, m.triangles, detail::degenerate_twice_area(diagonal_), m.is_copy,
+                                   vertex_normals_, normal_valid_);
     // Snapped normals, once a vertex or face (a face's samples share its normal): a face squeezed
     // flat has none of its own, and takes its corners'; without any, a sample keeps the bind's.
     const size_t nv = vertices_.size(), nf = m.triangles.size();

@@ -3,6 +3,7 @@
 // interpolation (glTF 2.0 appendix C for the cubic spline).
 #include "spt/animation.hpp"
 #include <algorithm>
+#include <cmath>
 
 namespace spt::detail {
 
@@ -28,6 +29,21 @@ V hermite(const V& v0, const V& b0, const V& v1, const V& a1, double s, double s
     const double s2 = s * s, s3 = s2 * s;
     return (2 * s3 - 3 * s2 + 1) * v0 + (span * (s3 - 2 * s2 + s)) * b0 + (-2 * s3 + 3 * s2) * v1 + (span * (s3 - s2)) * a1;
 }
+
+// Poses taken across a clip, every 1/frames_per_second seconds with both ends: pose k of
+// count + 1 is at time(k). At most 10,000 intervals, so a clip of hours is measured more coarsely,
+// not forever; a rate that is not a positive number is `fallback`.
+struct ClipPoses {
+    ClipPoses(const Clip& clip, double frames_per_second, double fallback)
+        : duration(clip.duration),
+          count(int(std::clamp(std::ceil(clip.duration * (frames_per_second > 0 && std::isfinite(frames_per_second)
+                                                             ? frames_per_second
+                                                             : fallback)),
+                               1.0, 10000.0))) {}
+    double time(int k) const { return duration * double(k) / double(count); }
+    double duration;
+    int count; // intervals: count + 1 poses
+};
 
 // Translation or scale at t (the track is not empty).
 Eigen::Vector3d sample_vector(const Track<Eigen::Vector3d>& track, double t);

@@ -63,8 +63,8 @@ std::vector<Eigen::Affine3d> pose_nodes(const Rig& rig, const Clip* clip, double
 TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time) {
     TriangleMesh m = mesh.imported.mesh;
     pose_vertices(mesh, clip, time, m.positions);
-    const double diag = mesh.imported.mesh.diagonal();
-    detail::angle_weighted_normals(m.positions, m.triangles, 1e-14 * diag * diag, m.is_copy, m.normals, m.normal_valid);
+    const double area_eps = detail::degenerate_twice_area(mesh.imported.mesh.diagonal());
+    detail::angle_weighted_normals(m.positions, m.triangles, area_eps, m.is_copy, m.normals, m.normal_valid);
     return m;
 }
 
@@ -77,18 +77,20 @@ void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std:
     // In place, vertex by vertex: first each mesh's own space with its morph targets (glTF:
     // targets, then the skin), then the skin. `positions` keeps its capacity from pose to pose.
     positions.assign(rig.mesh_positions.begin(), rig.mesh_positions.end());
-    for (size_t i = 0; i < rig.morph_targets.size(); ++i) {
-        double weight = rig.morph_targets[i].default_weight;
+    if (!rig.morph_targets.empty()) {
+        std::vector<double> weights(rig.morph_targets.size()), sampled;
+        for (size_t i = 0; i < weights.size(); ++i) weights[i] = rig.morph_targets[i].default_weight;
         if (clip)
-            for (const MorphChannel& c : clip->morphs)
-                if (!c.weights.empty() && i >= c.first_target && i < c.first_target + c.target_count) {
-                    std::vector<double> w;
-                    detail::sample_weights(c.weights, time, c.target_count, w);
-                    weight = w[i - c.first_target];
-                }
-        if (weight == 0) continue;
-        const MorphTarget& m = rig.morph_targets[i];
-        for (size_t k = 0; k < m.vertices.size(); ++k) positions[m.vertices[k]] += weight * m.delta[k];
+            for (const MorphChannel& c : clip->morphs) { // each channel sampled once
+                if (c.weights.empty()) continue;
+                detail::sample_weights(c.weights, time, c.target_count, sampled);
+                for (uint32_t k = 0; k < c.target_count; ++k) weights[c.first_target + k] = sampled[k];
+            }
+        for (size_t i = 0; i < weights.size(); ++i) {
+            if (weights[i] == 0) continue;
+            const MorphTarget& m = rig.morph_targets[i];
+            for (size_t k = 0; k < m.vertices.size(); ++k) positions[m.vertices[k]] += weights[i] * m.delta[k];
+        }
     }
     const std::vector<Eigen::Affine3d> nodes = pose_nodes(rig, clip, time);
     std::vector<Eigen::Affine3d> slot(rig.bone_slots.size());

@@ -57,7 +57,7 @@ std::pair<Eigen::Vector3d, double> DeformingModel::bound_at(const Clip* clip, do
     const TriangleMesh& m = mesh_->imported.mesh;
     // A sphere's centre lies within its radius of its surface point and the sphere a radius
     // further; rounding of the float layout is covered by a millionth of the size.
-    const double grow = 2 * sphere_reach_ * (1 + 1e-6) + 1e-6 * m.diagonal();
+    const double grow = 2 * sphere_reach_ * (1 + 1e-6) + 1e-6 * diagonal_;
     if (rig.influences.empty() || !clip) {
         Eigen::Vector3d lo = m.positions.front(), hi = lo;
         for (const Eigen::Vector3d& p : m.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);

@@ -1,4 +1,5 @@
 // How far a clip stretches the surface: edge lengths at poses across the clip (spt/animation.hpp).
+#include "anim/keyframes.hpp"
 #include "spt/animation.hpp"
 #include <algorithm>
 #include <cmath>
@@ -29,17 +30,15 @@ ClipStretch measure_stretch(const AnimatedMesh& mesh, const Clip& clip, double f
     const std::vector<std::pair<uint32_t, uint32_t>> edges = edges_of(m);
     std::vector<double> bind(edges.size());
     for (size_t i = 0; i < edges.size(); ++i) bind[i] = (m.positions[edges[i].first] - m.positions[edges[i].second]).norm();
-    const double fps = frames_per_second > 0 && std::isfinite(frames_per_second) ? frames_per_second : 60;
-    // At most 10,000 poses: a clip of hours is measured more coarsely, not forever.
-    const int frames = int(std::clamp(std::ceil(clip.duration * fps), 1.0, 10000.0));
+    const double shortest = 1e-9 * m.diagonal(); // an edge of (almost) no length at bind has no ratio to speak of
+    const detail::ClipPoses poses(clip, frames_per_second, 60);
     std::vector<Eigen::Vector3d> posed;
     bool found = false;
-    for (int k = 0; k <= frames; ++k) {
-        const double t = clip.duration * double(k) / double(frames);
+    for (int k = 0; k <= poses.count; ++k) {
+        const double t = poses.time(k);
         pose_vertices(mesh, &clip, t, posed);
         for (size_t i = 0; i < edges.size(); ++i) {
-            // An edge of (almost) no length at bind has no ratio to speak of.
-            if (!(bind[i] > 1e-9 * m.diagonal())) continue;
+            if (!(bind[i] > shortest)) continue;
             const double r = (posed[edges[i].first] - posed[edges[i].second]).norm() / bind[i];
             out.smallest = std::min(out.smallest, r);
             if (!found || r > out.largest) {

@@ -203,7 +203,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
                           std::to_string(options.weld_tolerance) + " of the diagonal)");
 
     // Faces that collapse to a point or a segment after welding cannot be triangles.
-    const double area_eps = 1e-14 * diag * diag;
+    const double area_eps = detail::degenerate_twice_area(diag);
     m.triangles.reserve(triangles.size());
     for (const auto& t : triangles) {
         const Triangle w{m.welded_index[t[0]], m.welded_index[t[1]], m.welded_index[t[2]]};

@@ -6,6 +6,10 @@
 
 namespace spt::detail {
 
+// Twice the area at or below which a face of a mesh with this bounding-box diagonal is degenerate
+// (import's rule; a pose of the mesh keeps it).
+inline double degenerate_twice_area(double diagonal) { return 1e-14 * diagonal * diagonal; }
+
 // Unit outward normal per vertex, the sum over its faces of the face's unit normal times the
 // face's angle at the vertex; `valid` is 1 where that sum has a direction. Faces of twice-area
 // at most `area_eps` contribute nothing; `skip` (per face, may be empty) leaves faces out.

@@ -64,7 +64,7 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
             // Queries read the object's model: from now on, the deforming one's current pose.
             o.model = std::shared_ptr<const CollisionModel>(deforming_[i], &deforming_[i]->model());
         }
-        deform(0); // the state before the first step is the clips' poses at time 0
+        deform(0); // the broad-phase spheres before the first step: the clips at time 0
     }
 }
 
