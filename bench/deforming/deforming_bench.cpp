@@ -208,9 +208,12 @@ struct Runner {
     QueryCounters work; // spt's: the last query's work
 };
 
+uint32_t g_lazy_region = 512; // --lazy-region (DeformingModel's default)
+
 class SptRunner : public Runner {
 public:
-    SptRunner(const Case& c, QueryLevel level, int threads = 1) : c_(c) {
+    // `lazy`: DeformingModel::pose_lazily_on, the query posing the parts it descends into.
+    SptRunner(const Case& c, QueryLevel level, int threads = 1, bool lazy = false) : c_(c), lazy_(lazy) {
         options_.level = level;
         options_.solids = false; // surfaces, as FCL and Bullet answer (a posed model has no solid anyway)
         // The spheres level poses the spheres only; exact poses the triangles too.
@@ -219,8 +222,15 @@ public:
         a_->set_threads(threads);
         if (c.b.deforming()) b_.emplace(*c.b.anim->doc, c.b.anim->mesh, std::string(), triangles), b_->set_threads(threads);
         else b_fixed_ = CollisionModel(*c.b.fixed_doc, *c.b.fixed_mesh);
+        a_->set_lazy_region(g_lazy_region);
+        if (b_) b_->set_lazy_region(g_lazy_region);
     }
     void update(size_t f) override {
+        if (lazy_) {
+            a_->pose_lazily_on(c_.a.anim->frames[f]);
+            if (b_) b_->pose_lazily_on(c_.b.anim->frames[f]);
+            return;
+        }
         a_->pose_on(c_.a.anim->frames[f]);
         if (b_) b_->pose_on(c_.b.anim->frames[f]);
     }
@@ -235,6 +245,7 @@ public:
 
 private:
     const Case& c_;
+    bool lazy_;
     QueryOptions options_;
     std::optional<DeformingModel> a_, b_;
     CollisionModel b_fixed_;
@@ -575,10 +586,12 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
     add("spt spheres", std::make_unique<SptRunner>(c, QueryLevel::Spheres), true, true);
     add("spt exact", std::make_unique<SptRunner>(c, QueryLevel::Exact), true, true);
     add("spt spheres, 2 threads", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 2), true, true);
+    add("spt spheres, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true), true, true);
     add("FCL OBBRSS refit", std::make_unique<FclRunner>(c), true, true);
     add("Bullet GImpact", std::make_unique<BulletRunner>(c, false), true, true);
     add("Bullet GImpact rebuilt", std::make_unique<BulletRunner>(c, true), true, true);
     add("spheres query, deformed", std::make_unique<SptRunner>(c, QueryLevel::Spheres), false, false);
+    add("spheres query, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true), false, false);
     add("spheres query, rigid", std::make_unique<RigidRunner>(c, QueryLevel::Spheres, rigid_a, rigid_b, &fixed_b), false, false);
     add("exact query, deformed", std::make_unique<SptRunner>(c, QueryLevel::Exact), false, false);
     add("exact query, rigid", std::make_unique<RigidRunner>(c, QueryLevel::Exact, rigid_a, rigid_b, &fixed_b), false, false);
@@ -826,11 +839,15 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
          "frame (samples) |\n";
     o << "|---|---|---:|---:|---:|---:|---:|---|---|---|---|\n";
     for (const auto& r : results)
-        for (size_t i = 0; i + 1 < r.timings.size(); ++i) {
-            if (r.timings[i].in_main_table || r.timings[i].name.find("deformed") == std::string::npos) continue;
-            const Timing &d = r.timings[i], &g = r.timings[i + 1];
-            const Summary &sd = r.summary[i], &sg = r.summary[i + 1];
-            o << "| " << r.c->name << " | " << d.name.substr(0, d.name.find(' ')) << " | " << us(sd.total) << " (" << us(sd.best)
+        for (size_t i = 0; i < r.timings.size(); ++i) {
+            const Timing& d = r.timings[i];
+            if (d.in_main_table || d.name.find("rigid") != std::string::npos) continue;
+            // "spheres query, deformed" and "spheres query, lazy refit" against "spheres query, rigid".
+            const std::string level = d.name.substr(0, d.name.find(' '));
+            const std::string how = d.name.substr(d.name.find(", ") + 2);
+            const Timing& g = named(r, level + " query, rigid");
+            const Summary &sd = r.summary[i], &sg = r.summary[size_t(&g - r.timings.data())];
+            o << "| " << r.c->name << " | " << level << (how == "deformed" ? "" : ", " + how) << " | " << us(sd.total) << " (" << us(sd.best)
               << ") | " << us(sg.total) << " (" << us(sg.best) << ") | " << fixed(ratio(d, g), 2) << " | " << us(sd.warm)
               << " / " << us(sg.warm) << " | " << fixed(warm_ratio(d, g), 2) << " | " << fixed(median(d.node_pairs), 0) << " / " << fixed(median(g.node_pairs), 0) << " | "
               << fixed(median(d.leaf_tests), 0) << " / " << fixed(median(g.leaf_tests), 0) << " | "
@@ -846,6 +863,7 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
 int usage() {
     std::fprintf(stderr,
                  "usage: deforming_bench [--frames N] [--rounds R] [--figure GLTF] [--fbx FBX] [--out-dir DIR] [--stem NAME]\n"
+                 "                       [--lazy-region SAMPLES]\n"
                  "       deforming_bench --profile-update ITERATIONS [--profile-fbx]   (spt's update alone, for perf)\n");
     return 1;
 }
@@ -883,6 +901,7 @@ int main(int argc, char** argv) {
         else if (a == "--stem") stem = value();
         else if (a == "--profile-update") profile = number(1, 100000000);
         else if (a == "--profile-fbx") profile_fbx = true;
+        else if (a == "--lazy-region") g_lazy_region = uint32_t(number(1, 100000000));
         else return usage();
     }
     try {

@@ -1,7 +1,8 @@
 #pragma once
 /// What a query needs of one object: the compact sampling tree and, for the
 /// `exact` level, the mesh's triangles assigned to the tree's active nodes.
-/// Immutable after construction (a DeformingModel poses its own); share one model between threads freely.
+/// Immutable after construction (a DeformingModel poses its own); share one model between threads
+/// freely, except a lazily posed one (DeformingModel::pose_lazily) until it is settled.
 #include "spt/compact_tree.hpp"
 #include "spt/mesh.hpp"
 #include "spt/spt_file.hpp"
@@ -16,6 +17,15 @@ struct SolidData; // where the model is solid, for containment (private layout)
 class DeformingModel;
 namespace detail {
 struct ModelAccess;
+class PendingPose;
+/// The pose a lazily posed model still owes (query/pending_pose.hpp): a copy or a move of the
+/// model poses the rest of the source first, and the copy is posed throughout.
+struct PendingHandle {
+    PendingPose* pose = nullptr;
+    PendingHandle() = default;
+    PendingHandle(const PendingHandle& other);
+    PendingHandle& operator=(const PendingHandle& other);
+};
 }
 
 /// One object ready for queries.
@@ -53,6 +63,7 @@ public:
 private:
     friend struct detail::ModelAccess; // the query code's view of exact_ and solid_ (query/model_access.hpp)
     friend class DeformingModel;       // poses the layout and the triangles in place
+    friend class detail::LazyPose;     // ... or part by part, as queries need it
     void init(const SptDocument& doc, const std::string& tree_name);
     // extent_, reach_ and bounds_reach_ from the layout (and the triangles, when there are some);
     // `by_leaves`: from the active nodes' balls instead of every sphere (a bound, cheaper).
@@ -63,6 +74,9 @@ private:
     // triangles (the solid grids were made for the bind pose); none without them.
     void follow_surface(const std::vector<Eigen::Vector3d>& positions, const std::vector<Eigen::Vector3f>& points,
                         const std::vector<Eigen::Vector3f>& normals, bool triangles, int threads, TaskSystem* tasks);
+    // follow_surface's part after the spheres: the triangles (or none), containment, measure.
+    void follow_triangles(const std::vector<Eigen::Vector3d>& positions, bool triangles);
+    detail::PendingHandle pending_; // first: copied (so the source is posed) before the rest
     CompactTree tree_;
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
     std::shared_ptr<const SolidData> solid_;

@@ -26,8 +26,12 @@ struct CompactNode {
 };
 static_assert(sizeof(CompactNode) == 32, "CompactNode must stay 32 bytes");
 
+namespace detail {
+class LazyPose;
+}
+
 /// Contiguous, SIMD-friendly copy of a tree for queries; changed after it is built only by
-/// follow_samples and refit_bounds (a deformed pose).
+/// follow_samples and refit_bounds (a deformed pose), or part by part by a lazy pose.
 class CompactTree {
 public:
     /// An empty layout (no nodes).
@@ -82,6 +86,15 @@ public:
     void refit_bounds(int threads = 1, TaskSystem* tasks = nullptr);
 
 private:
+    friend class detail::LazyPose; // poses the layout part by part (anim/lazy_pose.hpp)
+    // Active node i's spheres and normals from `points` and `normals` (per sample), as follow_samples.
+    void place_spheres(uint32_t i, const Eigen::Vector3f* points, const Eigen::Vector3f* normals);
+    // Node i's ball as refit_bounds fits it: an active node's from its centres, an inner node's
+    // from its two children's.
+    void fit_active_ball(uint32_t i);
+    void fit_inner_ball(uint32_t i);
+    // Node i's ball: one holding the ball (center, radius) once rounded to float.
+    void set_ball(uint32_t i, const Eigen::Vector3d& center, double radius);
     Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
     std::vector<CompactNode> nodes_;
     std::vector<float> centers_;

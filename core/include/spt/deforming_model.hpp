@@ -12,6 +12,11 @@
 
 namespace spt {
 
+namespace detail {
+struct LazyLayout;
+class LazyPose;
+}
+
 /// How well the sampling spheres cover the surface across a clip (docs/deforming.md, "Stretch"):
 /// surface points (each triangle's corners, edge middles and a grid inside) at poses every
 /// 1/frames_per_second seconds, and how far the farthest lies outside every sphere.
@@ -45,18 +50,33 @@ public:
     /// Poses the model on the mesh's welded vertices at `positions` (object frame, model units).
     void pose_on(const std::vector<Eigen::Vector3d>& positions);
 
+    /// Poses the model lazily at `time` seconds of `clip` (the paper's update of only what a test
+    /// visits; docs/deforming.md, "Lazy refit"): the bounding spheres near the root are fitted
+    /// now from the posed vertices, and each part of the tree below is posed when a `spheres`
+    /// query first descends into it. Every other query, and a copy of the model, poses the rest
+    /// first, so answers are those of pose() (the pruning near the root is looser). Several
+    /// threads may run `spheres` queries on it at once; what poses the rest must run alone. A
+    /// tree of two-sided spheres is posed in full.
+    void pose_lazily(const Clip* clip, double time);
+    /// As pose_lazily, on the mesh's welded vertices at `positions` (object frame, model units).
+    void pose_lazily_on(const std::vector<Eigen::Vector3d>& positions);
+    /// Poses what a lazy pose left (the model is then what pose() makes); a no-op otherwise.
+    void settle();
+    /// The most samples in a part of the tree a lazy pose poses in one go (default 512).
+    void set_lazy_region(uint32_t samples);
+
     /// The model at the current pose.
     const CollisionModel& model() const { return model_; }
     /// The mesh's welded vertices at the current pose (object frame, model units).
     const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
     /// Unit vertex normals at the current pose (angle-weighted, as import computes them; zero where
-    /// a vertex has none), before the first pose the mesh's own.
-    const std::vector<Eigen::Vector3d>& vertex_normals() const { return vertex_normals_; }
+    /// a vertex has none), before the first pose the mesh's own. Settles a lazy pose.
+    const std::vector<Eigen::Vector3d>& vertex_normals() const;
     /// The animated mesh.
     const AnimatedMesh& mesh() const { return *mesh_; }
     /// Each sample's surface point at the current pose (SampleSet order, the samples' local frame:
-    /// add the document's origin for the object frame), model units.
-    const std::vector<Eigen::Vector3f>& sample_points() const { return points_; }
+    /// add the document's origin for the object frame), model units. Settles a lazy pose.
+    const std::vector<Eigen::Vector3f>& sample_points() const;
 
     /// A ball holding the model at `time` seconds of `clip` (a null clip: the bind pose) without
     /// posing it: each joint's ball of the vertices it moves, carried by the joint, all held by one
@@ -70,6 +90,7 @@ public:
     ClipCoverage measure_coverage(const Clip& clip, double frames_per_second = 30, int threads = 1) const;
 
 private:
+    friend class detail::LazyPose; // poses parts of model_ from this pose's vertices
     std::shared_ptr<const AnimatedMesh> mesh_;
     CollisionModel model_;
     bool triangles_;
@@ -81,8 +102,9 @@ private:
     std::vector<Eigen::Vector3d> barycentric_;                // per face sample: weights of its triangle's corners
     std::vector<Eigen::Vector3d> bind_at_;                    // per sample: where its vertex or weights put it at bind
     // The current pose and what computing it needs, kept from pose to pose.
-    std::vector<Eigen::Vector3d> vertices_, vertex_normals_;
-    std::vector<uint8_t> normal_valid_;
+    std::vector<Eigen::Vector3d> vertices_;
+    mutable std::vector<Eigen::Vector3d> vertex_normals_;
+    mutable std::vector<uint8_t> normal_valid_;
     std::vector<Eigen::Vector3f> points_, normals_;
     std::vector<uint8_t> face_sampled_;      // per triangle: some face sample lies on it
     std::vector<Eigen::Vector3f> snapped_;   // per vertex, then per triangle: its normal as stored
@@ -92,8 +114,20 @@ private:
     std::vector<std::pair<Eigen::Vector3d, double>> slot_balls_;
     std::vector<double> morph_reach_;
     double sphere_reach_ = 0;
+    // Lazy posing: the tree's layout for it (made at the first lazy pose; null if the tree cannot
+    // be posed lazily) and the pending pose (shared by copies until one of them poses lazily).
+    uint32_t lazy_region_ = 512;
+    bool lazy_checked_ = false;
+    std::shared_ptr<const detail::LazyLayout> lazy_layout_;
+    std::shared_ptr<detail::LazyPose> lazy_;
+    std::vector<Eigen::Vector3d> next_vertices_; // a clip's pose, checked before it replaces vertices_
+    // A settled lazy pose leaves the vertex normals to the first call that reads them.
+    mutable bool vertex_normals_stale_ = false;
     // Samples, layout and triangles to vertices_.
     void follow();
+    // Sample i's point and normal at vertices_ into points_ and normals_; `snapped` its normal as
+    // stored, or null (the bind's).
+    void place_sample(size_t i, const Eigen::Vector3f* snapped);
     // slot_balls_, morph_reach_ and sphere_reach_ (bound_at's), once.
     void measure_joints();
 };

@@ -76,7 +76,9 @@ public:
     /// naming the object if the motion would carry it beyond 1e16 or to infinity (the state
     /// stays that of the last step).
     const StepResult& step();
-    /// The scene simulated.
+    /// The scene simulated. With the effects deform and contacts alone (no depth, pairs, response,
+    /// ccd or exact), an animated object's model holds this step's pose only where the step's
+    /// queries read it (DeformingModel::pose_lazily).
     const Scene& scene() const { return scene_; }
     /// The effects that run.
     EffectSet effects() const { return effects_; }
@@ -114,6 +116,7 @@ private:
     std::vector<std::shared_ptr<DeformingModel>> deforming_;
     std::vector<double> clip_time_; // per object: its clip's time this step (animated objects)
     std::vector<uint8_t> posed_;    // per object: its model is at that time (posed when a query needs it)
+    bool lazy_pose_ = false;        // posed lazily (DeformingModel::pose_lazily): contacts are all the step asks
     // Per contact of the step: the sphere pairs depth's `all` query found, which are the
     // response's first backtrack query when the pair's poses have not changed since.
     std::vector<std::vector<SpherePair>> start_pairs_;

@@ -1,5 +1,6 @@
 // Samples that follow a deforming mesh (spt/deforming_model.hpp).
 #include "spt/deforming_model.hpp"
+#include "anim/lazy_pose.hpp"
 #include "base/parallel.hpp"
 #include "mesh/vertex_normals.hpp"
 #include "sampling/encoding.hpp"
@@ -78,6 +79,7 @@ void DeformingModel::follow() {
     // Degenerate faces as import decided them, at the bind pose's size.
     detail::angle_weighted_normals(vertices_, m.triangles, detail::degenerate_twice_area(diagonal_), m.is_copy,
                                    vertex_normals_, normal_valid_);
+    vertex_normals_stale_ = false;
     // Snapped normals, once a vertex or face (a face's samples share its normal): a face squeezed
     // flat has none of its own, and takes its corners'; without any, a sample keeps the bind's.
     const size_t nv = vertices_.size(), nf = m.triangles.size();
@@ -101,23 +103,82 @@ void DeformingModel::follow() {
     detail::parallel_for(jobs, threads_, [&](size_t job, int) {
         for (size_t i = n * job / jobs; i < n * (job + 1) / jobs; ++i) {
             const uint32_t src = source_[i] & kMaxSourceIndex;
-            const bool face = source_[i] & kFaceSampleBit;
-            Eigen::Vector3d at;
-            if (face) {
-                const Triangle& t = m.triangles[src];
-                const Eigen::Vector3d& w = barycentric_[i];
-                at = w[0] * vertices_[t[0]] + w[1] * vertices_[t[1]] + w[2] * vertices_[t[2]];
-            } else {
-                at = vertices_[src];
-            }
-            // The stored point plus how far its surface point moved: the bind pose gives the
-            // document's spheres bit for bit.
-            points_[i] = bind_points_[i] + (at - bind_at_[i]).cast<float>();
-            const size_t k = face ? nv + src : src;
-            normals_[i] = snapped_ok_[k] ? snapped_[k] : bind_normals_[i];
+            const size_t k = (source_[i] & kFaceSampleBit) ? nv + src : src;
+            place_sample(i, snapped_ok_[k] ? &snapped_[k] : nullptr);
         }
     }, tasks_);
     model_.follow_surface(vertices_, points_, normals_, triangles_, threads_, tasks_);
+    model_.pending_.pose = nullptr;
+}
+
+void DeformingModel::place_sample(size_t i, const Eigen::Vector3f* snapped) {
+    const TriangleMesh& m = mesh_->imported.mesh;
+    const uint32_t src = source_[i] & kMaxSourceIndex;
+    Eigen::Vector3d at;
+    if (source_[i] & kFaceSampleBit) {
+        const Triangle& t = m.triangles[src];
+        const Eigen::Vector3d& w = barycentric_[i];
+        at = w[0] * vertices_[t[0]] + w[1] * vertices_[t[1]] + w[2] * vertices_[t[2]];
+    } else {
+        at = vertices_[src];
+    }
+    // The stored point plus how far its surface point moved: the bind pose gives the
+    // document's spheres bit for bit.
+    points_[i] = bind_points_[i] + (at - bind_at_[i]).cast<float>();
+    normals_[i] = snapped ? *snapped : bind_normals_[i];
+}
+
+void DeformingModel::pose_lazily(const Clip* clip, double time) {
+    if (!clip) return pose_lazily_on(mesh_->imported.mesh.positions);
+    pose_vertices(*mesh_, clip, time, next_vertices_);
+    pose_lazily_on(next_vertices_);
+}
+
+void DeformingModel::pose_lazily_on(const std::vector<Eigen::Vector3d>& positions) {
+    const TriangleMesh& m = mesh_->imported.mesh;
+    if (positions.size() != m.positions.size())
+        throw Error(ErrorKind::Usage, m.name + ": a pose of " + std::to_string(positions.size()) +
+                                          " vertices for a mesh of " + std::to_string(m.positions.size()));
+    // Checked before anything changes: a pending pose reads vertices_ until it is settled.
+    for (const Eigen::Vector3d& p : positions)
+        if (!p.allFinite()) throw_bad_input(m.name, "a posed vertex is not finite");
+    if (!lazy_checked_) {
+        std::vector<double> offset(source_.size());
+        for (size_t i = 0; i < source_.size(); ++i)
+            offset[i] = (bind_points_[i].cast<double>() - (bind_at_[i] - model_.origin())).norm() +
+                        1e-6 * bind_points_[i].cast<double>().norm();
+        lazy_layout_ = detail::make_lazy_layout(model_.tree(), m, source_, barycentric_, offset, lazy_region_);
+        lazy_checked_ = true;
+    }
+    vertices_.assign(positions.begin(), positions.end());
+    if (!lazy_layout_) return follow();
+    if (!lazy_ || lazy_.use_count() > 1 || lazy_->owner() != this)
+        lazy_ = std::make_shared<detail::LazyPose>(this, lazy_layout_);
+    lazy_->begin();
+}
+
+void DeformingModel::settle() { detail::settle(model_); }
+
+void DeformingModel::set_lazy_region(uint32_t samples) {
+    lazy_region_ = std::max<uint32_t>(1, samples);
+    settle();
+    lazy_checked_ = false, lazy_layout_.reset(), lazy_.reset();
+}
+
+const std::vector<Eigen::Vector3d>& DeformingModel::vertex_normals() const {
+    detail::settle(model_);
+    if (vertex_normals_stale_) {
+        const TriangleMesh& m = mesh_->imported.mesh;
+        detail::angle_weighted_normals(vertices_, m.triangles, detail::degenerate_twice_area(diagonal_), m.is_copy,
+                                       vertex_normals_, normal_valid_);
+        vertex_normals_stale_ = false;
+    }
+    return vertex_normals_;
+}
+
+const std::vector<Eigen::Vector3f>& DeformingModel::sample_points() const {
+    detail::settle(model_);
+    return points_;
 }
 
 } // namespace spt

@@ -1,5 +1,6 @@
 // The reference every tree query is tested against: no hierarchy, every pair.
 #include "query/model_access.hpp"
+#include "query/pending_pose.hpp"
 #include "query/brute_force.hpp"
 #include "query/query_run.hpp"
 #include "query/exact_data.hpp"
@@ -13,6 +14,7 @@ namespace spt {
 
 QueryResult collide_brute_force(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                 const QueryOptions& options, QueryScratch& scratch) {
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     QueryRun run(a, b, b_in_a, options, scratch);
     const auto &an = a.tree().nodes(), &bn = b.tree().nodes();
     const QueryMode mode = options.mode;

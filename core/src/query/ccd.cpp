@@ -1,5 +1,6 @@
 // Continuous detection by bisection of time with conservatively grown spheres.
 #include "spt/ccd.hpp"
+#include "query/pending_pose.hpp"
 #include "query/query_run.hpp"
 #include <algorithm>
 #include <cmath>
@@ -63,6 +64,7 @@ struct Ccd {
 
 CcdResult first_contact(const CollisionModel& a, const CollisionModel& b, const Pose& b0_in_a, const Pose& b1_in_a,
                         const CcdOptions& options, QueryScratch& scratch) {
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     QueryOptions q;
     q.level = options.level == QueryLevel::Bounds ? QueryLevel::Bounds : QueryLevel::Spheres;
     q.mode = QueryMode::Any;

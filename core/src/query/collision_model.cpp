@@ -1,5 +1,6 @@
 // CollisionModel: the query layout, the reach that bounds motion, the exact level's triangles.
 #include "query/model_access.hpp"
+#include "query/pending_pose.hpp"
 #include "spt/collision_model.hpp"
 #include "spt/error.hpp"
 #include "base/float_round.hpp"
@@ -160,6 +161,10 @@ void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& position
                                     const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
                                     bool triangles, int threads, TaskSystem* tasks) {
     tree_.follow_samples(points, normals, threads, tasks);
+    follow_triangles(positions, triangles);
+}
+
+void CollisionModel::follow_triangles(const std::vector<Eigen::Vector3d>& positions, bool triangles) {
     if (!triangles) exact_.reset();
     if (has_mesh()) {
         // Shared with copies of this model: those keep the pose they had.
@@ -181,6 +186,20 @@ void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& position
     }
     measure(true);
 }
+
+namespace detail {
+
+PendingHandle::PendingHandle(const PendingHandle& other) {
+    if (other.pose) other.pose->settle();
+}
+
+PendingHandle& PendingHandle::operator=(const PendingHandle& other) {
+    if (other.pose) other.pose->settle();
+    pose = nullptr;
+    return *this;
+}
+
+} // namespace detail
 
 size_t CollisionModel::memory_bytes() const {
     const ExactData& e = detail::exact_of(*this);

@@ -16,6 +16,7 @@ struct ModelAccess {
         static const SolidData kNone;
         return m.solid_ ? *m.solid_ : kNone;
     }
+    static PendingPose* pending(const CollisionModel& m) { return m.pending_.pose; }
 };
 
 /// Triangle data for the `exact` level, empty without a mesh.

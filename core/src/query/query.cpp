@@ -5,6 +5,7 @@
 #include "geometry/sphere_block.hpp"
 #include "query/exact_data.hpp"
 #include "query/lanes.hpp"
+#include "query/pending_pose.hpp"
 #include <algorithm>
 #include <cstring>
 #include <cmath>
@@ -134,6 +135,8 @@ void QueryRun::run() {
     const float* reach_b = bounds ? B.bounds_reach().data() : nullptr;
     const float pad = o.inflate + f.margin;
     const bool flat = !bounds && (A.tree().node_disc() || B.tree().node_disc());
+    // Lazily posed models: a part is posed before the walk first reads below it.
+    detail::PendingPose *lazy_a = detail::pending_of(A), *lazy_b = detail::pending_of(B);
     VisitStack stack{s.visits};
     // Every pair on the stack overlaps: it was tested when pushed, four children at a
     // time, and the same distances order the descent.
@@ -179,6 +182,8 @@ void QueryRun::run() {
                 if (any) return;
                 continue;
             }
+            if (lazy_a) lazy_a->ensure(i);
+            if (lazy_b) lazy_b->ensure(j);
             if (sphere_leaf_pair(i, j, ca)) {
                 res.collide = true;
                 if (any) return;
@@ -193,6 +198,7 @@ void QueryRun::run() {
         // grandchildren of an inner child too).
         const bool side_a = leaf_b || (!leaf_a && ra >= rb);
         const bool cached = !side_a && s.group_cache;
+        if (detail::PendingPose* lazy = side_a ? lazy_a : lazy_b) lazy->ensure(side_a ? ref_a : ref_b);
         const Grandchildren w = side_a   ? Grandchildren(an, ref_a, reach_a)
                                 : cached ? cached_b_group(f, s, bn, ref_b, reach_b)
                                          : Grandchildren(bn, ref_b, reach_b);
@@ -286,6 +292,9 @@ namespace {
 // holding a deep pair and says so there.
 QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                            const QueryOptions& options, QueryScratch& scratch, bool* deep) {
+    // A lazy pose is posed where this walk descends at level spheres; elsewhere in full first.
+    const bool lazy = detail::pending_of(a) || detail::pending_of(b);
+    if (lazy && options.level != QueryLevel::Spheres) detail::settle(a), detail::settle(b);
     QueryRun run(a, b, b_in_a, options, scratch);
     run.stop_when_deep = deep != nullptr;
     if (run.f.apart) { // the models cannot meet: one bound test, decided in double
@@ -295,6 +304,12 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
     if (options.level != QueryLevel::Exact) {
         run.run();
         if (deep) *deep = run.stopped_deep;
+        if (lazy && options.solids && !run.stopped_deep && !run.res.collide && run.roots_overlap &&
+            (detail::pending_of(a) || detail::pending_of(b))) {
+            // Containment asks the posed triangles: pose the rest and ask again.
+            detail::settle(a), detail::settle(b);
+            return relative_query(a, b, b_in_a, options, scratch, deep);
+        }
         if (!run.stopped_deep) run.check_containment();
     } else {
         // Triangles decide; at deepest the contact then comes from the sampling spheres.
@@ -340,6 +355,7 @@ QueryResult collide_all_unless_deep(const CollisionModel& a, const Pose& pose_a,
 
 QueryResult collide_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                          const QueryOptions& options, detail::ExitSearch& search, QueryScratch& scratch) {
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     QueryOptions all = options;
     all.mode = QueryMode::All;
     QueryRun run(a, b, b_in_a, all, scratch);

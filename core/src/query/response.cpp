@@ -1,5 +1,6 @@
 // Backtrack along the motion (paper §3-4-3, made exact for the sphere model).
 #include "spt/response.hpp"
+#include "query/pending_pose.hpp"
 #include "query/backtrack_from.hpp"
 #include "query/query_run.hpp"
 #include <algorithm>
@@ -233,6 +234,7 @@ BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const
                          const Eigen::Vector3d& motion_in_a, const QueryOptions& options, BacktrackRule rule,
                          const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
                          bool deep = false) {
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     BacktrackResult r;
     const Eigen::Vector3d back = back_direction(motion_in_a);
     if (back.isZero()) return r; // no motion: no direction to move back along
@@ -259,6 +261,7 @@ BacktrackResult in_world(const CollisionModel& a, const Pose& pose_a, const Coll
                          const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
                          const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
                          bool deep = false) {
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     check_pose(pose_a, "pose of A");
     check_pose(pose_b, "pose of B");
     const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};

@@ -1,5 +1,6 @@
 // Cost runs: random and near-contact poses, timed as `spt query --repeat` times them.
 #include "spt/tree_cost.hpp"
+#include "query/pending_pose.hpp"
 #include "spt/error.hpp"
 #include "spt/query_scratch.hpp"
 #include "base/cancel.hpp"
@@ -92,6 +93,7 @@ CostFigures run(const CollisionModel& a, const CollisionModel& b, const std::vec
 } // namespace
 
 CostPoses cost_poses(const CollisionModel& a, const CollisionModel& b, const CostOptions& o) {
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     if (o.random_poses < 0 || o.near_poses < 0 || o.random_poses > 1000000 || o.near_poses > 1000000)
         throw Error(ErrorKind::BadInput, "cost run: pose counts must be 0 to 1,000,000");
     CostPoses out;
@@ -123,6 +125,7 @@ CostPoses cost_poses(const CollisionModel& a, const CollisionModel& b, const Cos
 TreeCost measure_cost(const CollisionModel& a, const CollisionModel& b, const CostPoses& poses,
                       const CostOptions& o, const std::atomic<bool>* cancel,
                       const std::function<void(double)>& progress) {
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     TreeCost c;
     c.memory_bytes = a.memory_bytes();
     QueryScratch s;

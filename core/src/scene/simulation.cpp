@@ -64,6 +64,13 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
             // Queries read the object's model: from now on, the deforming one's current pose.
             o.model = std::shared_ptr<const CollisionModel>(deforming_[i], &deforming_[i]->model());
         }
+        // Posed lazily when the step's only queries are `spheres` walks (no depth, pairs, response,
+        // continuous detection or exact level): those pose what they read, on any thread. Depth
+        // and the rest read the whole of a colliding object, and posing it part by part, then the
+        // rest, costs more than posing it at once (docs/deforming.md, "Scenes").
+        lazy_pose_ = scene_.level == QueryLevel::Spheres && !effects_.has(Effect::Depth) &&
+                     !effects_.has(Effect::Pairs) && !effects_.has(Effect::Response) && !effects_.has(Effect::Ccd) &&
+                     !effects_.has(Effect::Exact);
         deform(0); // the broad-phase spheres before the first step: the clips at time 0
     }
 }
@@ -92,7 +99,10 @@ void Simulation::pose_needed(const std::vector<CandidatePair>& pairs) {
     detail::parallel_for(wanted.size(), threads_, [&](size_t k, int) {
         const uint32_t i = wanted[k];
         const SceneObject& o = scene_.objects[i];
-        deforming_[i]->pose(&o.animated_mesh->clips[o.clip], clip_time_[i]);
+        if (lazy_pose_)
+            deforming_[i]->pose_lazily(&o.animated_mesh->clips[o.clip], clip_time_[i]);
+        else
+            deforming_[i]->pose(&o.animated_mesh->clips[o.clip], clip_time_[i]);
     }, tasks_);
 }
 

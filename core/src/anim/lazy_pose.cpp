@@ -1,0 +1,284 @@
+// Lazy refit (lazy_pose.hpp).
+#include "anim/lazy_pose.hpp"
+#include "mesh/vertex_normals.hpp"
+#include "sampling/encoding.hpp"
+#include "spt/samples.hpp"
+#include <algorithm>
+
+namespace spt::detail {
+namespace {
+
+// Unique ids collected with a stamp per id, in the order first met.
+struct IdSet {
+    std::vector<uint32_t> stamp, ids;
+    uint32_t epoch = 0;
+    explicit IdSet(size_t n) : stamp(n, 0) {}
+    void clear() { ids.clear(), ++epoch; }
+    void add(uint32_t id) {
+        if (stamp[id] != epoch) stamp[id] = epoch, ids.push_back(id);
+    }
+};
+
+} // namespace
+
+std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, const TriangleMesh& mesh,
+                                                   const std::vector<uint32_t>& source,
+                                                   const std::vector<Eigen::Vector3d>& barycentric,
+                                                   const std::vector<double>& offset, uint32_t region_samples) {
+    const std::vector<CompactNode>& nodes = tree.nodes();
+    if (nodes.empty() || tree.two_sided()) return nullptr;
+    auto layout = std::make_shared<LazyLayout>();
+    const size_t n = nodes.size();
+    // Spheres and nodes below each node (children follow their parent in the layout).
+    std::vector<uint32_t> spheres(n), size(n);
+    for (size_t i = n; i-- > 0;) {
+        const CompactNode& c = nodes[i];
+        spheres[i] = c.is_active() ? c.count : spheres[i + 1] + spheres[c.first];
+        size[i] = c.is_active() ? 1 : 1 + size[i + 1] + size[c.first];
+    }
+    // Frontier: the highest nodes of at most region_samples spheres (or active).
+    std::vector<uint32_t> frontier, stack{0};
+    while (!stack.empty()) {
+        const uint32_t i = stack.back();
+        stack.pop_back();
+        if (nodes[i].is_active() || spheres[i] <= region_samples) {
+            frontier.push_back(i);
+        } else {
+            stack.push_back(nodes[i].first), stack.push_back(i + 1);
+        }
+    }
+    std::sort(frontier.begin(), frontier.end());
+
+    layout->need.assign(n, kNoRegion);
+    // The covers and the nodes above them, which a region never refits: every node to begin with,
+    // then a region's subtree cleared, its covers marked again.
+    std::vector<uint8_t> kept(n, 1);
+    // Vertex to faces, for the faces whose normals a vertex sums.
+    const size_t nv = mesh.positions.size();
+    std::vector<uint32_t> face_start(nv + 1, 0), faces;
+    for (const Triangle& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) ++face_start[t[k] + 1];
+    for (size_t v = 0; v < nv; ++v) face_start[v + 1] += face_start[v];
+    faces.resize(face_start[nv]);
+    {
+        std::vector<uint32_t> at(face_start.begin(), face_start.end() - 1);
+        for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+            for (int k = 0; k < 3; ++k) faces[at[mesh.triangles[f][k]]++] = f;
+    }
+    auto each_sample = [&](uint32_t first, uint32_t last, auto&& f) {
+        for (uint32_t i = first; i < last; ++i)
+            if (nodes[i].is_active())
+                for (uint32_t k = nodes[i].first; k < nodes[i].first + nodes[i].count; ++k) f(tree.sample_index()[k]);
+    };
+    IdSet vertex_set(nv), face_set(mesh.triangles.size()), sampled_set(mesh.triangles.size());
+    std::vector<uint32_t> slot_of(nv, kNoSlot), face_slot_of(mesh.triangles.size(), kNoSlot);
+    for (uint32_t r = 0; r < frontier.size(); ++r) {
+        const uint32_t f = frontier[r], end = f + size[f];
+        for (uint32_t i = f; i < end; ++i) layout->need[i] = r, kept[i] = 0;
+        // Covers: the frontier node if active, else its two children.
+        std::vector<uint32_t> cover_nodes;
+        if (nodes[f].is_active()) {
+            cover_nodes = {f};
+        } else {
+            cover_nodes = {f + 1, nodes[f].first};
+            kept[f] = 1;
+        }
+        for (uint32_t c : cover_nodes) {
+            kept[c] = 1;
+            LazyLayout::Cover cover;
+            cover.node = c;
+            float reach = 0;
+            double off = 0;
+            vertex_set.clear();
+            each_sample(c, c + size[c], [&](uint32_t s) {
+                const uint32_t src = source[s] & kMaxSourceIndex;
+                off = std::max(off, offset[s]);
+                if (source[s] & kFaceSampleBit) {
+                    for (int k = 0; k < 3; ++k) vertex_set.add(mesh.triangles[src][k]);
+                    cover.spread = std::max(cover.spread, barycentric[s].cwiseAbs().sum());
+                } else {
+                    vertex_set.add(src);
+                }
+            });
+            for (uint32_t i = c; i < c + size[c]; ++i)
+                if (nodes[i].is_active()) reach = std::max(reach, nodes[i].ss_radius);
+            // A sphere lies within twice its radius of its surface point (its centre is p - r*n).
+            cover.grow = 2 * double(reach) * (1 + 1e-6) + off;
+            cover.vertices = vertex_set.ids;
+            layout->covers.push_back(std::move(cover));
+        }
+        LazyLayout::Region region;
+        vertex_set.clear(), sampled_set.clear();
+        each_sample(f, end, [&](uint32_t s) {
+            const uint32_t src = source[s] & kMaxSourceIndex;
+            region.samples.push_back(s);
+            if (source[s] & kFaceSampleBit) {
+                sampled_set.add(src);
+                for (int k = 0; k < 3; ++k) vertex_set.add(mesh.triangles[src][k]);
+            } else {
+                vertex_set.add(src);
+            }
+        });
+        region.normal_vertices = vertex_set.ids;
+        for (uint32_t k = 0; k < region.normal_vertices.size(); ++k) slot_of[region.normal_vertices[k]] = k;
+        region.sampled_faces = sampled_set.ids;
+        for (uint32_t k = 0; k < region.sampled_faces.size(); ++k)
+            face_slot_of[region.sampled_faces[k]] = uint32_t(region.normal_vertices.size()) + k;
+        for (uint32_t s : region.samples) {
+            const uint32_t src = source[s] & kMaxSourceIndex;
+            region.sample_slot.push_back((source[s] & kFaceSampleBit) ? face_slot_of[src] : slot_of[src]);
+        }
+        for (uint32_t face : region.sampled_faces) face_slot_of[face] = kNoSlot;
+        for (uint32_t face : region.sampled_faces)
+            for (int k = 0; k < 3; ++k) region.sampled_corner_slot.push_back(slot_of[mesh.triangles[face][k]]);
+        face_set.clear();
+        for (uint32_t v : region.normal_vertices)
+            for (uint32_t k = face_start[v]; k < face_start[v + 1]; ++k) face_set.add(faces[k]);
+        region.normal_faces = face_set.ids;
+        std::sort(region.normal_faces.begin(), region.normal_faces.end());
+        for (uint32_t face : region.normal_faces)
+            for (int k = 0; k < 3; ++k) region.corner_slot.push_back(slot_of[mesh.triangles[face][k]]);
+        for (uint32_t v : region.normal_vertices) slot_of[v] = kNoSlot;
+        for (uint32_t i = f; i < end; ++i) {
+            if (nodes[i].is_active()) region.active.push_back(i);
+            if (kept[i]) continue;
+            if (nodes[i].is_active()) region.fit_active.push_back(i);
+        }
+        for (uint32_t i = end; i-- > f;)
+            if (!kept[i] && !nodes[i].is_active()) region.fit_inner.push_back(i);
+
+        layout->regions.push_back(std::move(region));
+    }
+    // Upper: inner nodes kept that are not covers (strict ancestors of the frontier, inner frontier nodes).
+    std::vector<uint8_t> is_cover(n, 0);
+    for (const LazyLayout::Cover& c : layout->covers) is_cover[c.node] = 1;
+    for (size_t i = n; i-- > 0;)
+        if (kept[i] && !is_cover[i] && !nodes[i].is_active()) layout->upper.push_back(uint32_t(i));
+    return layout;
+}
+
+LazyPose::LazyPose(DeformingModel* owner, std::shared_ptr<const LazyLayout> layout)
+    : owner_(owner), layout_(std::move(layout)), posed_flags_(new std::atomic<uint8_t>[layout_->regions.size()]) {
+    need_ = layout_->need.data();
+    posed_ = posed_flags_.get();
+}
+
+void LazyPose::begin() {
+    const TriangleMesh& mesh = owner_->mesh_->imported.mesh;
+    const size_t faces = mesh.triangles.size(), verts = mesh.positions.size();
+    if (face_stamp_.size() != faces) {
+        face_stamp_.assign(faces, 0), corner_add_.resize(3 * faces), face_adds_.resize(faces);
+        sampled_stamp_.assign(faces, 0), face_snap_.resize(faces), face_ok_.resize(faces);
+        vertex_stamp_.assign(verts, 0), vertex_unit_.resize(verts), vertex_snap_.resize(verts), vertex_ok_.resize(verts);
+    }
+    if (++pose_stamp_ == 0) { // wrapped: forget every stamp
+        for (auto* stamps : {&face_stamp_, &sampled_stamp_, &vertex_stamp_}) std::fill(stamps->begin(), stamps->end(), 0);
+        pose_stamp_ = 1;
+    }
+    for (size_t r = 0; r < layout_->regions.size(); ++r) posed_flags_[r].store(0, std::memory_order_relaxed);
+    CollisionModel& model = owner_->model_;
+    CompactTree& tree = model.tree_;
+    const std::vector<Eigen::Vector3d>& v = owner_->vertices_;
+    const Eigen::Vector3d& origin = tree.origin();
+    for (const LazyLayout::Cover& c : layout_->covers) {
+        Eigen::Vector3d lo = v[c.vertices.front()], hi = lo;
+        for (uint32_t k : c.vertices) lo = lo.cwiseMin(v[k]), hi = hi.cwiseMax(v[k]);
+        const Eigen::Vector3d mid = 0.5 * (lo + hi);
+        double far = 0;
+        for (uint32_t k : c.vertices) far = std::max(far, (v[k] - mid).norm());
+        // A sample is a weighted sum of its vertices (weights summing to 1), so it lies within
+        // spread * far of the middle; the float layout rounds within a millionth of where it lies.
+        const Eigen::Vector3d centre = mid - origin;
+        const double r = c.spread * far + c.grow;
+        tree.set_ball(c.node, centre, r + 1e-6 * (centre.norm() + r));
+    }
+    for (uint32_t i : layout_->upper) tree.fit_inner_ball(i);
+    const CompactNode& root = tree.nodes()[0];
+    const Eigen::Vector3d c(root.center[0], root.center[1], root.center[2]);
+    model.extent_ = c.norm() + root.bv_radius;
+    model.reach_ = (c + origin).norm() + root.bv_radius;
+    model.pending_.pose = this;
+}
+
+void LazyPose::settle() {
+    // What a full pose makes, without posing again the regions queries have posed: the rest of
+    // the regions, then the balls above them as refit_bounds fits them (children before parents).
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (uint32_t r = 0; r < layout_->regions.size(); ++r)
+        if (!posed_flags_[r].load(std::memory_order_relaxed)) pose_region_locked(r);
+    CollisionModel& model = owner_->model_;
+    CompactTree& tree = model.tree_;
+    for (const LazyLayout::Cover& c : layout_->covers)
+        tree.nodes_[c.node].is_active() ? tree.fit_active_ball(c.node) : tree.fit_inner_ball(c.node);
+    for (uint32_t i : layout_->upper) tree.fit_inner_ball(i);
+    model.follow_triangles(owner_->vertices_, owner_->triangles_);
+    owner_->vertex_normals_stale_ = true;
+    model.pending_.pose = nullptr;
+}
+
+void LazyPose::pose_region(uint32_t r) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!posed_flags_[r].load(std::memory_order_relaxed)) pose_region_locked(r); // else another walk did
+}
+
+void LazyPose::pose_region_locked(uint32_t r) {
+    const LazyLayout::Region& R = layout_->regions[r];
+    DeformingModel& d = *owner_;
+    const TriangleMesh& m = d.mesh_->imported.mesh;
+    const std::vector<Eigen::Vector3d>& v = d.vertices_;
+    const size_t nvl = R.normal_vertices.size(), nfl = R.sampled_faces.size();
+    // Vertex normals summed over the faces in the order a full pose sums them: the same bits.
+    normal_sum_.assign(nvl, Eigen::Vector3d::Zero());
+    const double area_eps = degenerate_twice_area(d.diagonal_);
+    for (size_t k = 0; k < R.normal_faces.size(); ++k) {
+        const uint32_t f = R.normal_faces[k];
+        if (!m.is_copy.empty() && m.is_copy[f]) continue;
+        if (face_stamp_[f] != pose_stamp_) {
+            const Triangle& t = m.triangles[f];
+            face_adds_[f] = face_corner_normals(v[t[0]], v[t[1]], v[t[2]], area_eps, &corner_add_[3 * size_t(f)]);
+            face_stamp_[f] = pose_stamp_;
+        }
+        if (!face_adds_[f]) continue;
+        for (int c = 0; c < 3; ++c)
+            if (const uint32_t slot = R.corner_slot[3 * k + c]; slot != kNoSlot)
+                normal_sum_[slot] += corner_add_[3 * size_t(f) + size_t(c)];
+    }
+    // A vertex's or face's normal is the same in every region that reads it: made once a pose.
+    for (size_t k = 0; k < nvl; ++k) {
+        const uint32_t vi = R.normal_vertices[k];
+        if (vertex_stamp_[vi] == pose_stamp_) continue;
+        vertex_stamp_[vi] = pose_stamp_;
+        vertex_ok_[vi] = finish_normal(normal_sum_[k]);
+        vertex_unit_[vi] = normal_sum_[k];
+        if (vertex_ok_[vi]) vertex_snap_[vi] = decode_normal(encode_normal(normal_sum_[k].cast<float>()));
+    }
+    for (size_t q = 0; q < nfl; ++q) {
+        const uint32_t f = R.sampled_faces[q];
+        if (sampled_stamp_[f] == pose_stamp_) continue;
+        sampled_stamp_[f] = pose_stamp_;
+        const Triangle& t = m.triangles[f];
+        Eigen::Vector3d normal = (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]);
+        if (!(normal.norm() > 0)) normal = vertex_unit_[t[0]] + vertex_unit_[t[1]] + vertex_unit_[t[2]];
+        face_ok_[f] = normal.norm() > 0;
+        if (face_ok_[f]) face_snap_[f] = decode_normal(encode_normal(normal.normalized().cast<float>()));
+    }
+    for (size_t k = 0; k < R.samples.size(); ++k) {
+        const uint32_t slot = R.sample_slot[k];
+        const Eigen::Vector3f* snapped = nullptr;
+        if (slot < nvl) {
+            const uint32_t vi = R.normal_vertices[slot];
+            if (vertex_ok_[vi]) snapped = &vertex_snap_[vi];
+        } else {
+            const uint32_t f = R.sampled_faces[slot - nvl];
+            if (face_ok_[f]) snapped = &face_snap_[f];
+        }
+        d.place_sample(R.samples[k], snapped);
+    }
+    CompactTree& tree = d.model_.tree_;
+    for (uint32_t a : R.active) tree.place_spheres(a, d.points_.data(), d.normals_.data());
+    for (uint32_t a : R.fit_active) tree.fit_active_ball(a);
+    for (uint32_t i : R.fit_inner) tree.fit_inner_ball(i);
+    posed_flags_[r].store(1, std::memory_order_release);
+}
+
+} // namespace spt::detail

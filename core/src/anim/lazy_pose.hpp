@@ -1,0 +1,90 @@
+#pragma once
+// Lazy refit, the paper's update of only what a test visits (docs/deforming.md, "Lazy refit"):
+// a pose moves the bounding spheres of the few nodes near the root at once, each from the posed
+// vertices its samples hang on, and leaves the parts below (regions) for the query that first
+// descends into them.
+#include "query/pending_pose.hpp"
+#include "spt/deforming_model.hpp"
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace spt::detail {
+
+constexpr uint32_t kNoSlot = 0xffffffffu; // a vertex or face that the region in hand does not read
+
+/// What lazy posing needs to know of one tree on one mesh, made once.
+struct LazyLayout {
+    /// A part of the tree posed in one go: the subtree of a frontier node.
+    struct Region {
+        std::vector<uint32_t> active;         // active nodes of the subtree (their spheres move)
+        std::vector<uint32_t> fit_active;     // active nodes whose balls are refit (not the covers)
+        std::vector<uint32_t> fit_inner;      // inner nodes refit, from the last back (not the covers)
+        std::vector<uint32_t> samples;        // the samples of the active nodes
+        std::vector<uint32_t> sample_slot;    // per sample: its normal's slot (vertex slots, then face slots)
+        std::vector<uint32_t> normal_vertices; // vertices whose normals the samples read
+        std::vector<uint32_t> normal_faces;   // every face around those, ascending (as a full pose sums)
+        std::vector<uint32_t> corner_slot;    // per normal face, 3: the corner's vertex slot or kNoSlot
+        std::vector<uint32_t> sampled_faces;  // faces whose samples lie here (each a face slot)
+        std::vector<uint32_t> sampled_corner_slot; // per sampled face, 3 vertex slots
+    };
+    /// A node whose ball a pose fits from the posed vertices under it: a frontier node's children,
+    /// or an active frontier node.
+    struct Cover {
+        uint32_t node;
+        std::vector<uint32_t> vertices; // every vertex a sample below hangs on
+        double spread = 1;              // the most sum |barycentric weight| of a sample below (1 for a vertex)
+        double grow = 0;                // how far a sphere below reaches past its surface point, model units
+    };
+    std::vector<uint32_t> need; // per compact node: the region to pose before reading below it
+    std::vector<Region> regions;
+    std::vector<Cover> covers;
+    std::vector<uint32_t> upper; // inner nodes above the covers, from the last back
+};
+
+/// The layout for `model`'s tree (bound to `mesh` with the per-sample `source`, `barycentric`
+/// and `offset` (the stored point's distance from its surface point at bind)), in regions of at
+/// most `region_samples` samples; null when the tree cannot be posed lazily (two-sided spheres,
+/// whose discs are refit whole).
+std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, const TriangleMesh& mesh,
+                                                   const std::vector<uint32_t>& source,
+                                                   const std::vector<Eigen::Vector3d>& barycentric,
+                                                   const std::vector<double>& offset, uint32_t region_samples);
+
+/// The pending pose of one DeformingModel.
+class LazyPose final : public PendingPose {
+public:
+    LazyPose(DeformingModel* owner, std::shared_ptr<const LazyLayout> layout);
+    /// The model this poses.
+    const DeformingModel* owner() const { return owner_; }
+    /// Starts a lazy pose at the owner's vertices: every region unposed, the covers' and upper
+    /// nodes' balls fitted, the model pending.
+    void begin();
+    /// Poses the rest: the model becomes what a full pose makes.
+    void settle() override;
+
+protected:
+    void pose_region(uint32_t r) override;
+
+private:
+    DeformingModel* owner_;
+    std::shared_ptr<const LazyLayout> layout_;
+    std::unique_ptr<std::atomic<uint8_t>[]> posed_flags_; // one a region
+    std::mutex mutex_; // one region posed at a time (the scratch below is shared)
+    std::vector<Eigen::Vector3d> normal_sum_; // per slot of the region in hand
+    // Per face, what it adds to its corners' normals at this pose, made once a pose (regions
+    // share faces): 3 vectors, valid when the face's stamp is the pose's; degenerate faces add none.
+    std::vector<Eigen::Vector3d> corner_add_;
+    std::vector<uint32_t> face_stamp_;
+    std::vector<uint8_t> face_adds_;
+    uint32_t pose_stamp_ = 0;
+    // Per vertex and per face sampled, its normal at this pose as stored (ok: it has one), made by
+    // the first region that reads it; the stamp says which pose.
+    std::vector<uint32_t> vertex_stamp_, sampled_stamp_;
+    std::vector<Eigen::Vector3d> vertex_unit_;
+    std::vector<Eigen::Vector3f> vertex_snap_, face_snap_;
+    std::vector<uint8_t> vertex_ok_, face_ok_;
+    void pose_region_locked(uint32_t r); // with mutex_ held
+};
+
+} // namespace spt::detail

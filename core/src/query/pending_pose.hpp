@@ -1,0 +1,39 @@
+#pragma once
+// A model posed lazily (DeformingModel::pose_lazily): its layout holds the pose near the root
+// only, and each part below is posed when a query first reads it (docs/deforming.md, "Lazy refit").
+#include "query/model_access.hpp"
+#include <atomic>
+#include <cstdint>
+
+namespace spt::detail {
+
+constexpr uint32_t kNoRegion = 0xffffffffu;
+
+class PendingPose {
+public:
+    virtual ~PendingPose() = default;
+    /// Poses the part of the layout that a walk reads at compact node `node` (its children and
+    /// grandchildren's balls, or its spheres) if that is not done yet.
+    /// Several walks may ensure at once: a region is posed once, under the pose's lock, and a
+    /// walk reads it only after it sees the region's flag set.
+    void ensure(uint32_t node) {
+        const uint32_t r = need_[node];
+        if (r != kNoRegion && !posed_[r].load(std::memory_order_acquire)) pose_region(r);
+    }
+    /// Poses the rest: the model becomes what a full pose makes, and is no longer pending.
+    virtual void settle() = 0;
+
+protected:
+    const uint32_t* need_ = nullptr; // per compact node: the region to pose before reading below it
+    std::atomic<uint8_t>* posed_ = nullptr; // per region: posed at the current pose
+    virtual void pose_region(uint32_t r) = 0;
+};
+
+/// The model's pending pose, or null when the model is posed throughout.
+inline PendingPose* pending_of(const CollisionModel& m) { return ModelAccess::pending(m); }
+/// Poses what a lazy pose of `m` left; a no-op for a model posed throughout.
+inline void settle(const CollisionModel& m) {
+    if (PendingPose* p = pending_of(m)) p->settle();
+}
+
+} // namespace spt::detail

@@ -1,0 +1,81 @@
+#pragma once
+// The tests' deforming object: a bar that bends at its middle, converted with the defaults.
+#include "spt/animation.hpp"
+#include "spt/compact_tree.hpp"
+#include "spt/convert.hpp"
+#include "meshgen.hpp"
+#include <gtest/gtest.h>
+#include <algorithm>
+#include <cmath>
+
+namespace spt::bending {
+
+// A bar 2 long along x (0.4 thick), subdivided, whose right half turns about z at x = 0 with
+// joint "tip"; vertices within 0.25 of x = 0 blend the two joints.
+inline std::shared_ptr<AnimatedMesh> bending_bar() {
+    auto m = std::make_shared<AnimatedMesh>();
+    m->imported = meshgen::prepare(meshgen::box(2, 0.4, 0.4, 8), "bar.obj");
+    Rig& rig = m->rig;
+    RigNode root;
+    root.name = "root";
+    root.rest_local.setIdentity();
+    root.rest_translation.setZero(), root.rest_rotation.setIdentity(), root.rest_scale.setOnes();
+    RigNode tip = root;
+    tip.name = "tip", tip.parent = 0;
+    rig.nodes = {root, tip};
+    rig.bone_slots = {{0, Eigen::Matrix4d::Identity()}, {1, Eigen::Matrix4d::Identity()}};
+    rig.skinned = true;
+    rig.joint_nodes = {1, 1};
+    rig.joint_count = 2;
+    for (const Eigen::Vector3d& p : m->imported.mesh.positions) {
+        rig.mesh_positions.push_back(p);
+        const double w = std::clamp((p.x() + 0.25) / 0.5, 0.0, 1.0);
+        VertexInfluences in;
+        in.slot = {0, 1, 0, 0};
+        in.weight = {1 - w, w, 0, 0};
+        rig.influences.push_back(in);
+    }
+    Clip bend;
+    bend.name = "bend", bend.duration = 1;
+    NodeChannel ch;
+    ch.node = 1;
+    ch.rotation.times = {0, 1};
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+    ch.rotation.values = {Eigen::Vector4d(0, 0, 0, 1), Eigen::Vector4d(q.x(), q.y(), q.z(), q.w())};
+    bend.nodes = {ch};
+    m->clips = {bend};
+    return m;
+}
+
+struct Bar {
+    std::shared_ptr<AnimatedMesh> mesh = bending_bar();
+    SptDocument doc = make_document(mesh->imported.mesh);
+};
+
+inline const Bar& bar() {
+    static const Bar b;
+    return b;
+}
+
+// Every sphere below a node lies in the node's bounding ball, in the float the walk uses.
+inline void expect_bounds_hold(const CompactTree& t) {
+    const auto& nodes = t.nodes();
+    std::vector<std::pair<uint32_t, uint32_t>> stack; // (node, ancestor)
+    for (uint32_t a = 0; a < nodes.size(); ++a) {
+        stack.assign(1, {a, a});
+        const Eigen::Vector3f ca(nodes[a].center[0], nodes[a].center[1], nodes[a].center[2]);
+        while (!stack.empty()) {
+            const uint32_t i = stack.back().first;
+            stack.pop_back();
+            const CompactNode& n = nodes[i];
+            if (!n.is_active()) {
+                stack.push_back({i + 1, a}), stack.push_back({n.first, a});
+                continue;
+            }
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                ASSERT_LE((t.sphere_center(n, k) - ca).norm() + n.ss_radius, nodes[a].bv_radius) << "node " << a;
+        }
+    }
+}
+
+} // namespace spt::bending

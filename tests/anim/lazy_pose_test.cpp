@@ -1,0 +1,241 @@
+// Lazy refit: a pose that fits the balls near the root and leaves each part below for the query
+// that descends into it (core/src/anim/lazy_pose.cpp).
+#include "anim/lazy_pose.hpp"
+#include "bending_bar.hpp"
+#include "spt/deforming_model.hpp"
+#include "spt/query.hpp"
+#include "spt/response.hpp"
+#include <gtest/gtest.h>
+#include <random>
+#include <thread>
+
+namespace spt {
+namespace {
+
+using bending::bar;
+
+const Clip& bar_clip() { return bar().mesh->clips[0]; }
+
+// Node by node, sphere by sphere: the same bits.
+void expect_same_layout(const CompactTree& a, const CompactTree& b) {
+    ASSERT_EQ(a.nodes().size(), b.nodes().size());
+    for (size_t i = 0; i < a.nodes().size(); ++i) {
+        const CompactNode &na = a.nodes()[i], &nb = b.nodes()[i];
+        for (int k = 0; k < 3; ++k) ASSERT_EQ(na.center[k], nb.center[k]) << "node " << i;
+        ASSERT_EQ(na.bv_radius, nb.bv_radius) << "node " << i;
+        if (!na.is_active()) continue;
+        for (uint32_t k = na.first; k < na.first + na.count; ++k) {
+            ASSERT_EQ(a.sphere_center(na, k), b.sphere_center(nb, k)) << "node " << i;
+            ASSERT_EQ(a.nx()[k], b.nx()[k]);
+            ASSERT_EQ(a.ny()[k], b.ny()[k]);
+            ASSERT_EQ(a.nz()[k], b.nz()[k]);
+        }
+    }
+}
+
+// The bar in regions of at most 16 samples, so that a query leaves most of them unposed.
+DeformingModel small_regions() {
+    DeformingModel dm(bar().doc, bar().mesh);
+    dm.set_lazy_region(16);
+    return dm;
+}
+
+// A box of half-size 0.15 the queries move around the bar.
+const CollisionModel& probe() {
+    static const SptDocument doc = make_document(meshgen::prepare(meshgen::box(0.3, 0.3, 0.3, 2), "probe.obj").mesh);
+    static const CollisionModel m(doc);
+    return m;
+}
+
+// Poses of the probe near the bar's surface at any bend: inside, touching and just apart.
+std::vector<Pose> probe_poses(int count, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> x(-1.3, 1.3), y(-1.3, 1.3), z(-0.5, 0.5);
+    std::vector<Pose> poses;
+    for (int i = 0; i < count; ++i) poses.push_back(Pose::from(Eigen::Vector3d(x(rng), y(rng), z(rng)), Eigen::Quaterniond::Identity()));
+    return poses;
+}
+
+TEST(LazyPose, ASettledLazyPoseIsTheFullPoseBitForBit) {
+    DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
+    QueryScratch scratch;
+    QueryOptions o;
+    o.solids = false;
+    for (double t : {0.35, 0.8, 0.1}) {
+        lazy.pose_lazily(&bar_clip(), t);
+        // Some parts posed by queries first, the rest by settle.
+        for (const Pose& p : probe_poses(5, unsigned(t * 100))) collide_relative(lazy.model(), probe(), p, o, scratch);
+        lazy.settle();
+        full.pose(&bar_clip(), t);
+        expect_same_layout(lazy.model().tree(), full.model().tree());
+        EXPECT_EQ(lazy.model().extent(), full.model().extent());
+        EXPECT_EQ(lazy.sample_points(), full.sample_points());
+        EXPECT_EQ(lazy.vertex_normals(), full.vertex_normals());
+    }
+}
+
+TEST(LazyPose, TheBallsNearTheRootHoldEveryPosedSphereBelowThem) {
+    DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
+    const auto layout = detail::make_lazy_layout(full.model().tree(), bar().mesh->imported.mesh,
+                                                 std::vector<uint32_t>(bar().doc.samples.sources),
+                                                 std::vector<Eigen::Vector3d>(bar().doc.samples.size(), Eigen::Vector3d(1, 0, 0)),
+                                                 std::vector<double>(bar().doc.samples.size(), 0.0), 16);
+    ASSERT_TRUE(layout);
+    ASSERT_GT(layout->regions.size(), 4u);
+    std::vector<uint8_t> near_root(full.model().tree().nodes().size(), 0);
+    for (uint32_t i : layout->upper) near_root[i] = 1;
+    for (const detail::LazyLayout::Cover& c : layout->covers) near_root[c.node] = 1;
+    QueryScratch scratch;
+    QueryOptions o;
+    o.solids = false;
+    for (double t : {0.0, 0.25, 0.6, 1.0})
+        for (int queries : {0, 6}) { // before any query, then after some posed parts and tightened balls
+        lazy.pose_lazily(&bar_clip(), t);
+        for (const Pose& p : probe_poses(queries, unsigned(t * 10))) collide_relative(lazy.model(), probe(), p, o, scratch);
+        full.pose(&bar_clip(), t);
+        const CompactTree &l = lazy.model().tree(), &f = full.model().tree();
+        for (uint32_t a = 0; a < l.nodes().size(); ++a) {
+            if (!near_root[a]) continue;
+            const CompactNode& n = l.nodes()[a];
+            const Eigen::Vector3f c(n.center[0], n.center[1], n.center[2]);
+            std::vector<uint32_t> stack{a};
+            while (!stack.empty()) {
+                const uint32_t i = stack.back();
+                stack.pop_back();
+                const CompactNode& m = f.nodes()[i];
+                if (!m.is_active()) {
+                    stack.push_back(i + 1), stack.push_back(m.first);
+                    continue;
+                }
+                for (uint32_t k = m.first; k < m.first + m.count; ++k)
+                    ASSERT_LE((f.sphere_center(m, k) - c).norm() + m.ss_radius, n.bv_radius) << "node " << a << " t " << t;
+            }
+        }
+        lazy.settle();
+        }
+}
+
+TEST(LazyPose, QueriesAnswerAsOnTheFullPoseInEveryMode) {
+    DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
+    QueryScratch ls, fs;
+    int collisions = 0;
+    for (double t : {0.2, 0.9}) {
+        full.pose(&bar_clip(), t);
+        for (bool solids : {false, true})
+            for (QueryMode mode : {QueryMode::Any, QueryMode::All, QueryMode::Deepest})
+                for (const Pose& p : probe_poses(10, unsigned(t * 10) + solids)) {
+                    lazy.pose_lazily(&bar_clip(), t); // every query starts from an unposed tree
+                    QueryOptions o;
+                    o.solids = solids, o.mode = mode;
+                    const QueryResult a = collide_relative(lazy.model(), probe(), p, o, ls);
+                    const QueryResult b = collide_relative(full.model(), probe(), p, o, fs);
+                    ASSERT_EQ(a.collide, b.collide) << "t " << t << " mode " << int(mode) << " solids " << solids;
+                    collisions += a.collide;
+                    if (mode == QueryMode::All) {
+                        auto key = [](const std::vector<SpherePair>& v) {
+                            std::vector<std::pair<uint32_t, uint32_t>> k;
+                            for (const SpherePair& s : v) k.push_back({s.a, s.b});
+                            std::sort(k.begin(), k.end());
+                            return k;
+                        };
+                        ASSERT_EQ(key(ls.pairs()), key(fs.pairs()));
+                    }
+                    if (mode == QueryMode::Deepest && a.collide) {
+                        ASSERT_EQ(a.deepest.depth, b.deepest.depth);
+                    }
+                }
+    }
+    EXPECT_GT(collisions, 6); // the poses meet the bar often enough to mean something
+}
+
+TEST(LazyPose, AQueryPosesOnlyThePartsItDescendsInto) {
+    DeformingModel lazy = small_regions();
+    lazy.pose_lazily(&bar_clip(), 0.5);
+    QueryScratch scratch;
+    QueryOptions o;
+    o.solids = false;
+    // Far beyond the bent tip: nothing below the root is read.
+    const Pose far = Pose::from(Eigen::Vector3d(0, 3, 0), Eigen::Quaterniond::Identity());
+    EXPECT_FALSE(collide_relative(lazy.model(), probe(), far, o, scratch).collide);
+    // Against the bar's fixed left end, the tip's spheres keep the previous pose (the bind).
+    const Pose left = Pose::from(Eigen::Vector3d(-1.05, 0, 0), Eigen::Quaterniond::Identity());
+    EXPECT_TRUE(collide_relative(lazy.model(), probe(), left, o, scratch).collide);
+    const DeformingModel bind(bar().doc, bar().mesh);
+    const CompactTree &l = lazy.model().tree(), &b = bind.model().tree();
+    size_t unmoved = 0, moved = 0;
+    for (const CompactNode& n : l.nodes()) {
+        if (!n.is_active()) continue;
+        const CompactNode& m = b.nodes()[&n - l.nodes().data()];
+        for (uint32_t k = n.first; k < n.first + n.count; ++k)
+            (l.sphere_center(n, k) == b.sphere_center(m, k) ? unmoved : moved)++;
+    }
+    EXPECT_GT(unmoved, moved); // most of the tree is as the bind pose left it
+    lazy.settle();
+    DeformingModel full(bar().doc, bar().mesh);
+    full.pose(&bar_clip(), 0.5);
+    expect_same_layout(lazy.model().tree(), full.model().tree());
+}
+
+TEST(LazyPose, ACopyOrAnotherKindOfQueryPosesTheRestFirst) {
+    DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
+    full.pose(&bar_clip(), 0.7);
+    lazy.pose_lazily(&bar_clip(), 0.7);
+    const DeformingModel copy = lazy; // the source is posed in full before it is copied
+    expect_same_layout(copy.model().tree(), full.model().tree());
+    expect_same_layout(lazy.model().tree(), full.model().tree());
+    lazy.pose_lazily(&bar_clip(), 0.7);
+    QueryScratch scratch;
+    QueryOptions o;
+    o.level = QueryLevel::Bounds;
+    const Pose p = Pose::from(Eigen::Vector3d(0.3, 1.0, 0), Eigen::Quaterniond::Identity());
+    const bool lazy_bounds = collide_relative(lazy.model(), probe(), p, o, scratch).collide;
+    EXPECT_EQ(lazy_bounds, collide_relative(full.model(), probe(), p, o, scratch).collide);
+    expect_same_layout(lazy.model().tree(), full.model().tree());
+    lazy.pose_lazily(&bar_clip(), 0.7);
+    const BacktrackResult a = backtrack_relative(lazy.model(), probe(), p, Eigen::Vector3d(0, -1, 0), {},
+                                                 BacktrackRule::Exact, scratch);
+    const BacktrackResult b = backtrack_relative(full.model(), probe(), p, Eigen::Vector3d(0, -1, 0), {},
+                                                 BacktrackRule::Exact, scratch);
+    EXPECT_EQ(a.distance, b.distance);
+}
+
+TEST(LazyPose, SeveralThreadsMayWalkOneLazilyPosedModel) {
+    DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
+    const std::vector<Pose> poses = probe_poses(24, 7);
+    QueryOptions o;
+    o.solids = false;
+    for (double t : {0.3, 0.8}) {
+        full.pose(&bar_clip(), t);
+        lazy.pose_lazily(&bar_clip(), t);
+        std::vector<int> answer(poses.size(), -1);
+        auto walk = [&](size_t first) { // each thread its own half, the other half's regions meanwhile
+            QueryScratch scratch;
+            for (size_t k = first; k < poses.size(); k += 2)
+                answer[k] = collide_relative(lazy.model(), probe(), poses[k], o, scratch).collide;
+        };
+        std::thread a(walk, 0), b(walk, 1);
+        a.join(), b.join();
+        QueryScratch scratch;
+        for (size_t k = 0; k < poses.size(); ++k)
+            ASSERT_EQ(answer[k], int(collide_relative(full.model(), probe(), poses[k], o, scratch).collide)) << k;
+        lazy.settle();
+        expect_same_layout(lazy.model().tree(), full.model().tree());
+    }
+}
+
+TEST(LazyPose, ARefusedPoseLeavesThePendingOneWhole) {
+    DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
+    lazy.pose_lazily(&bar_clip(), 0.4);
+    std::vector<Eigen::Vector3d> v = bar().mesh->imported.mesh.positions;
+    v.pop_back();
+    EXPECT_THROW(lazy.pose_lazily_on(v), Error);
+    v = bar().mesh->imported.mesh.positions;
+    v[3].x() = NAN;
+    EXPECT_THROW(lazy.pose_lazily_on(v), Error);
+    lazy.settle();
+    full.pose(&bar_clip(), 0.4);
+    expect_same_layout(lazy.model().tree(), full.model().tree());
+}
+
+} // namespace
+} // namespace spt
