@@ -3,6 +3,7 @@
 #include "anim/lazy_pose.hpp"
 #include "bending_bar.hpp"
 #include "spt/deforming_model.hpp"
+#include "spt/error.hpp"
 #include "spt/query.hpp"
 #include "spt/response.hpp"
 #include <gtest/gtest.h>

@@ -13,7 +13,11 @@ typedef int32_t v8i __attribute__((vector_size(32)));
 
 } // namespace
 
+// Not under ThreadSanitizer: a clone's ifunc resolver runs while the program is relocated,
+// before TSan is set up, and crashes there.
+#if !defined(__SANITIZE_THREAD__)
 __attribute__((target_clones("avx2", "default")))
+#endif
 float sphere_block_d2(const float* ax, const float* ay, const float* az, uint32_t na, const float* bx,
                       const float* by, const float* bz, uint32_t nb, float* out) {
     constexpr float kInf = std::numeric_limits<float>::infinity();
