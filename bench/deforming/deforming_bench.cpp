@@ -212,8 +212,10 @@ uint32_t g_lazy_region = 512; // --lazy-region (DeformingModel's default)
 
 class SptRunner : public Runner {
 public:
-    // `lazy`: DeformingModel::pose_lazily_on, the query posing the parts it descends into.
-    SptRunner(const Case& c, QueryLevel level, int threads = 1, bool lazy = false) : c_(c), lazy_(lazy) {
+    // `lazy`: DeformingModel::pose_lazily_on, the query posing the parts it descends into;
+    // `tight`: DeformingModel::set_tight_refit.
+    SptRunner(const Case& c, QueryLevel level, int threads = 1, bool lazy = false, bool tight = false)
+        : c_(c), lazy_(lazy) {
         options_.level = level;
         options_.solids = false; // surfaces, as FCL and Bullet answer (a posed model has no solid anyway)
         // The spheres level poses the spheres only; exact poses the triangles too.
@@ -222,8 +224,8 @@ public:
         a_->set_threads(threads);
         if (c.b.deforming()) b_.emplace(*c.b.anim->doc, c.b.anim->mesh, std::string(), triangles), b_->set_threads(threads);
         else b_fixed_ = CollisionModel(*c.b.fixed_doc, *c.b.fixed_mesh);
-        a_->set_lazy_region(g_lazy_region);
-        if (b_) b_->set_lazy_region(g_lazy_region);
+        a_->set_lazy_region(g_lazy_region), a_->set_tight_refit(tight);
+        if (b_) b_->set_lazy_region(g_lazy_region), b_->set_tight_refit(tight);
     }
     void update(size_t f) override {
         if (lazy_) {
@@ -587,11 +589,13 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
     add("spt exact", std::make_unique<SptRunner>(c, QueryLevel::Exact), true, true);
     add("spt spheres, 2 threads", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 2), true, true);
     add("spt spheres, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true), true, true);
+    add("spt spheres, tight refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, false, true), true, true);
     add("FCL OBBRSS refit", std::make_unique<FclRunner>(c), true, true);
     add("Bullet GImpact", std::make_unique<BulletRunner>(c, false), true, true);
     add("Bullet GImpact rebuilt", std::make_unique<BulletRunner>(c, true), true, true);
     add("spheres query, deformed", std::make_unique<SptRunner>(c, QueryLevel::Spheres), false, false);
     add("spheres query, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true), false, false);
+    add("spheres query, tight refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, false, true), false, false);
     add("spheres query, rigid", std::make_unique<RigidRunner>(c, QueryLevel::Spheres, rigid_a, rigid_b, &fixed_b), false, false);
     add("exact query, deformed", std::make_unique<SptRunner>(c, QueryLevel::Exact), false, false);
     add("exact query, rigid", std::make_unique<RigidRunner>(c, QueryLevel::Exact, rigid_a, rigid_b, &fixed_b), false, false);

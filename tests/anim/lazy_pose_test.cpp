@@ -60,7 +60,9 @@ std::vector<Pose> probe_poses(int count, unsigned seed) {
 }
 
 TEST(LazyPose, ASettledLazyPoseIsTheFullPoseBitForBit) {
+    for (bool tight : {false, true}) {
     DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
+    lazy.set_tight_refit(tight), full.set_tight_refit(tight);
     QueryScratch scratch;
     QueryOptions o;
     o.solids = false;
@@ -74,6 +76,7 @@ TEST(LazyPose, ASettledLazyPoseIsTheFullPoseBitForBit) {
         EXPECT_EQ(lazy.model().extent(), full.model().extent());
         EXPECT_EQ(lazy.sample_points(), full.sample_points());
         EXPECT_EQ(lazy.vertex_normals(), full.vertex_normals());
+    }
     }
 }
 

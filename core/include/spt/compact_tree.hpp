@@ -80,21 +80,34 @@ public:
     void follow_samples(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
                         int threads = 1, TaskSystem* tasks = nullptr);
     /// Fits every node's bounding sphere to the spheres below it, bottom up: an active node's
-    /// around the middle of its centres' box, an inner node's the smallest holding its two
-    /// children's. A function of the centres alone: refitting after any sequence of poses gives
-    /// what refitting a fresh layout at the last pose gives.
+    /// around the middle of its centres' box; an inner node's the smallest ball holding its two
+    /// children's or, with set_tight_refit, the ball around the middle of its centres' box
+    /// reaching its farthest sphere where that is smaller. A function of the centres alone:
+    /// refitting after any sequence of poses gives what refitting a fresh layout at the last
+    /// pose gives.
     void refit_bounds(int threads = 1, TaskSystem* tasks = nullptr);
+    /// Whether refits search the spheres below each inner node for a tighter ball (about as
+    /// tight as a build's, for about 1.6x the refit's time; docs/deforming.md, "Refit").
+    void set_tight_refit(bool tight) { tight_refit_ = tight; }
 
 private:
     friend class detail::LazyPose; // poses the layout part by part (anim/lazy_pose.hpp)
     // Active node i's spheres and normals from `points` and `normals` (per sample), as follow_samples.
     void place_spheres(uint32_t i, const Eigen::Vector3f* points, const Eigen::Vector3f* normals);
-    // Node i's ball as refit_bounds fits it: an active node's from its centres, an inner node's
-    // from its two children's.
+    // Node i's ball as refit_bounds fits it: an active node's from its centres; an inner node's
+    // from its two children's and, tight and `search_below`, the spheres below (every node
+    // below fitted first).
     void fit_active_ball(uint32_t i);
-    void fit_inner_ball(uint32_t i);
+    void fit_inner_ball(uint32_t i, bool search_below = true);
     // Node i's ball: one holding the ball (center, radius) once rounded to float.
     void set_ball(uint32_t i, const Eigen::Vector3d& center, double radius);
+    // How far the spheres below node i reach from `from` (|from - c| + r at most), from the
+    // balls below i; -1 if the subtree is too deep to search.
+    double farthest_below(uint32_t i, const Eigen::Vector3d& from) const;
+    // boxes_ sized for the nodes (before a refit).
+    void ensure_boxes();
+    std::vector<double> boxes_; // per node: the box of the sphere centres below it (lo xyz, hi xyz), set by a refit
+    bool tight_refit_ = false;
     Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
     std::vector<CompactNode> nodes_;
     std::vector<float> centers_;

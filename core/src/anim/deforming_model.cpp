@@ -159,6 +159,11 @@ void DeformingModel::pose_lazily_on(const std::vector<Eigen::Vector3d>& position
 
 void DeformingModel::settle() { detail::settle(model_); }
 
+void DeformingModel::set_tight_refit(bool tight) {
+    settle(); // a pending pose finishes with the rule it started with
+    model_.tree_.set_tight_refit(tight);
+}
+
 void DeformingModel::set_lazy_region(uint32_t samples) {
     lazy_region_ = std::max<uint32_t>(1, samples);
     settle();

@@ -178,6 +178,7 @@ void LazyPose::begin() {
     for (size_t r = 0; r < layout_->regions.size(); ++r) posed_flags_[r].store(0, std::memory_order_relaxed);
     CollisionModel& model = owner_->model_;
     CompactTree& tree = model.tree_;
+    tree.ensure_boxes(); // before any walk: regions refit their nodes' boxes while walks read balls
     const std::vector<Eigen::Vector3d>& v = owner_->vertices_;
     const Eigen::Vector3d& origin = tree.origin();
     for (const LazyLayout::Cover& c : layout_->covers) {
@@ -192,7 +193,7 @@ void LazyPose::begin() {
         const double r = c.spread * far + c.grow;
         tree.set_ball(c.node, centre, r + 1e-6 * (centre.norm() + r));
     }
-    for (uint32_t i : layout_->upper) tree.fit_inner_ball(i);
+    for (uint32_t i : layout_->upper) tree.fit_inner_ball(i, false); // the spheres below may be unposed
     const CompactNode& root = tree.nodes()[0];
     const Eigen::Vector3d c(root.center[0], root.center[1], root.center[2]);
     model.extent_ = c.norm() + root.bv_radius;

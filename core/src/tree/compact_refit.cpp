@@ -59,21 +59,62 @@ void CompactTree::fit_active_ball(uint32_t i) {
     for (uint32_t k = n.first; k < n.first + n.count; ++k)
         far = std::max(far, (sphere_center(n, k).cast<double>() - mid).norm());
     store_ball(n, mid, far + double(n.ss_radius));
+    double* box = boxes_.data() + 6 * size_t(i);
+    for (int a = 0; a < 3; ++a) box[a] = lo[a], box[3 + a] = hi[a];
 }
 
-void CompactTree::fit_inner_ball(uint32_t i) {
+double CompactTree::farthest_below(uint32_t i, const Eigen::Vector3d& from) const {
+    // Branch and bound over the subtree: a child's ball holds its spheres, so |from - c| + r
+    // bounds how far they reach; the farther child is searched first.
+    double best = 0;
+    uint32_t stack[128];
+    int top = 0;
+    stack[top++] = i;
+    while (top > 0) {
+        const CompactNode& n = nodes_[stack[--top]];
+        if (n.is_active()) {
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                best = std::max(best, (sphere_center(n, k).cast<double>() - from).norm() + double(n.ss_radius));
+            continue;
+        }
+        const uint32_t child[2] = {uint32_t(&n - nodes_.data()) + 1, n.first};
+        double reach[2];
+        for (int h = 0; h < 2; ++h) {
+            const CompactNode& c = nodes_[child[h]];
+            reach[h] = (Eigen::Vector3d(c.center[0], c.center[1], c.center[2]) - from).norm() + double(c.bv_radius);
+        }
+        const int first = reach[0] < reach[1] ? 0 : 1; // pushed first, searched last
+        for (int h : {first, 1 - first})
+            if (reach[h] > best && top < 128) stack[top++] = child[h];
+            else if (reach[h] > best) return -1; // deeper than the stack: no answer (the caller keeps its ball)
+    }
+    return best;
+}
+
+void CompactTree::fit_inner_ball(uint32_t i, bool search_below) {
     CompactNode& n = nodes_[i];
     const CompactNode &a = nodes_[i + 1], &b = nodes_[n.first];
     const Eigen::Vector3d ca(a.center[0], a.center[1], a.center[2]), cb(b.center[0], b.center[1], b.center[2]);
     const double ra = a.bv_radius, rb = b.bv_radius, d = (cb - ca).norm();
-    if (d + rb <= ra) {
-        store_ball(n, ca, ra);
-    } else if (d + ra <= rb) {
-        store_ball(n, cb, rb);
-    } else { // the smallest ball holding both: along the line through their centres
-        const double r = 0.5 * (d + ra + rb);
-        store_ball(n, ca + ((r - ra) / d) * (cb - ca), r);
+    // The smallest ball holding the children's balls...
+    Eigen::Vector3d centre = ca;
+    double radius = ra;
+    if (d + ra <= rb) {
+        centre = cb, radius = rb;
+    } else if (!(d + rb <= ra)) { // along the line through their centres
+        radius = 0.5 * (d + ra + rb);
+        centre = ca + ((radius - ra) / d) * (cb - ca);
     }
+    // ...or, tight, the ball around the middle of the centres' box that reaches the farthest
+    // sphere below (the builder's first candidate) when it is smaller, as it is at most nodes.
+    if (!search_below || !tight_refit_) return store_ball(n, centre, radius);
+    double* box = boxes_.data() + 6 * size_t(i);
+    const double *ba = boxes_.data() + 6 * size_t(i + 1), *bb = boxes_.data() + 6 * size_t(n.first);
+    for (int k = 0; k < 3; ++k) box[k] = std::min(ba[k], bb[k]), box[3 + k] = std::max(ba[3 + k], bb[3 + k]);
+    const Eigen::Vector3d mid(0.5 * (box[0] + box[3]), 0.5 * (box[1] + box[4]), 0.5 * (box[2] + box[5]));
+    const double far = farthest_below(i, mid);
+    if (far >= 0 && far < radius) centre = mid, radius = far;
+    store_ball(n, centre, radius);
 }
 
 void CompactTree::set_ball(uint32_t i, const Eigen::Vector3d& center, double radius) {
@@ -87,7 +128,12 @@ void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, con
     if (!two_sided_.empty()) build_node_discs();
 }
 
+void CompactTree::ensure_boxes() {
+    if (boxes_.size() != 6 * nodes_.size()) boxes_.assign(6 * nodes_.size(), 0.0);
+}
+
 void CompactTree::refit_bounds(int threads, TaskSystem* tasks) {
+    ensure_boxes();
     // Active nodes first (on the jobs), then inner nodes from the last back: children follow
     // their parent, so every child is fitted before its parent.
     each_active(nodes_, active_, threads, tasks, [&](uint32_t i) { fit_active_ball(i); });

@@ -151,7 +151,8 @@ void CompactTree::build_node_discs() {
 size_t CompactTree::memory_bytes() const {
     return nodes_.capacity() * sizeof(CompactNode) + centers_.capacity() * sizeof(float) +
            (nx_.capacity() + ny_.capacity() + nz_.capacity()) + two_sided_.capacity() +
-           node_disc_.capacity() * sizeof(float) + sample_index_.capacity() * sizeof(uint32_t);
+           node_disc_.capacity() * sizeof(float) + sample_index_.capacity() * sizeof(uint32_t) +
+           active_.capacity() * sizeof(uint32_t) + boxes_.capacity() * sizeof(double); // the last two: a deformed pose's
 }
 
 } // namespace spt
