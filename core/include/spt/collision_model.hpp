@@ -2,7 +2,8 @@
 /// What a query needs of one object: the compact sampling tree and, for the
 /// `exact` level, the mesh's triangles assigned to the tree's active nodes.
 /// Immutable after construction (a DeformingModel poses its own); share one model between threads
-/// freely, except a lazily posed one (DeformingModel::pose_lazily) until it is settled.
+/// freely. A lazily posed one (DeformingModel::pose_lazily) takes `spheres` queries from several
+/// threads at once, and anything that poses the rest of it only alone.
 #include "spt/compact_tree.hpp"
 #include "spt/mesh.hpp"
 #include "spt/spt_file.hpp"
