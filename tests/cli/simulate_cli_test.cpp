@@ -3,6 +3,7 @@
 #include "run_command.hpp"
 #include "spt/pose.hpp"
 #include <gtest/gtest.h>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -81,6 +82,47 @@ TEST_F(CliSimulate, HeadersAreExactlyTheIssuesAndOneRowPerStep) {
     EXPECT_EQ(std::count(three.begin(), three.end(), '\n'), 4);
 }
 
+TEST_F(CliSimulate, PosesOutHasARowPerObjectPerStepFromTheInitialState) {
+    // a static and turned, b moving at (-2, 0, 0), c on a path: 1 unit along y and a quarter turn
+    // about z over its first second.
+    const std::string scene = dir.write("three.json", R"({"spt_scene": 1, "dt": 0.25, "steps": 6,
+        "effects": ["motion", "contacts"], "objects": [
+        {"name": "a", "model": "box.obj", "static": true, "position": [0.2, -0.1, 0.3], "orientation": [0.9, 0.1, 0.3, 0.2]},
+        {"name": "b", "model": "ball.obj", "position": [5.0, 0.0, 0.0], "velocity": [-2, 0, 0]},
+        {"name": "c", "model": "ball.obj", "path": [{"t": 0, "position": [0, 3, 0]},
+                                                     {"t": 1, "position": [0, 4, 0], "orientation": [0.7071067811865476, 0, 0, 0.7071067811865476]}]}]})");
+    int code;
+    const std::string out = run(q(scene) + " -o " + q(dir.file("steps.csv")) + " --poses-out " + q(dir.file("poses.csv")), &code);
+    ASSERT_EQ(code, 0) << out;
+    std::ifstream in(dir.file("poses.csv"));
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header, "step,time,object,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz");
+    const auto rows = read_csv(dir.file("poses.csv"));
+    ASSERT_EQ(rows.size(), 1u + 7 * 3); // steps 0 to 6, three objects each, in object order
+    auto at = [&](int step, int object, int column) { return std::stod(rows[size_t(1 + 3 * step + object)][size_t(column)]); };
+    for (int step = 0; step <= 6; ++step) {
+        for (int o = 0; o < 3; ++o) {
+            const auto& r = rows[size_t(1 + 3 * step + o)];
+            ASSERT_EQ(r.size(), 16u);
+            EXPECT_EQ(r[0], std::to_string(step));
+            EXPECT_EQ(r[2], std::string(1, char('a' + o)));
+            EXPECT_DOUBLE_EQ(std::stod(r[1]), 0.25 * step);
+        }
+        // a stays where it was put, unit orientation, still.
+        EXPECT_DOUBLE_EQ(at(step, 0, 3), 0.2);
+        for (int k = 10; k < 16; ++k) EXPECT_EQ(at(step, 0, k), 0.0);
+        // b moves by its velocity.
+        EXPECT_NEAR(at(step, 1, 3), 5.0 - 2.0 * 0.25 * step, 1e-12);
+        EXPECT_EQ(at(step, 1, 10), -2.0);
+        // c: the path's slope until t = 1, then held.
+        const bool moving = 0.25 * step < 1;
+        EXPECT_NEAR(at(step, 2, 4), 3.0 + std::min(1.0, 0.25 * step), 1e-12);
+        EXPECT_NEAR(at(step, 2, 11), moving ? 1.0 : 0.0, 1e-12);
+        EXPECT_NEAR(at(step, 2, 15), moving ? M_PI / 2 : 0.0, 1e-9); // a quarter turn about z in 1 s
+    }
+}
+
 TEST_F(CliSimulate, StagesThatAreOffCountAndCostNothing) {
     const std::string scene = dir.write("pair.json", kPair);
     int code;
@@ -130,6 +172,13 @@ TEST_F(CliSimulate, BadScenesAndOptionsGetTheirExitCodes) {
     EXPECT_EQ(code, 1);
     out = run(q(dir.file("pair.json")) + " -o " + q(dir.file("no/such/dir/x.csv")), &code);
     EXPECT_EQ(code, 3);
+    out = run(q(dir.file("pair.json")) + " -o " + q(dir.file("s.csv")) + " --poses-out " + q(dir.file("no/such/dir/p.csv")), &code);
+    EXPECT_EQ(code, 3);
+    EXPECT_NE(out.find("p.csv"), std::string::npos) << out;
+    const std::string comma = dir.write("comma.json", R"({"spt_scene": 1, "objects": [{"name": "a,b", "model": "box.obj"}]})");
+    out = run(q(comma) + " -o " + q(dir.file("s.csv")) + " --poses-out " + q(dir.file("p.csv")), &code);
+    EXPECT_EQ(code, 2);
+    EXPECT_NE(out.find("'a,b'"), std::string::npos) << out;
     out = run("--help", &code);
     EXPECT_EQ(code, 0);
     EXPECT_NE(out.find("--effects"), std::string::npos);

@@ -78,6 +78,31 @@ TEST(SceneParse, PathIsLinearInPositionAndSlerpInOrientation) {
     EXPECT_EQ(path_pose(path, 9).translation, Eigen::Vector3d(2, 0, 1));  // and after the last
 }
 
+TEST(SceneParse, PathVelocityIsEachSegmentsSlopeAndTurnRateAndZeroWhereThePathHolds) {
+    const Eigen::Quaterniond q1(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
+    // The second segment turns back the long way round in value, the short way in motion.
+    const Eigen::Quaterniond q2 = Eigen::Quaterniond(-q1.w(), -q1.x(), -q1.y(), -q1.z()) * Eigen::Quaterniond(Eigen::AngleAxisd(-M_PI / 4, Eigen::Vector3d::UnitY()));
+    const std::vector<Keyframe> path = {{0, {2, 0, 0}, Eigen::Quaterniond::Identity()}, {1.5, {2, 0, 1}, q1}, {2.5, {2, 3, 1}, q2}};
+    const auto [v0, w0] = path_velocity(path, 0.75);
+    EXPECT_NEAR((v0 - Eigen::Vector3d(0, 0, 1 / 1.5)).norm(), 0, 1e-12);
+    EXPECT_NEAR((w0 - Eigen::Vector3d(0, (M_PI / 2) / 1.5, 0)).norm(), 0, 1e-9);
+    const auto [v1, w1] = path_velocity(path, 1.5); // at a key: the segment it starts
+    EXPECT_NEAR((v1 - Eigen::Vector3d(0, 3, 0)).norm(), 0, 1e-12);
+    EXPECT_NEAR((w1 - Eigen::Vector3d(0, -M_PI / 4, 0)).norm(), 0, 1e-9);
+    // The velocity carries the pose along the path: a small step of it lands on path_pose.
+    const double t = 0.4, h = 1e-6;
+    const Pose a = path_pose(path, t), b = path_pose(path, t + h);
+    const auto [v, w] = path_velocity(path, t);
+    EXPECT_NEAR((a.translation + h * v - b.translation).norm(), 0, 1e-12);
+    const Eigen::Quaterniond stepped = Eigen::Quaterniond(Eigen::AngleAxisd(w.norm() * h, w.normalized())) * a.rotation;
+    EXPECT_NEAR(stepped.angularDistance(b.rotation), 0, 1e-9);
+    for (double held : {-1.0, 2.5, 9.0}) {
+        const auto [vh, wh] = path_velocity(path, held);
+        EXPECT_EQ(vh, Eigen::Vector3d::Zero()) << held;
+        EXPECT_EQ(wh, Eigen::Vector3d::Zero()) << held;
+    }
+}
+
 TEST(SceneParse, InvalidJsonNamesTheFileLineAndPath) {
     const std::string m = refusal("{\"spt_scene\": 1,\n \"objects\": [{\"name\": \"a\",, }]}");
     EXPECT_NE(m.find("bad.json"), std::string::npos) << m;

@@ -77,6 +77,11 @@ struct Keyframe {
 /// around t; held at the first and last keyframes outside them.
 Pose path_pose(const std::vector<Keyframe>& path, double t);
 
+/// Velocity on a path at time t (seconds), world frame: the linear (model units / s) and angular
+/// (rad / s) velocity of the segment that starts at or before t; zero before the first keyframe
+/// and from the last on (the path holds its ends).
+std::pair<Eigen::Vector3d, Eigen::Vector3d> path_velocity(const std::vector<Keyframe>& path, double t);
+
 /// How an object's animation clip plays (objects[].animation): at scene time t the clip's time is
 /// offset + speed * t, wrapped into the clip when `loop`, held at its ends otherwise (clip_time).
 struct AnimationSettings {

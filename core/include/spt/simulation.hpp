@@ -90,6 +90,10 @@ public:
     const std::vector<Pose>& ghost_poses() const { return ghost_; }
     /// Linear velocities, world frame, model units / s (path and static objects: zero).
     const std::vector<Eigen::Vector3d>& velocities() const { return velocity_; }
+    /// Object i's linear (model units / s) and angular (rad / s) velocity now, world frame: a
+    /// moving object's own, a path object's path's (path_velocity at this time), a static one's
+    /// zero; zero for all without the effect motion, which moves nothing.
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> object_velocity(size_t i) const;
     /// Broad-phase spheres of the last step (swept over the step with ccd).
     const std::vector<BroadSphere>& broad_spheres() const { return spheres_; }
 

@@ -80,4 +80,17 @@ Pose path_pose(const std::vector<Keyframe>& path, double t) {
     return interpolate(Pose::from(k0.position, k0.orientation), Pose::from(k1.position, k1.orientation), u);
 }
 
+std::pair<Eigen::Vector3d, Eigen::Vector3d> path_velocity(const std::vector<Keyframe>& path, double t) {
+    const std::pair<Eigen::Vector3d, Eigen::Vector3d> still{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    if (path.size() < 2 || t < path.front().t || t >= path.back().t) return still;
+    const auto next = std::upper_bound(path.begin(), path.end(), t, [](double v, const Keyframe& k) { return v < k.t; });
+    const Keyframe &k1 = *next, &k0 = *(next - 1);
+    const double span = k1.t - k0.t;
+    // Slerp turns at a constant rate about a fixed world axis: that of q1 q0^-1, the shorter way.
+    Eigen::Quaterniond turn = unit_quaternion(k1.orientation) * unit_quaternion(k0.orientation).conjugate();
+    if (turn.w() < 0) turn.coeffs() = -turn.coeffs();
+    const Eigen::AngleAxisd aa(turn);
+    return {(k1.position - k0.position) / span, aa.axis() * (aa.angle() / span)};
+}
+
 } // namespace spt

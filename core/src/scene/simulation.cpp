@@ -108,6 +108,14 @@ void Simulation::pose_needed(const std::vector<CandidatePair>& pairs) {
 
 Simulation::~Simulation() = default;
 
+std::pair<Eigen::Vector3d, Eigen::Vector3d> Simulation::object_velocity(size_t i) const {
+    const SceneObject& o = scene_.objects.at(i);
+    if (!effects_.has(Effect::Motion) || o.motion == MotionKind::Static)
+        return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    if (o.motion == MotionKind::Path) return path_velocity(o.path, steps_ * scene_.dt);
+    return {velocity_[i], angular_[i]};
+}
+
 void Simulation::move(double t1) {
     const double dt = scene_.dt;
     const bool gravity = effects_.has(Effect::Gravity);
