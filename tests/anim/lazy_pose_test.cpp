@@ -242,6 +242,7 @@ TEST(LazyPose, ARefusedPoseLeavesThePendingOneWhole) {
     v = bar().mesh->imported.mesh.positions;
     v[3].x() = NAN;
     EXPECT_THROW(lazy.pose_lazily_on(v), Error);
+    EXPECT_THROW(lazy.pose_on(v), Error); // a full pose refused leaves the pending one too
     lazy.settle();
     full.pose(&bar_clip(), 0.4);
     expect_same_layout(lazy.model().tree(), full.model().tree());

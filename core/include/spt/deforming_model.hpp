@@ -129,6 +129,9 @@ private:
     mutable bool vertex_normals_stale_ = false;
     // Samples, layout and triangles to vertices_.
     void follow();
+    // `positions` into vertices_, after checking their count and that they are finite (Error
+    // otherwise, nothing changed).
+    void take_vertices(const std::vector<Eigen::Vector3d>& positions);
     // Sample i's point and normal at vertices_ into points_ and normals_; `snapped` its normal as
     // stored, or null (the bind's).
     void place_sample(size_t i, const Eigen::Vector3f* snapped);

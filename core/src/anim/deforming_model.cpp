@@ -59,23 +59,28 @@ DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const Ani
 
 void DeformingModel::pose(const Clip* clip, double time) {
     if (!clip) return pose_on(mesh_->imported.mesh.positions);
-    pose_vertices(*mesh_, clip, time, vertices_); // into the model's own buffer: no allocation a pose
-    follow();
+    pose_vertices(*mesh_, clip, time, next_vertices_);
+    pose_on(next_vertices_);
 }
 
 void DeformingModel::pose_on(const std::vector<Eigen::Vector3d>& positions) {
+    take_vertices(positions);
+    follow();
+}
+
+void DeformingModel::take_vertices(const std::vector<Eigen::Vector3d>& positions) {
     const TriangleMesh& m = mesh_->imported.mesh;
     if (positions.size() != m.positions.size())
         throw Error(ErrorKind::Usage, m.name + ": a pose of " + std::to_string(positions.size()) +
                                           " vertices for a mesh of " + std::to_string(m.positions.size()));
-    vertices_.assign(positions.begin(), positions.end());
-    follow();
+    // Checked before anything changes: a pending lazy pose reads vertices_ until it is settled.
+    for (const Eigen::Vector3d& p : positions)
+        if (!p.allFinite()) throw_bad_input(m.name, "a posed vertex is not finite");
+    if (&positions != &vertices_) vertices_.assign(positions.begin(), positions.end());
 }
 
 void DeformingModel::follow() {
     const TriangleMesh& m = mesh_->imported.mesh;
-    for (const Eigen::Vector3d& p : vertices_)
-        if (!p.allFinite()) throw_bad_input(m.name, "a posed vertex is not finite");
     // Degenerate faces as import decided them, at the bind pose's size.
     detail::angle_weighted_normals(vertices_, m.triangles, detail::degenerate_twice_area(diagonal_), m.is_copy,
                                    vertex_normals_, normal_valid_);
@@ -135,22 +140,16 @@ void DeformingModel::pose_lazily(const Clip* clip, double time) {
 }
 
 void DeformingModel::pose_lazily_on(const std::vector<Eigen::Vector3d>& positions) {
-    const TriangleMesh& m = mesh_->imported.mesh;
-    if (positions.size() != m.positions.size())
-        throw Error(ErrorKind::Usage, m.name + ": a pose of " + std::to_string(positions.size()) +
-                                          " vertices for a mesh of " + std::to_string(m.positions.size()));
-    // Checked before anything changes: a pending pose reads vertices_ until it is settled.
-    for (const Eigen::Vector3d& p : positions)
-        if (!p.allFinite()) throw_bad_input(m.name, "a posed vertex is not finite");
+    take_vertices(positions);
     if (!lazy_checked_) {
         std::vector<double> offset(source_.size());
         for (size_t i = 0; i < source_.size(); ++i)
             offset[i] = (bind_points_[i].cast<double>() - (bind_at_[i] - model_.origin())).norm() +
                         1e-6 * bind_points_[i].cast<double>().norm();
-        lazy_layout_ = detail::make_lazy_layout(model_.tree(), m, source_, barycentric_, offset, lazy_region_);
+        lazy_layout_ = detail::make_lazy_layout(model_.tree(), mesh_->imported.mesh, source_, barycentric_, offset,
+                                                lazy_region_);
         lazy_checked_ = true;
     }
-    vertices_.assign(positions.begin(), positions.end());
     if (!lazy_layout_) return follow();
     if (!lazy_ || lazy_.use_count() > 1 || lazy_->owner() != this)
         lazy_ = std::make_shared<detail::LazyPose>(this, lazy_layout_);
