@@ -209,6 +209,25 @@ TEST(LazyPose, ACopyOrAnotherKindOfQueryPosesTheRestFirst) {
     EXPECT_EQ(a.distance, b.distance);
 }
 
+TEST(LazyPose, WithoutTrianglesAQueryWithSolidsLeavesTheRestUnposed) {
+    // No triangles, no containment (as on a full pose): nothing to pose the rest for, so walks
+    // with solids on several threads never settle the model under one another.
+    DeformingModel lazy = small_regions(false), full(bar().doc, bar().mesh, "", false);
+    lazy.pose_lazily(&bar_clip(), 0.5);
+    full.pose(&bar_clip(), 0.5);
+    EXPECT_FALSE(lazy.model().has_mesh());
+    QueryScratch scratch;
+    QueryOptions o; // solids on
+    const Pose near = Pose::from(Eigen::Vector3d(-0.5, 0.45, 0), Eigen::Quaterniond::Identity()); // over the bar, apart
+    const QueryResult r = collide_relative(lazy.model(), probe(), near, o, scratch);
+    EXPECT_FALSE(r.collide);
+    EXPECT_EQ(r.collide, collide_relative(full.model(), probe(), near, o, scratch).collide);
+    size_t differ = 0;
+    for (size_t i = 0; i < full.model().tree().nodes().size(); ++i)
+        differ += lazy.model().tree().nodes()[i].bv_radius != full.model().tree().nodes()[i].bv_radius;
+    EXPECT_GT(differ, 0u); // still pending: the balls near the root are the covers'
+}
+
 TEST(LazyPose, SeveralThreadsMayWalkOneLazilyPosedModel) {
     DeformingModel lazy = small_regions(), full(bar().doc, bar().mesh);
     const std::vector<Pose> poses = probe_poses(24, 7);

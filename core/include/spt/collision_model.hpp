@@ -3,7 +3,7 @@
 /// `exact` level, the mesh's triangles assigned to the tree's active nodes.
 /// Immutable after construction (a DeformingModel poses its own); share one model between threads
 /// freely. A lazily posed one (DeformingModel::pose_lazily) takes `spheres` queries from several
-/// threads at once, and anything that poses the rest of it only alone.
+/// threads at once (see there), and anything that poses the rest of it only alone.
 #include "spt/compact_tree.hpp"
 #include "spt/mesh.hpp"
 #include "spt/spt_file.hpp"

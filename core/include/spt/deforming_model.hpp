@@ -55,8 +55,9 @@ public:
     /// now from the posed vertices, and each part of the tree below is posed when a `spheres`
     /// query first descends into it. Every other query, and a copy of the model, poses the rest
     /// first, so answers are those of pose() (the pruning near the root is looser). Several
-    /// threads may run `spheres` queries on it at once; what poses the rest must run alone. A
-    /// tree of two-sided spheres is posed in full.
+    /// threads may run `spheres` queries on it at once (with `solids` only on a model without
+    /// triangles: containment asks the posed triangles and poses the rest); what poses the rest
+    /// must run alone. A tree of two-sided spheres is posed in full.
     void pose_lazily(const Clip* clip, double time);
     /// As pose_lazily, on the mesh's welded vertices at `positions` (object frame, model units).
     void pose_lazily_on(const std::vector<Eigen::Vector3d>& positions);

@@ -198,6 +198,9 @@ void LazyPose::begin() {
     const Eigen::Vector3d c(root.center[0], root.center[1], root.center[2]);
     model.extent_ = c.norm() + root.bv_radius;
     model.reach_ = (c + origin).norm() + root.bv_radius;
+    // Without the triangles a pose has no exact level and no containment, as a full pose has
+    // none: nothing then needs the rest posed but an explicit settle.
+    if (!owner_->triangles_) model.exact_.reset(), model.solid_.reset();
     model.pending_.pose = this;
 }
 

@@ -304,8 +304,10 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
     if (options.level != QueryLevel::Exact) {
         run.run();
         if (deep) *deep = run.stopped_deep;
+        // (A lazily posed model without triangles has no containment, as a full pose has none.)
+        auto posed_triangles_needed = [](const CollisionModel& m) { return detail::pending_of(m) && m.has_mesh(); };
         if (lazy && options.solids && !run.stopped_deep && !run.res.collide && run.roots_overlap &&
-            (detail::pending_of(a) || detail::pending_of(b))) {
+            (posed_triangles_needed(a) || posed_triangles_needed(b))) {
             // Containment asks the posed triangles: pose the rest and ask again.
             detail::settle(a), detail::settle(b);
             return relative_query(a, b, b_in_a, options, scratch, deep);
