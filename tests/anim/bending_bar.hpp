@@ -12,6 +12,19 @@ namespace spt::bending {
 
 // A bar 2 long along x (0.4 thick), subdivided, whose right half turns about z at x = 0 with
 // joint "tip"; vertices within 0.25 of x = 0 blend the two joints.
+// Clip "bend": rig node 1 turns by 90 degrees about z over one second.
+inline Clip quarter_turn() {
+    Clip c;
+    c.name = "bend", c.duration = 1;
+    NodeChannel ch;
+    ch.node = 1;
+    ch.rotation.times = {0, 1};
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+    ch.rotation.values = {Eigen::Vector4d(0, 0, 0, 1), Eigen::Vector4d(q.x(), q.y(), q.z(), q.w())};
+    c.nodes = {ch};
+    return c;
+}
+
 inline std::shared_ptr<AnimatedMesh> bending_bar() {
     auto m = std::make_shared<AnimatedMesh>();
     m->imported = meshgen::prepare(meshgen::box(2, 0.4, 0.4, 8), "bar.obj");
@@ -35,15 +48,7 @@ inline std::shared_ptr<AnimatedMesh> bending_bar() {
         in.weight = {1 - w, w, 0, 0};
         rig.influences.push_back(in);
     }
-    Clip bend;
-    bend.name = "bend", bend.duration = 1;
-    NodeChannel ch;
-    ch.node = 1;
-    ch.rotation.times = {0, 1};
-    const Eigen::Quaterniond q(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-    ch.rotation.values = {Eigen::Vector4d(0, 0, 0, 1), Eigen::Vector4d(q.x(), q.y(), q.z(), q.w())};
-    bend.nodes = {ch};
-    m->clips = {bend};
+    m->clips = {quarter_turn()};
     return m;
 }
 

@@ -1,4 +1,5 @@
 // Linear blend skinning and morph targets on rigs made here (core/src/anim/pose.cpp).
+#include "bending_bar.hpp"
 #include "spt/animation.hpp"
 #include "spt/error.hpp"
 #include <gtest/gtest.h>
@@ -35,19 +36,6 @@ AnimatedMesh bar(double w_tip) {
     return m;
 }
 
-// A clip turning the tip by 90 degrees about z over one second.
-Clip bend() {
-    Clip c;
-    c.name = "bend";
-    c.duration = 1;
-    NodeChannel ch;
-    ch.node = 1;
-    ch.rotation.times = {0, 1};
-    const Eigen::Quaterniond q(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-    ch.rotation.values = {Eigen::Vector4d(0, 0, 0, 1), Eigen::Vector4d(q.x(), q.y(), q.z(), q.w())};
-    c.nodes = {ch};
-    return c;
-}
 
 TEST(Skinning, TheRestPoseOfABindPoseRigIsTheMesh) {
     const AnimatedMesh m = bar(0.5);
@@ -58,7 +46,7 @@ TEST(Skinning, TheRestPoseOfABindPoseRigIsTheMesh) {
 
 TEST(Skinning, AVertexOnOneJointTurnsRigidlyWithIt) {
     const AnimatedMesh m = bar(1.0);
-    const Clip c = bend();
+    const Clip c = bending::quarter_turn();
     std::vector<Eigen::Vector3d> p;
     pose_vertices(m, &c, 1.0, p);
     EXPECT_TRUE(p[0].isApprox(Eigen::Vector3d(1, 0.5, 0), 1e-12)); // half a unit past the tip, turned up
@@ -66,7 +54,7 @@ TEST(Skinning, AVertexOnOneJointTurnsRigidlyWithIt) {
 
 TEST(Skinning, BlendedWeightsAverageTheJointsTransformsLinearly) {
     const AnimatedMesh m = bar(0.25);
-    const Clip c = bend();
+    const Clip c = bending::quarter_turn();
     std::vector<Eigen::Vector3d> p;
     pose_vertices(m, &c, 1.0, p);
     // 0.75 of the root's (1.5, 0, 0) and 0.25 of the tip's (1, 0.5, 0): linear blend, not a turn.
@@ -80,7 +68,7 @@ TEST(Skinning, MorphTargetsApplyBeforeTheSkin) {
     up.vertices = {0};
     up.delta = {Eigen::Vector3d(0.5, 0, 0)};
     m.rig.morph_targets = {up};
-    Clip c = bend();
+    Clip c = bending::quarter_turn();
     MorphChannel mc;
     mc.first_target = 0, mc.target_count = 1;
     mc.weights.times = {0, 1};
@@ -106,7 +94,7 @@ TEST(Skinning, ADefaultMorphWeightHoldsWithoutAClip) {
 
 TEST(Skinning, AClipIsFoundByNameOrIndexAndAMissingOneNamesThoseThereAre) {
     AnimatedMesh m = bar(1.0);
-    m.clips = {bend(), bend()};
+    m.clips = {bending::quarter_turn(), bending::quarter_turn()};
     m.clips[1].name = "walk";
     EXPECT_EQ(m.find_clip("walk"), 1u);
     EXPECT_EQ(m.find_clip("0"), 0u);

@@ -130,6 +130,8 @@ private:
     mutable bool vertex_normals_stale_ = false;
     // Samples, layout and triangles to vertices_.
     void follow();
+    // The mesh's vertices at `time` seconds of `clip` (null: the bind pose), in next_vertices_.
+    const std::vector<Eigen::Vector3d>& clip_vertices(const Clip* clip, double time);
     // `positions` into vertices_, after checking their count and that they are finite (Error
     // otherwise, nothing changed).
     void take_vertices(const std::vector<Eigen::Vector3d>& positions);

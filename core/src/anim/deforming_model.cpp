@@ -57,10 +57,12 @@ DeformingModel::DeformingModel(const SptDocument& doc, std::shared_ptr<const Ani
         if (s.is_face_sample(i)) face_sampled_[s.source_index(i)] = 1;
 }
 
-void DeformingModel::pose(const Clip* clip, double time) {
-    if (!clip) return pose_on(mesh_->imported.mesh.positions);
+void DeformingModel::pose(const Clip* clip, double time) { pose_on(clip_vertices(clip, time)); }
+
+const std::vector<Eigen::Vector3d>& DeformingModel::clip_vertices(const Clip* clip, double time) {
+    if (!clip) return mesh_->imported.mesh.positions;
     pose_vertices(*mesh_, clip, time, next_vertices_);
-    pose_on(next_vertices_);
+    return next_vertices_;
 }
 
 void DeformingModel::pose_on(const std::vector<Eigen::Vector3d>& positions) {
@@ -133,11 +135,7 @@ void DeformingModel::place_sample(size_t i, const Eigen::Vector3f* snapped) {
     normals_[i] = snapped ? *snapped : bind_normals_[i];
 }
 
-void DeformingModel::pose_lazily(const Clip* clip, double time) {
-    if (!clip) return pose_lazily_on(mesh_->imported.mesh.positions);
-    pose_vertices(*mesh_, clip, time, next_vertices_);
-    pose_lazily_on(next_vertices_);
-}
+void DeformingModel::pose_lazily(const Clip* clip, double time) { pose_lazily_on(clip_vertices(clip, time)); }
 
 void DeformingModel::pose_lazily_on(const std::vector<Eigen::Vector3d>& positions) {
     take_vertices(positions);

@@ -22,24 +22,22 @@ struct Checker {
         if (!value.is_number_integer() || value.get<int64_t>() < 0 || uint64_t(value.get<int64_t>()) >= count(array))
             fail(where, "is not an index into '" + std::string(array) + "' (" + std::to_string(count(array)) + " of them)");
     }
+    // Member `key` of `object`, or null; `required`: it must be there.
+    const json* member(const json& object, const char* key, const std::string& where, bool required) const {
+        const json* v = GltfFile::member(object, key);
+        if (!v && required) fail(where, "has no '" + std::string(key) + "'");
+        return v;
+    }
     // Member `key` of `object`, if present, is an index into `array`; `required`: it must be present.
     void member_index(const json& object, const char* key, const char* array, const std::string& where,
                       bool required = false) const {
-        const json* v = GltfFile::member(object, key);
-        if (!v) {
-            if (required) fail(where, "has no '" + std::string(key) + "'");
-            return;
-        }
-        index(*v, array, where + "/" + key);
+        if (const json* v = member(object, key, where, required)) index(*v, array, where + "/" + key);
     }
     // Member `key` of `object`, if present, is an array of indices into `array`.
     void member_indices(const json& object, const char* key, const char* array, const std::string& where,
                         bool required = false) const {
-        const json* v = GltfFile::member(object, key);
-        if (!v) {
-            if (required) fail(where, "has no '" + std::string(key) + "'");
-            return;
-        }
+        const json* v = member(object, key, where, required);
+        if (!v) return;
         if (!v->is_array()) fail(where + "/" + key, "is not an array");
         for (size_t i = 0; i < v->size(); ++i) index((*v)[i], array, where + "/" + key + "/" + std::to_string(i));
     }

@@ -71,13 +71,14 @@ double CompactTree::farthest_below(uint32_t i, const Eigen::Vector3d& from) cons
     int top = 0;
     stack[top++] = i;
     while (top > 0) {
-        const CompactNode& n = nodes_[stack[--top]];
+        const uint32_t j = stack[--top];
+        const CompactNode& n = nodes_[j];
         if (n.is_active()) {
             for (uint32_t k = n.first; k < n.first + n.count; ++k)
                 best = std::max(best, (sphere_center(n, k).cast<double>() - from).norm() + double(n.ss_radius));
             continue;
         }
-        const uint32_t child[2] = {uint32_t(&n - nodes_.data()) + 1, n.first};
+        const uint32_t child[2] = {j + 1, n.first};
         double reach[2];
         for (int h = 0; h < 2; ++h) {
             const CompactNode& c = nodes_[child[h]];
