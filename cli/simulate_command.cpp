@@ -137,7 +137,7 @@ Action add_simulate_command(CLI::App& app) {
     c->add_option("scene", a->scene, "Scene file (JSON, docs/scenes.md)")->required();
     c->add_option("--steps", a->steps, "Steps to run (default: the scene's 'steps')")->check(CLI::Range(int64_t(0), int64_t(1000000000)));
     c->add_option("--effects", a->effects,
-                  "Comma-separated effects replacing the scene's: motion,gravity,contacts,depth,pairs,response,ccd,exact,deform")
+                  "Comma-separated effects replacing the scene's: motion,gravity,contacts,depth,pairs,response,ccd,exact,deform,dynamics")
         ->each([a](const std::string&) { a->effects_given = true; });
     c->add_option("-o,--output", a->output, "Per-step CSV (default: stdout)");
     c->add_option("--contacts", a->contacts, "CSV of every colliding object pair of every step");

@@ -1,6 +1,9 @@
 #pragma once
 // Scenes for tests: small meshes written to a temporary folder and scene JSON beside them.
 #include "meshgen.hpp"
+#include "spt/error.hpp"
+#include "spt/scene.hpp"
+#include <gtest/gtest.h>
 #include "test_support.hpp"
 #include <fstream>
 #include <string>
@@ -31,5 +34,16 @@ public:
 private:
     TempDir dir_;
 };
+
+/// The message of the Error(BadInput) that parsing scene `text` (as "bad.json") throws; empty if it parses.
+inline std::string parse_refusal(const std::string& text) {
+    try {
+        parse_scene(text, "bad.json", ".");
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+        return e.what();
+    }
+    return {};
+}
 
 } // namespace spt::test

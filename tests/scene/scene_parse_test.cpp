@@ -11,16 +11,7 @@ namespace {
 
 using namespace spt;
 
-// The message of the Error(BadInput) parsing `text` throws; empty if it parses.
-std::string refusal(const std::string& text) {
-    try {
-        parse_scene(text, "bad.json", ".");
-    } catch (const Error& e) {
-        EXPECT_EQ(e.kind(), ErrorKind::BadInput);
-        return e.what();
-    }
-    return {};
-}
+std::string refusal(const std::string& text) { return test::parse_refusal(text); }
 
 const char* kIssueExample = R"({
   "spt_scene": 1, "dt": 0.01, "steps": 300, "gravity": [0, -9.81, 0],
@@ -127,8 +118,8 @@ TEST(SceneParse, NegativeOrZeroDtIsRefused) {
 TEST(SceneParse, UnknownFieldsAreRefusedWherever) {
     EXPECT_NE(refusal(R"({"spt_scene": 1, "objects": [], "colour": 1})").find("at /colour: unknown field 'colour'"),
               std::string::npos);
-    const std::string m = refusal(R"({"spt_scene": 1, "objects": [{"name": "a", "model": "a.obj", "mass": 2}]})");
-    EXPECT_NE(m.find("at /objects/0/mass: unknown field 'mass'"), std::string::npos) << m;
+    const std::string m = refusal(R"({"spt_scene": 1, "objects": [{"name": "a", "model": "a.obj", "colour": 2}]})");
+    EXPECT_NE(m.find("at /objects/0/colour: unknown field 'colour'"), std::string::npos) << m;
     EXPECT_NE(refusal(R"({"spt_scene": 1, "objects": [], "response": {"friction": 1}})").find("/response/friction"),
               std::string::npos);
 }
@@ -233,19 +224,23 @@ TEST(SceneSchema, ParserAcceptsEveryFieldTheSchemaListsAndTheSchemaListsEveryEff
     };
     nlohmann::json scene = nlohmann::json::object();
     for (auto& [k, v] : schema["properties"].items())
-        if (k != "objects" && k != "response") scene[k] = sample(v);
-    scene["response"] = nlohmann::json::object();
-    for (auto& [k, v] : schema["properties"]["response"]["properties"].items()) scene["response"][k] = sample(v);
+        if (k != "objects" && k != "response" && k != "dynamics") scene[k] = sample(v);
+    for (const char* block : {"response", "dynamics"}) {
+        scene[block] = nlohmann::json::object();
+        for (auto& [k, v] : schema["properties"][block]["properties"].items()) scene[block][k] = sample(v);
+    }
     nlohmann::json object = {{"name", "o"}, {"model", "o.obj"}, {"tree", "t"}, {"mesh", "o.gltf"}};
+    // Without a default: mass (it excludes density), friction, restitution and rolling friction (unset: the scene's).
+    object["friction"] = 0.3, object["restitution"] = 0.1, object["rolling_friction"] = 0.01;
     for (auto& [k, v] : schema["$defs"]["object"]["properties"].items())
-        if (!object.contains(k) && k != "path") object[k] = sample(v);
+        if (!object.contains(k) && k != "path" && k != "mass") object[k] = sample(v);
     nlohmann::json key = nlohmann::json::object();
     for (auto& [k, v] : schema["$defs"]["keyframe"]["properties"].items()) key[k] = k == "t" ? nlohmann::json(0) : sample(v);
     nlohmann::json on_path = {{"name", "p"}, {"model", "p.obj"}, {"path", {key}}};
     scene["objects"] = {object, on_path};
     EXPECT_NO_THROW(parse_scene(scene.dump(), "schema.json", "")) << scene.dump();
     // And refuses a field the schema does not list, at every level.
-    for (const char* where : {"", "/response", "/objects/0", "/objects/1/path/0"}) {
+    for (const char* where : {"", "/response", "/dynamics", "/objects/0", "/objects/1/path/0"}) {
         nlohmann::json bad = scene;
         bad[nlohmann::json::json_pointer(where)]["not_in_schema"] = 1;
         EXPECT_NE(refusal(bad.dump()).find(std::string(where) + "/not_in_schema"), std::string::npos) << where;

@@ -177,6 +177,115 @@ void pile(const fs::path& dir) {
     write_scene(dir, "pile.json", s);
 }
 
+// Effect dynamics: the scenes its targets are measured on (docs/scenes.md, "Dynamics").
+json dynamics_header(double dt, int steps) { return header(dt, steps, {"motion", "gravity", "contacts", "dynamics"}); }
+
+json quaternion_about_z(double degrees) {
+    const double h = 0.5 * degrees * M_PI / 180;
+    return json::array({std::cos(h), 0.0, 0.0, std::sin(h)});
+}
+
+// A ball of radius 0.5 dropped from 1 above a floor: restitution 0.8, no friction; the first
+// rebound's apex is 0.8^2 of the drop.
+void bounce(const fs::path& dir) {
+    json s = dynamics_header(0.005, 400);
+    s["dynamics"] = {{"friction", 0}, {"restitution", 0.8}};
+    json ball = object("ball", "../meshes/sphere.stl");
+    ball["position"] = vec(0, 1.5, 0);
+    s["objects"] = {fixed("floor", "floor.obj", vec(0, -0.25, 0)), ball};
+    write_scene(dir, "bounce.json", s);
+}
+
+// Two half-unit cubes at rest on a static 20-degree slope, one with friction 0.6 (it holds:
+// tan 20 = 0.36), one with 0.2 (it slides at g (sin 20 - 0.2 cos 20)). The slope sets no friction of
+// its own, so each cube's applies to its contact.
+void slope(const fs::path& dir) {
+    const double theta = 20 * M_PI / 180;
+    const Eigen::Vector3d along(std::cos(theta), std::sin(theta), 0), up(-std::sin(theta), std::cos(theta), 0);
+    meshgen::write_obj(meshgen::box(8, 0.4, 3, 8), (dir / "ramp.obj").string());
+    json s = dynamics_header(0.01, 200);
+    json ramp = fixed("slope", "ramp.obj", vec(0, 0, 0));
+    ramp["orientation"] = quaternion_about_z(20);
+    json objects = json::array({ramp});
+    const double friction[2] = {0.6, 0.2};
+    for (int k = 0; k < 2; ++k) {
+        json cube = object(k == 0 ? "holds" : "slides", "../meshes/box.ply");
+        cube["scale"] = 0.5;
+        cube["position"] = vec3(1.0 * along + (0.2 + 0.25 + 0.001) * up + Eigen::Vector3d(0, 0, k == 0 ? -0.75 : 0.75));
+        cube["orientation"] = quaternion_about_z(20);
+        cube["friction"] = friction[k];
+        objects.push_back(cube);
+    }
+    s["objects"] = objects;
+    write_scene(dir, "slope.json", s);
+}
+
+// Five unit cubes stacked on a floor, a millimetre apart.
+void stack(const fs::path& dir) {
+    json s = dynamics_header(0.01, 500);
+    json objects = json::array({fixed("floor", "floor.obj", vec(0, -0.25, 0))});
+    for (int k = 0; k < 5; ++k) {
+        json cube = object("box" + std::to_string(k), "../meshes/box.ply");
+        cube["position"] = vec(0, 0.5 + 1.001 * k + 0.001, 0);
+        objects.push_back(cube);
+    }
+    s["objects"] = objects;
+    write_scene(dir, "stack.json", s);
+}
+
+// 300 balls of radius 0.1 dropped into an open-topped box (a floor and four walls, 3 x 3 inside).
+// The balls are sampled at their vertices only (162 spheres; a contact patch then holds a few
+// sphere pairs, not thousands); their mesh beside gives their mass and inertia.
+void balls_in_box(const fs::path& dir) {
+    const meshgen::RawMesh ball_mesh = meshgen::icosphere(0.1, 2);
+    meshgen::write_obj(ball_mesh, (dir / "ball.obj").string());
+    ConvertOptions coarse;
+    coarse.auto_tolerance = false;
+    save_spt(make_document(import_mesh((dir / "ball.obj").string()).mesh, coarse), (dir / "ball.spt").string());
+    meshgen::write_obj(meshgen::box(3.4, 1.0, 0.2, 4), (dir / "bin_wall.obj").string());
+    std::mt19937 rng(300);
+    json s = dynamics_header(0.01, 300);
+    json objects = json::array({fixed("floor", "floor.obj", vec(0, -0.25, 0))});
+    const double side[4][2] = {{0, -1.6}, {0, 1.6}, {-1.6, 0}, {1.6, 0}};
+    for (int k = 0; k < 4; ++k) {
+        json wall = fixed("wall" + std::to_string(k), "bin_wall.obj", vec(side[k][0], 0.5, side[k][1]));
+        if (k >= 2) wall["orientation"] = json::array({std::sqrt(0.5), 0.0, std::sqrt(0.5), 0.0});
+        objects.push_back(wall);
+    }
+    for (int i = 0; i < 300; ++i) {
+        json ball = object("ball" + std::to_string(i), "ball.spt");
+        ball["mesh"] = "ball.obj";
+        const Eigen::Vector3d jitter = xyz(rng, -0.02, 0.02);
+        ball["position"] = vec3(Eigen::Vector3d(0.25 * (i % 10) - 1.125, 0.3 + 0.25 * (i / 100), 0.25 * (i / 10 % 10) - 1.125) + jitter);
+        ball["velocity"] = vec3(xyz(rng, -0.5, 0.5));
+        objects.push_back(ball);
+    }
+    s["objects"] = objects;
+    write_scene(dir, "balls_in_box.json", s);
+}
+
+// The pile (pile.json's objects and velocities) with dynamics: masses for its .spt pebbles
+// (their icospheres' volumes at density 1), friction 0.8 and rolling friction 0.2 so that it
+// heaps, on a floor wide enough for the heap (24 x 24).
+void pile_dynamics(const fs::path& dir) {
+    std::ifstream in(dir / "pile.json");
+    json s = json::parse(in);
+    s["effects"] = json::array({"motion", "gravity", "contacts", "dynamics"});
+    s.erase("response");
+    s["dynamics"] = {{"friction", 0.8}, {"rolling_friction", 0.2}};
+    json& objects = s["objects"];
+    objects[0]["scale"] = 3;
+    objects[0]["position"] = vec(0, -0.75, 0);
+    for (size_t i = 1; i < objects.size(); ++i) {
+        const double r = objects[i]["model"] == "grit.spt" ? 0.3 : 0.4;
+        objects[i]["mass"] = std::round(4.0 / 3.0 * M_PI * r * r * r * 1000) / 1000; // a sphere's, to 3 decimals
+    }
+    // The fields in pile.json's order, "dynamics" before the objects.
+    json out;
+    for (const char* key : {"spt_scene", "dt", "steps", "effects", "dynamics", "objects"}) out[key] = s[key];
+    write_scene(dir, "pile_dynamics.json", out);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -193,6 +302,11 @@ int main(int argc, char** argv) {
         thin_wall(dir);
         box_settle(dir, floor);
         pile(dir);
+        bounce(dir);
+        slope(dir);
+        stack(dir);
+        balls_in_box(dir);
+        pile_dynamics(dir);
     } catch (const Error& e) {
         std::cerr << e.what() << "\n";
         return spt::cli::exit_code(e.kind());

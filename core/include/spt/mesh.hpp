@@ -43,6 +43,17 @@ struct TriangleMesh {
     uint64_t content_hash() const;
 };
 
+/// Volume, centre of mass and inertia of a closed mesh at density 1 (mass_properties).
+struct SolidMass {
+    double volume = 0;                                 ///< model units^3
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();   ///< centre of mass, object frame
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< about the centre, object axes, per unit density
+};
+
+/// Mass properties of the solid a closed mesh bounds (divergence theorem over its triangles; later
+/// copies of a face left out). Throws Error(BadInput) naming the mesh if it encloses no positive volume.
+SolidMass mass_properties(const TriangleMesh& mesh);
+
 /// What import found and fixed. Counts refer to the welded mesh.
 struct ImportReport {
     size_t file_vertices = 0;         ///< vertices before welding (all meshes of the file)

@@ -4,6 +4,7 @@
 /// seconds. Scene files are JSON; JSON stays inside the library.
 #include "spt/animation.hpp"
 #include "spt/collision_model.hpp"
+#include "spt/mesh.hpp"
 #include "spt/pose.hpp"
 #include "spt/query.hpp"
 #include "spt/response.hpp"
@@ -26,10 +27,11 @@ enum class Effect : uint8_t {
     Ccd,      ///< time of impact within the step for moving pairs (needs contacts and motion)
     Exact,    ///< contacts confirmed by the exact level (needs contacts)
     Deform,   ///< animated objects take their clip's pose at each step's time (docs/deforming.md)
+    Dynamics, ///< rigid-body dynamics on sampling-sphere contact manifolds (needs contacts and motion)
 };
 
 /// Number of effects in the closed list.
-constexpr int kEffectCount = 9;
+constexpr int kEffectCount = 10;
 
 /// The name of an effect as scene files and `--effects` spell it.
 const char* effect_name(Effect e);
@@ -52,7 +54,8 @@ private:
     uint32_t bits_ = 0;
 };
 
-/// Parses effect names. An unknown name, or an effect without one it needs, throws
+/// Parses effect names. An unknown name, an effect without one it needs, or two that exclude
+/// each other (`response` and `dynamics`, `ccd` and `dynamics`, `exact` and `dynamics`) throws
 /// Error(BadInput) naming both, prefixed with `where` (a file and JSON path, or an option).
 EffectSet parse_effects(const std::vector<std::string>& names, const std::string& where);
 
@@ -91,6 +94,14 @@ struct AnimationSettings {
     bool loop = true;       ///< wrap into the clip's duration
 };
 
+/// How `dynamics` solves contacts (top-level "dynamics"); objects may override friction and restitution.
+struct DynamicsSettings {
+    double friction = 0.5;   ///< Coulomb friction coefficient, >= 0
+    double restitution = 0;  ///< 0..1: share of the approaching normal speed kept after a contact
+    double rolling_friction = 0; ///< >= 0, model units: torque against rolling = this x normal force (Bullet's)
+    int iterations = 10;     ///< solver iterations a step, 1..1000
+};
+
 /// One object of a scene.
 struct SceneObject {
     std::string name;         ///< unique within the scene
@@ -109,6 +120,14 @@ struct SceneObject {
     size_t clip = 0;                ///< index of its clip in animated_mesh->clips (load_models)
     std::shared_ptr<const AnimatedMesh> animated_mesh; ///< its mesh, rig and clips (animated, load_models)
     std::shared_ptr<const SptDocument> document;       ///< the document its model came from (animated, load_models)
+    double mass = 0;     ///< objects[].mass, > 0; 0: from `density` and the closed mesh
+    double density = 1;  ///< objects[].density, > 0: mass = density x volume of a closed mesh
+    double friction = -1;    ///< objects[].friction (>= 0); < 0: not set, the scene's applies
+    double restitution = -1; ///< objects[].restitution (0..1); < 0: not set, the scene's applies
+    double rolling_friction = -1; ///< objects[].rolling_friction (>= 0); < 0: not set, the scene's applies
+    /// The closed mesh's volume, centre of mass and inertia (load_models); null for an open mesh or a
+    /// `.spt` model without a mesh.
+    std::shared_ptr<const SolidMass> solid;
     /// Broad-phase sphere in the object frame: holds every sampling sphere and, with a mesh,
     /// every triangle of the model (model units).
     Eigen::Vector3d bound_center = Eigen::Vector3d::Zero();
@@ -129,6 +148,7 @@ struct Scene {
     Eigen::Vector3d gravity{0, -9.81, 0}; ///< model units / s^2
     EffectSet effects;  ///< what a simulation computes
     ResponseSettings response; ///< the response rule
+    DynamicsSettings dynamics; ///< the solver's settings (effect dynamics)
     QueryLevel level = QueryLevel::Spheres; ///< level of the contact queries
     std::vector<SceneObject> objects; ///< in file order
 };

@@ -1,9 +1,10 @@
 #pragma once
 /// A stepping simulation of a scene that runs the code of the listed effects only
-/// (docs/scenes.md). Kinematic: objects move by velocities and paths, collisions are
-/// found by the broad phase and sampling-tree queries, and `response` moves objects
-/// back along their motion (paper §3-4-3); it is not a constraint solver. Deterministic
-/// for any number of threads. World frame, model units, seconds.
+/// (docs/scenes.md). Objects move by velocities and paths, collisions are found by the broad
+/// phase and sampling-tree queries; `response` moves objects back along their motion (paper
+/// §3-4-3), or `dynamics` feeds contact manifolds of sampling spheres to Bullet's constraint
+/// solver (masses, friction, restitution, resting contact). Deterministic for any number of
+/// threads. World frame, model units, seconds.
 #include "spt/broad_phase.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/query_scratch.hpp"
@@ -13,6 +14,9 @@
 #include <vector>
 
 namespace spt {
+namespace detail {
+class DynamicsWorld;
+}
 
 /// Exact counts and times of one step; a stage that is off leaves its fields 0.
 struct StepCounters {
@@ -30,7 +34,16 @@ struct StepCounters {
     int64_t ns_ccd = 0;           ///< nanoseconds of the continuous queries
     int64_t ns_response = 0;      ///< nanoseconds of the response
     int64_t ns_deform = 0;        ///< nanoseconds of posing the animated objects (deform)
-    int64_t ns_dynamics = 0;      ///< nanoseconds of rigid-body dynamics (0 until scenes have dynamics)
+    int64_t ns_dynamics = 0;      ///< nanoseconds of the rigid-body solver and integration (dynamics)
+};
+
+/// One point of a contact manifold (effect dynamics).
+struct ContactPoint {
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< world frame, on b's surface
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitX(); ///< world frame, unit, from a towards b
+    double depth = 0;      ///< penetration along the normal, model units; < 0: apart by that much (speculative)
+    double impulse = 0;    ///< normal impulse the solver applied this step, mass x model units / s
+    int age = 0;           ///< steps the point has been kept (0: new this step; the solver warm-starts the others)
 };
 
 /// One colliding object pair of a step.
@@ -46,6 +59,9 @@ struct PairContact {
     bool has_toi = false;   ///< toi is set (effect ccd)
     double toi = 1;         ///< time of impact as a fraction of the step, [0, 1]
     std::vector<SpherePair> pairs; ///< every overlapping sphere pair (effect pairs), spheres of a's and b's trees
+    /// Effect dynamics: the pair's contact manifold after the step, at most 4 points (deepest, then
+    /// spread to span the contact); the pair is listed while it has points.
+    std::vector<ContactPoint> manifold;
 };
 
 /// What one step did.
@@ -96,6 +112,13 @@ public:
     std::pair<Eigen::Vector3d, Eigen::Vector3d> object_velocity(size_t i) const;
     /// Broad-phase spheres of the last step (swept over the step with ccd).
     const std::vector<BroadSphere>& broad_spheres() const { return spheres_; }
+    /// Kinetic plus potential energy of the moving objects now (mass x model units^2 / s^2):
+    /// sum of m v^2 / 2 + w^T I w / 2 - m g.x over their centres of mass (g: the scene's gravity
+    /// with effect gravity, else none). Objects without a mass (every one without effect dynamics)
+    /// count with mass 1 and no inertia.
+    double mechanical_energy() const;
+    /// Object i's mass (dynamics: its own or density x volume; else 1), mass units.
+    double mass(size_t i) const;
 
 private:
     void move(double t1); // to the poses at time t1, the end of the step (seconds)
@@ -103,6 +126,7 @@ private:
     void pose_needed(const std::vector<CandidatePair>& pairs); // poses the animated objects of these pairs
     void run_contacts(StepCounters& c);
     void respond(StepCounters& c);
+    void step_dynamics(double t1, StepCounters& c); // effect dynamics: the solver's step in place of move and contacts
     bool respond_pair(const PairContact& pc, const std::vector<SpherePair>& start_pairs, QueryScratch& scratch);
     bool dynamic(uint32_t i) const { return scene_.objects[i].motion == MotionKind::Velocity; }
     Scene scene_;
@@ -125,6 +149,7 @@ private:
     // response's first backtrack query when the pair's poses have not changed since.
     std::vector<std::vector<SpherePair>> start_pairs_;
     StepResult result_;
+    std::unique_ptr<detail::DynamicsWorld> dynamics_; // effect dynamics: Bullet's world of the objects
 };
 
 } // namespace spt

@@ -8,7 +8,7 @@ namespace spt {
 namespace {
 
 constexpr const char* kNames[kEffectCount] = {"motion",   "gravity", "contacts", "depth", "pairs",
-                                              "response", "ccd",     "exact",    "deform"};
+                                              "response", "ccd",     "exact",    "deform", "dynamics"};
 
 // What each effect needs: an effect never switches another on silently.
 std::vector<Effect> needs(Effect e) {
@@ -19,8 +19,17 @@ std::vector<Effect> needs(Effect e) {
     case Effect::Response: return {Effect::Depth};
     case Effect::Ccd: return {Effect::Contacts, Effect::Motion};
     case Effect::Exact: return {Effect::Contacts};
+    case Effect::Dynamics: return {Effect::Contacts, Effect::Motion};
     default: return {};
     }
+}
+
+// Effects that cannot run with `e`, and why (said after naming both).
+std::vector<std::pair<Effect, const char*>> excludes(Effect e) {
+    if (e != Effect::Dynamics) return {};
+    return {{Effect::Response, "both move colliding objects: the paper's rule moves them back, the solver pushes them apart"},
+            {Effect::Ccd, "the solver finds contacts ahead of the motion itself (speculative contacts within the step's travel)"},
+            {Effect::Exact, "the solver's contact manifolds come from the sampling spheres"}};
 }
 
 std::string known_list() {
@@ -56,6 +65,10 @@ EffectSet parse_effects(const std::vector<std::string>& names, const std::string
             if (!set.has(need))
                 throw Error(ErrorKind::BadInput, prefix + "effect '" + kNames[i] + "' needs effect '" +
                                                      effect_name(need) + "', which is not listed");
+        for (const auto& [other, why] : excludes(Effect(i)))
+            if (set.has(other))
+                throw Error(ErrorKind::BadInput, prefix + "effects '" + effect_name(other) + "' and '" + kNames[i] +
+                                                     "' cannot run together: " + why);
     }
     return set;
 }

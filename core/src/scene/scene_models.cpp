@@ -33,7 +33,18 @@ struct Cached {
     double radius = 0;
     std::shared_ptr<const AnimatedMesh> animated; // animated objects: the mesh, rig and clips
     std::shared_ptr<const SptDocument> document;  // animated objects: what their DeformingModel binds
+    std::shared_ptr<const SolidMass> solid;       // a closed mesh's mass properties
 };
+
+// The mass properties of a closed mesh (null for an open one, or one that encloses no volume).
+std::shared_ptr<const SolidMass> solid_of(const ImportedMesh& im) {
+    if (!im.report.closed) return nullptr;
+    try {
+        return std::make_shared<const SolidMass>(mass_properties(im.mesh));
+    } catch (const Error&) {
+        return nullptr;
+    }
+}
 
 std::mutex cache_mutex;
 std::map<CacheKey, Cached> cache;
@@ -90,6 +101,7 @@ Cached load_one(const SceneObject& o, const std::string& where, const std::atomi
         auto model = std::make_shared<CollisionModel>(*doc, animated->imported.mesh, o.tree); // refuses another mesh
         bound(*model, &animated->imported.mesh, c);
         c.model = std::move(model);
+        c.solid = solid_of(animated->imported);
         if (o.animated) c.animated = std::move(animated), c.document = std::move(doc);
         return c;
     }
@@ -118,6 +130,7 @@ Cached load_one(const SceneObject& o, const std::string& where, const std::atomi
     auto model = std::make_shared<CollisionModel>(doc, im.mesh, o.tree);
     bound(*model, &im.mesh, c);
     c.model = std::move(model);
+    c.solid = solid_of(im);
     if (o.animated) {
         c.animated = std::move(animated);
         c.document = std::make_shared<const SptDocument>(doc);
@@ -166,6 +179,7 @@ void load_models(Scene& scene, const std::atomic<bool>* cancel) {
             throw Error(ErrorKind::BadInput, where + ": the exact level (effect 'exact' or level 'exact') tests "
                                                      "triangles, and a .spt file holds none: give the mesh as the model, or as 'mesh' beside it");
         o.model = c.model;
+        o.solid = c.solid;
         o.bound_center = c.center;
         o.bound_radius = c.radius;
         if (o.animated) {

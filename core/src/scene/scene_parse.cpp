@@ -95,7 +95,7 @@ AnimationSettings read_animation(const Reader& r, const json& j, const std::stri
 SceneObject read_object(const Reader& r, const json& j, const std::string& p, const std::filesystem::path& base) {
     r.fields(j, p,
              {"name", "model", "tree", "scale", "static", "position", "orientation", "velocity", "angular_velocity",
-              "path", "animation", "mesh"});
+              "path", "animation", "mesh", "mass", "density", "friction", "restitution", "rolling_friction"});
     SceneObject o;
     if (!j.contains("name")) r.fail(p, "object needs a 'name'");
     o.name = r.text(j["name"], p + "/name");
@@ -117,6 +117,27 @@ SceneObject read_object(const Reader& r, const json& j, const std::string& p, co
     if (j.contains("animation")) {
         o.animated = true;
         o.animation = read_animation(r, j["animation"], p + "/animation");
+    }
+    if (j.contains("mass") && j.contains("density")) r.fail(p, "an object has a 'mass' or a 'density', not both");
+    if (j.contains("mass")) {
+        o.mass = r.number(j["mass"], p + "/mass");
+        if (!(o.mass > 0) || o.mass > 1e30) r.fail(p + "/mass", "must be positive and at most 1e30");
+    }
+    if (j.contains("density")) {
+        o.density = r.number(j["density"], p + "/density");
+        if (!(o.density > 0) || o.density > 1e30) r.fail(p + "/density", "must be positive and at most 1e30");
+    }
+    if (j.contains("friction")) {
+        o.friction = r.number(j["friction"], p + "/friction");
+        if (o.friction < 0 || o.friction > 1e3) r.fail(p + "/friction", "must be from 0 to 1000");
+    }
+    if (j.contains("restitution")) {
+        o.restitution = r.number(j["restitution"], p + "/restitution");
+        if (o.restitution < 0 || o.restitution > 1) r.fail(p + "/restitution", "must be between 0 and 1");
+    }
+    if (j.contains("rolling_friction")) {
+        o.rolling_friction = r.number(j["rolling_friction"], p + "/rolling_friction");
+        if (o.rolling_friction < 0 || o.rolling_friction > 1e3) r.fail(p + "/rolling_friction", "must be from 0 to 1000");
     }
     const bool is_static = j.contains("static") && r.flag(j["static"], p + "/static");
     const bool moving = j.contains("velocity") || j.contains("angular_velocity");
@@ -148,7 +169,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::s
     const Reader r(file);
     const json j = json::parse(text, nullptr, false);
     if (j.is_discarded()) throw Error(ErrorKind::BadInput, file + ": " + detail::json_syntax_problem(text));
-    r.fields(j, "", {"spt_scene", "dt", "steps", "gravity", "effects", "response", "level", "objects"});
+    r.fields(j, "", {"spt_scene", "dt", "steps", "gravity", "effects", "response", "dynamics", "level", "objects"});
     Scene s;
     s.file = file;
     if (!j.contains("spt_scene")) r.fail("", "not a scene file: 'spt_scene' is missing");
@@ -186,12 +207,38 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::s
                 r.fail("/response/restitution", "must be between 0 and 1");
         }
     }
+    if (j.contains("dynamics")) {
+        r.fields(j["dynamics"], "/dynamics", {"friction", "restitution", "rolling_friction", "iterations"});
+        const json& d = j["dynamics"];
+        if (d.contains("friction")) {
+            s.dynamics.friction = r.number(d["friction"], "/dynamics/friction");
+            if (s.dynamics.friction < 0 || s.dynamics.friction > 1e3) r.fail("/dynamics/friction", "must be from 0 to 1000");
+        }
+        if (d.contains("restitution")) {
+            s.dynamics.restitution = r.number(d["restitution"], "/dynamics/restitution");
+            if (s.dynamics.restitution < 0 || s.dynamics.restitution > 1)
+                r.fail("/dynamics/restitution", "must be between 0 and 1");
+        }
+        if (d.contains("rolling_friction")) {
+            s.dynamics.rolling_friction = r.number(d["rolling_friction"], "/dynamics/rolling_friction");
+            if (s.dynamics.rolling_friction < 0 || s.dynamics.rolling_friction > 1e3)
+                r.fail("/dynamics/rolling_friction", "must be from 0 to 1000");
+        }
+        if (d.contains("iterations")) {
+            const json& it = d["iterations"];
+            if (!it.is_number_integer() || it.get<int64_t>() < 1 || it.get<int64_t>() > 1000)
+                r.fail("/dynamics/iterations", "must be a whole number from 1 to 1000");
+            s.dynamics.iterations = int(it.get<int64_t>());
+        }
+    }
     if (j.contains("level")) {
         const std::string level = r.text(j["level"], "/level");
         if (level == "bounds") s.level = QueryLevel::Bounds;
         else if (level == "spheres") s.level = QueryLevel::Spheres;
         else if (level == "exact") s.level = QueryLevel::Exact;
         else r.fail("/level", "must be 'bounds', 'spheres' or 'exact', not '" + level + "'");
+        if (s.level != QueryLevel::Spheres && s.effects.has(Effect::Dynamics))
+            r.fail("/level", "effect 'dynamics' takes its contact manifolds from the sampling spheres: the level must be 'spheres'");
     }
     if (!j.contains("objects")) r.fail("", "a scene needs 'objects'");
     if (!j["objects"].is_array()) r.fail("/objects", "must be an array");

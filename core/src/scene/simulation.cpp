@@ -3,6 +3,7 @@
 #include "spt/simulation.hpp"
 #include "base/hash.hpp"
 #include "base/parallel.hpp"
+#include "dynamics/dynamics_world.hpp"
 #include "scene/pair_work.hpp"
 #include "scene/same_pose.hpp"
 #include "query/scratch.hpp"
@@ -68,10 +69,18 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
         // continuous detection or exact level): those pose what they read, on any thread. Depth
         // and the rest read the whole of a colliding object, and posing it part by part, then the
         // rest, costs more than posing it at once (docs/deforming.md, "Scenes").
-        lazy_pose_ = scene_.level == QueryLevel::Spheres && !effects_.has(Effect::Depth) &&
+        lazy_pose_ = scene_.level == QueryLevel::Spheres && !effects_.has(Effect::Depth) && !effects_.has(Effect::Dynamics) &&
                      !effects_.has(Effect::Pairs) && !effects_.has(Effect::Response) && !effects_.has(Effect::Ccd) &&
                      !effects_.has(Effect::Exact);
         deform(0); // the broad-phase spheres before the first step: the clips at time 0
+    }
+    if (effects_.has(Effect::Dynamics)) {
+        // Checked here too: `--effects` may add dynamics to a scene whose level is not spheres.
+        if (scene_.level != QueryLevel::Spheres)
+            throw Error(ErrorKind::BadInput, scene_.file + ": effect 'dynamics' takes its contact manifolds from the "
+                                                           "sampling spheres: the scene's level must be 'spheres'");
+        dynamics_ = std::make_unique<detail::DynamicsWorld>(scene_, effects_.has(Effect::Gravity), effects_.has(Effect::Pairs),
+                                                            threads_, tasks_, &scratch_);
     }
 }
 
@@ -154,7 +163,7 @@ const StepResult& Simulation::step() {
     r.contacts.clear();
     r.counters = {};
     previous_ = poses_;
-    if (effects_.has(Effect::Motion)) {
+    if (effects_.has(Effect::Motion) && !dynamics_) {
         const std::vector<Eigen::Vector3d> velocity_before = velocity_;
         try {
             move(t1);
@@ -171,11 +180,55 @@ const StepResult& Simulation::step() {
     ++steps_;
     r.step = steps_;
     r.time = t1;
+    if (dynamics_) {
+        step_dynamics(t1, r.counters);
+        ghost_ = poses_;
+        r.state_hash = state_hash(poses_);
+        return r;
+    }
     if (effects_.has(Effect::Contacts)) run_contacts(r.counters);
     ghost_ = poses_;
     if (effects_.has(Effect::Response)) respond(r.counters);
     r.state_hash = state_hash(poses_);
     return r;
+}
+
+void Simulation::step_dynamics(double t1, StepCounters& c) {
+    auto pose_for_narrow = [&](const std::vector<CandidatePair>& pairs) {
+        if (!effects_.has(Effect::Deform)) return;
+        const auto t0 = Clock::now();
+        pose_needed(pairs);
+        c.ns_deform += ns_since(t0);
+    };
+    dynamics_->step(t1, effects_.has(Effect::Depth), pose_for_narrow, c, result_.contacts);
+    for (size_t i = 0; i < poses_.size(); ++i) {
+        const SceneObject& o = scene_.objects[i];
+        if (o.motion == MotionKind::Static) continue;
+        if (o.motion == MotionKind::Path) {
+            poses_[i] = path_pose(o.path, t1);
+            continue;
+        }
+        poses_[i] = dynamics_->pose(i);
+        std::tie(velocity_[i], angular_[i]) = dynamics_->velocity(i);
+        if (!(poses_[i].translation.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate) || !poses_[i].rotation.coeffs().allFinite() ||
+            !velocity_[i].allFinite() || !angular_[i].allFinite())
+            throw Error(ErrorKind::BadInput, scene_.file + ": object '" + o.name + "' leaves the representable range at step " +
+                                                 std::to_string(steps_) +
+                                                 " (a coordinate beyond 1e16 or not finite): dt, its velocity, mass or gravity is too large");
+    }
+}
+
+double Simulation::mass(size_t i) const {
+    return dynamics_ && dynamic(uint32_t(i)) ? dynamics_->mass(i) : 1.0;
+}
+
+double Simulation::mechanical_energy() const {
+    const Eigen::Vector3d g = effects_.has(Effect::Gravity) ? scene_.gravity : Eigen::Vector3d::Zero();
+    if (dynamics_) return dynamics_->energy(g);
+    double e = 0;
+    for (size_t i = 0; i < poses_.size(); ++i)
+        if (dynamic(uint32_t(i))) e += 0.5 * velocity_[i].squaredNorm() - g.dot(poses_[i].translation);
+    return e;
 }
 
 void Simulation::run_contacts(StepCounters& c) {
