@@ -247,3 +247,42 @@ TEST_F(CliSimulate, CollidingPairAnswersAsSptQueryAtTheSameRelativePose) {
 }
 
 } // namespace
+
+namespace {
+
+// A unit box dropped onto a plate under dynamics.
+const char* kDrop = R"({"spt_scene": 1, "steps": 60, "effects": ["motion", "gravity", "contacts", "dynamics"], "objects": [
+    {"name": "plate", "model": "plate.obj", "static": true},
+    {"name": "box", "model": "box.obj", "position": [0, 0.8, 0]}]})";
+
+TEST_F(CliSimulate, DynamicsTimesItsSolverAndTheBoxComesToRestOnThePlate) {
+    const std::string scene = dir.write("drop.json", kDrop);
+    int code;
+    const std::string out = run(q(scene) + " -o " + q(dir.file("steps.csv")) + " --poses-out " + q(dir.file("poses.csv")), &code);
+    ASSERT_EQ(code, 0) << out;
+    const auto steps = read_csv(dir.file("steps.csv"));
+    ASSERT_EQ(steps.size(), 61u);
+    EXPECT_EQ(steps.back()[3], "1");          // colliding_pairs: the box rests on the plate
+    EXPECT_GT(std::stoll(steps.back()[16]), 0); // ns_dynamics
+    EXPECT_EQ(steps.back()[14], "0");          // ns_response: the paper's rule does not run
+    const auto poses = read_csv(dir.file("poses.csv"));
+    const auto& last = poses.back(); // the box after the last step: its bottom on the plate's top (y = 0.01)
+    ASSERT_EQ(last[2], "box");
+    EXPECT_NEAR(std::stod(last[4]), 0.51, 0.01);
+}
+
+TEST_F(CliSimulate, DynamicsWithResponseOrAMasslessPebbleIsExitTwoNamingThem) {
+    const std::string scene = dir.write("drop.json", kDrop);
+    int code;
+    std::string out = run(q(scene) + " --effects motion,contacts,depth,response,dynamics", &code);
+    EXPECT_EQ(code, 2);
+    EXPECT_NE(out.find("effects 'response' and 'dynamics' cannot run together"), std::string::npos) << out;
+    const std::string pebble = dir.write("pebble.json", R"({"spt_scene": 1, "effects": ["motion", "contacts", "dynamics"],
+        "objects": [{"name": "pebble", "model": "ball.spt", "velocity": [1, 0, 0]}]})");
+    out = run(q(pebble), &code);
+    EXPECT_EQ(code, 2);
+    EXPECT_NE(out.find("object 'pebble'"), std::string::npos) << out;
+    EXPECT_NE(out.find("'mass'"), std::string::npos) << out;
+}
+
+} // namespace

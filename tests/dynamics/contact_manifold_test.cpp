@@ -20,7 +20,8 @@ TEST(ContactManifold, ABoxOnAFloorGetsItsFourCornersAndTheFloorsNormal) {
     const Pose box_pose = Pose::from({0.3, 0.5, -0.2}, Eigen::Quaterniond::Identity()); // resting on it
     QueryScratch scratch;
     detail::Manifold m;
-    detail::contact_manifold(box, box_pose, floor, floor_pose, 0.01, true, false, false, scratch, m);
+    detail::ManifoldWork work;
+    detail::contact_manifold(box, box_pose, floor, floor_pose, 0.01, true, false, false, scratch, work, m);
     ASSERT_EQ(m.points.size(), 4u);
     for (const detail::ManifoldContact& c : m.points) {
         EXPECT_NEAR(c.normal.y(), -1, 1e-9); // the struck floor's normal, from the box towards it
@@ -44,7 +45,8 @@ TEST(ContactManifold, StackedBoxesWhoseSidesLieInOnePlaneKeepAnUpwardNormal) {
     const Pose upper = Pose::from({0, 1.5005, 0}, Eigen::Quaterniond::Identity());
     QueryScratch scratch;
     detail::Manifold m;
-    detail::contact_manifold(box, lower, box, upper, 0.01, true, true, false, scratch, m);
+    detail::ManifoldWork work;
+    detail::contact_manifold(box, lower, box, upper, 0.01, true, true, false, scratch, work, m);
     ASSERT_EQ(m.points.size(), 4u);
     for (const detail::ManifoldContact& c : m.points) {
         EXPECT_GT(c.normal.y(), 0.9999) << c.normal.transpose();
@@ -56,11 +58,12 @@ TEST(ContactManifold, ApartByMoreThanTheMarginIsNoContact) {
     const CollisionModel box = model_of(meshgen::box(1, 1, 1, 2), "box");
     QueryScratch scratch;
     detail::Manifold m;
+    detail::ManifoldWork work;
     detail::contact_manifold(box, Pose(), box, Pose::from({0, 1.2, 0}, Eigen::Quaterniond::Identity()), 0.05, true,
-                             true, false, scratch, m);
+                             true, false, scratch, work, m);
     EXPECT_TRUE(m.points.empty());
     detail::contact_manifold(box, Pose(), box, Pose::from({0, 1.2, 0}, Eigen::Quaterniond::Identity()), 0.3, true,
-                             true, false, scratch, m);
+                             true, false, scratch, work, m);
     ASSERT_FALSE(m.points.empty()); // within a margin of 0.3: a speculative contact, apart by about 0.2
     for (const detail::ManifoldContact& c : m.points) EXPECT_NEAR(c.depth, -0.2, 0.05);
 }
@@ -70,7 +73,8 @@ TEST(ContactManifold, DeeplyOverlappingBallsGetAPointAlongTheirCentresWithoutEve
     const Pose a = Pose(), b = Pose::from({0.3, 0.05, 0}, Eigen::Quaterniond::Identity()); // centres 0.3 apart, radius 0.5
     QueryScratch scratch;
     detail::Manifold m;
-    detail::contact_manifold(ball, a, ball, b, 0.01, true, true, false, scratch, m);
+    detail::ManifoldWork work;
+    detail::contact_manifold(ball, a, ball, b, 0.01, true, true, false, scratch, work, m);
     ASSERT_FALSE(m.points.empty());
     const Eigen::Vector3d along = b.translation.normalized();
     EXPECT_GT(m.points[0].normal.dot(along), 0.5) << m.points[0].normal.transpose();

@@ -106,3 +106,24 @@ TEST(DynamicsSettings, TheCommandLinesEffectsCannotAddDynamicsToAnotherLevel) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(DynamicsKinematic, APathObjectPushesABoxAndNothingPushesIt) {
+    const test::SceneDir dir;
+    const std::string path = dir.write("push.json", R"({"spt_scene": 1, "dt": 0.01, "effects": ["motion", "gravity", "contacts", "dynamics"],
+      "objects": [{"name": "plate", "model": "plate.obj", "static": true},
+                  {"name": "box", "model": "box.obj", "position": [0, 0.511, 0]},
+                  {"name": "paddle", "model": "box.obj",
+                   "path": [{"t": 0, "position": [-1.2, 0.6, 0]}, {"t": 2, "position": [0.8, 0.6, 0]}]}]})");
+    const Scene s = load_scene(path);
+    Simulation sim(s, s.effects);
+    for (int i = 0; i < 150; ++i) sim.step();
+    const Pose paddle = path_pose(s.objects[2].path, 1.5);
+    EXPECT_LT((sim.poses()[2].translation - paddle.translation).norm(), 1e-12); // on its path, whatever it meets
+    // The paddle's face reached x = 0.3 at 1.5 s: the box, pushed, is beyond it (its centre past 0.8).
+    EXPECT_GT(sim.poses()[1].translation.x(), 0.3 + 0.5 - 0.01);
+    EXPECT_NEAR(sim.poses()[1].translation.y(), 0.51, 0.02); // still on the plate
+}
+
+} // namespace

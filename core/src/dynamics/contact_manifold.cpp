@@ -113,7 +113,8 @@ std::vector<ManifoldContact> reduce_manifold(const std::vector<ManifoldContact>&
 }
 
 void contact_manifold(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb, double margin,
-                      bool a_moves, bool b_moves, bool keep_pairs, QueryScratch& scratch, Manifold& out) {
+                      bool a_moves, bool b_moves, bool keep_pairs, QueryScratch& scratch, ManifoldWork& work,
+                      Manifold& out) {
     out.points.clear();
     out.pairs.clear();
     out.counters = {};
@@ -121,6 +122,8 @@ void contact_manifold(const CollisionModel& a, const Pose& pa, const CollisionMo
     q.level = QueryLevel::Spheres;
     q.inflate = float(margin);
     q.solids = false; // a body wholly inside another has no surface to be pushed out along
+    // Spheres facing away from the other node cannot face the other surface: not tested.
+    q.normal_culling = true;
     bool deep = false;
     const QueryResult r = collide_all_unless_deep(a, pa, b, pb, q, scratch, deep);
     out.counters = r.counters;
@@ -156,9 +159,9 @@ void contact_manifold(const CollisionModel& a, const Pose& pa, const CollisionMo
     // surfaces face each other: where two stacked boxes' side faces lie in one plane, the spheres
     // along the shared edges overlap, but their normals are parallel, not opposed, and they are no
     // contact: counted, they would tilt the normal sideways.
-    std::vector<ManifoldContact>& all = out.candidates;
+    std::vector<ManifoldContact>& all = work.candidates;
     all.clear();
-    std::vector<PairFrame>& frames = out.frames;
+    std::vector<PairFrame>& frames = work.frames;
     frames.clear();
     Eigen::Vector3d sum = Eigen::Vector3d::Zero(), square = Eigen::Vector3d::Zero();
     const bool use_a = !a_moves || b_moves, use_b = !b_moves || a_moves; // what is struck gives the normal

@@ -26,10 +26,15 @@ struct PairFrame {
 /// What contact_manifold found.
 struct Manifold {
     std::vector<ManifoldContact> points; ///< at most 4; empty: apart by more than the margin
-    std::vector<SpherePair> pairs;       ///< the sphere pairs within the margin (kept when asked)
+    std::vector<SpherePair> pairs;       ///< the sphere pairs that overlap (kept when asked)
     QueryCounters counters;              ///< the queries' work
-    std::vector<ManifoldContact> candidates; ///< every pair's point before the reduction (working memory)
-    std::vector<PairFrame> frames;           ///< the pairs whose surfaces face each other (working memory)
+};
+
+/// contact_manifold's working memory, one per thread (a pair's would hold thousands of entries
+/// for each of thousands of pairs).
+struct ManifoldWork {
+    std::vector<ManifoldContact> candidates; ///< every pair's point before the reduction
+    std::vector<PairFrame> frames;           ///< the pairs whose surfaces face each other
 };
 
 /// The manifold of A and B (world poses): the sphere pairs within `margin` (model units) of
@@ -38,9 +43,10 @@ struct Manifold {
 /// each pair's depth along it, then at most 4 of them that span the contact and hold its deepest
 /// (reduce_manifold, depth tolerance a quarter of the margin). For a deep overlap (surfaces
 /// crossing) only the pairs the walk found up to its first deep one count.
-/// `keep_pairs`: out.pairs gets the pairs. Writes `out`; `scratch` is working memory.
+/// `keep_pairs`: out.pairs gets the pairs. Writes `out`; `scratch` and `work` are working memory.
 void contact_manifold(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb, double margin,
-                      bool a_moves, bool b_moves, bool keep_pairs, QueryScratch& scratch, Manifold& out);
+                      bool a_moves, bool b_moves, bool keep_pairs, QueryScratch& scratch, ManifoldWork& work,
+                      Manifold& out);
 
 /// At most 4 of `contacts` (sharing one normal) chosen as contact_manifold does: the one farthest
 /// from their middle across the normal, the one farthest from it, the one making the largest

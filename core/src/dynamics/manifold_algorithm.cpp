@@ -24,10 +24,14 @@ Eigen::Vector3d velocity_at(const btCollisionObject* o, const Eigen::Vector3d& p
     return from_bt(body->getLinearVelocity()) + from_bt(body->getAngularVelocity()).cross(p - x);
 }
 
-double sweep_speed(const btCollisionObject* o) {
+Eigen::Vector3d linear_velocity(const btCollisionObject* o) {
     const btRigidBody* body = btRigidBody::upcast(o);
-    if (!body) return 0;
-    return double(body->getLinearVelocity().length()) + double(body->getAngularVelocity().length()) * info_of(o).reach;
+    return body ? from_bt(body->getLinearVelocity()) : Eigen::Vector3d::Zero();
+}
+
+double turn_speed(const btCollisionObject* o) {
+    const btRigidBody* body = btRigidBody::upcast(o);
+    return body ? double(body->getAngularVelocity().length()) * info_of(o).reach : 0.0;
 }
 
 } // namespace
@@ -55,13 +59,12 @@ ManifoldAlgorithm::ManifoldAlgorithm(const btCollisionAlgorithmConstructionInfo&
 
 ManifoldAlgorithm::~ManifoldAlgorithm() {
     if (manifold_) m_dispatcher->releaseManifold(manifold_);
-    delete own_scratch_;
 }
 
 void ManifoldAlgorithm::processCollision(const btCollisionObjectWrapper*, const btCollisionObjectWrapper*,
                                          const btDispatcherInfo&, btManifoldResult*) {
-    if (!own_scratch_) own_scratch_ = new QueryScratch();
-    collide(*own_scratch_);
+    if (!own_scratch_) own_scratch_ = std::make_unique<QueryScratch>(), own_work_ = std::make_unique<ManifoldWork>();
+    collide(*own_scratch_, *own_work_);
 }
 
 void ManifoldAlgorithm::getAllContactManifolds(btManifoldArray& manifolds) {
@@ -94,7 +97,7 @@ void ManifoldAlgorithm::write_point(btManifoldPoint& p, const Eigen::Vector3d& o
     p.m_combinedRestitution = btScalar(e);
 }
 
-void ManifoldAlgorithm::collide(QueryScratch& scratch) {
+void ManifoldAlgorithm::collide(QueryScratch& scratch, ManifoldWork& work) {
     const bool a_first = info_of(body0_).index == a_;
     const btCollisionObject* oa = a_first ? body0_ : body1_;
     const btCollisionObject* ob = a_first ? body1_ : body0_;
@@ -127,11 +130,18 @@ void ManifoldAlgorithm::collide(QueryScratch& scratch) {
 
     const double dt = context_->dt;
     // Speculative margin: what the pair can close within a step, plus a sliver that keeps a resting
-    // contact found from one step to the next.
+    // contact found from one step to the next. A pair in contact closes only along its normal: one
+    // sliding or resting does not widen its band (and the pairs a wider band holds) by its speed.
+    const Eigen::Vector3d relative_velocity = linear_velocity(oa) - linear_velocity(ob);
+    double closing = relative_velocity.norm();
+    if (manifold_->getNumContacts() > 0) {
+        const Eigen::Vector3d n1 = from_bt(t1.getBasis() * normal_in_1_[0]);
+        closing = std::max(0.0, relative_velocity.dot(a_first ? Eigen::Vector3d(-n1) : n1));
+    }
     const double margin = 0.005 * std::min(ia.size, ib.size) +
-                          dt * (sweep_speed(oa) + sweep_speed(ob) + context_->gravity * dt);
+                          dt * (closing + turn_speed(oa) + turn_speed(ob) + context_->gravity * dt);
     contact_manifold(*ia.object->model, pose_a, *ib.object->model, pose_b, margin, ia.moves, ib.moves,
-                     context_->keep_pairs, scratch, found_);
+                     context_->keep_pairs, scratch, work, found_);
     queried_ = true;
     queried_at_ = relative;
 

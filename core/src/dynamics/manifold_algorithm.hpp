@@ -9,6 +9,7 @@
 #include <BulletCollision/CollisionDispatch/btCollisionCreateFunc.h>
 #include <BulletCollision/NarrowPhaseCollision/btManifoldPoint.h>
 #include <array>
+#include <memory>
 
 class btPersistentManifold;
 
@@ -40,7 +41,7 @@ public:
     /// points with it, keeping the impulses of the points it matches; or, while the pair has moved
     /// less than a quarter of the slop relative to each other since it last looked, moves last
     /// step's points with the bodies and measures their depths again. Touches this pair's data only.
-    void collide(QueryScratch& scratch);
+    void collide(QueryScratch& scratch, ManifoldWork& work);
     /// The scene's object indices of the pair, lower first.
     uint32_t a() const { return a_; }
     uint32_t b() const { return b_; }
@@ -56,7 +57,8 @@ private:
     uint32_t a_ = 0, b_ = 0;
     double friction_ = 0, restitution_ = 0, rolling_ = 0;
     Manifold found_;
-    QueryScratch* own_scratch_ = nullptr; // processCollision's, made at its first call
+    std::unique_ptr<QueryScratch> own_scratch_; // processCollision's, made at its first call
+    std::unique_ptr<ManifoldWork> own_work_;
     // The relative pose (b in a's frame) at the last query, and each point's normal in body1's
     // frame then: while the pair stays within a sliver of that pose, its points are carried along
     // instead of found again (as Bullet's own manifolds do).

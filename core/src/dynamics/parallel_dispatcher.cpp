@@ -10,7 +10,7 @@ namespace spt::detail {
 
 ParallelDispatcher::ParallelDispatcher(btCollisionConfiguration* configuration, int threads, TaskSystem* tasks,
                                        std::vector<QueryScratch>* scratch)
-    : btCollisionDispatcher(configuration), threads_(threads), tasks_(tasks), scratch_(scratch) {}
+    : btCollisionDispatcher(configuration), threads_(threads), tasks_(tasks), scratch_(scratch), work_(size_t(threads)) {}
 
 void ParallelDispatcher::dispatchAllCollisionPairs(btOverlappingPairCache* cache, const btDispatcherInfo&, btDispatcher*) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -32,7 +32,7 @@ void ParallelDispatcher::dispatchAllCollisionPairs(btOverlappingPairCache* cache
         pairs_.push_back({algorithm->a(), algorithm->b()});
     }
     if (before) before(pairs_);
-    parallel_for(tested_.size(), threads_, [&](size_t k, int w) { tested_[k]->collide((*scratch_)[size_t(w)]); }, tasks_);
+    parallel_for(tested_.size(), threads_, [&](size_t k, int w) { tested_[k]->collide((*scratch_)[size_t(w)], work_[size_t(w)]); }, tasks_);
     ns_narrow = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -15,7 +15,7 @@ namespace spt::detail {
 class ParallelDispatcher : public btCollisionDispatcher {
 public:
     /// Runs the narrow phase as `threads` jobs on `tasks` (null: the library's pool), worker w
-    /// with scratch[w] (at least `threads` of them). `before`: called with the step's pairs (scene
+    /// with scratch[w] (at least `threads` of them) and its own manifold working memory. `before`: called with the step's pairs (scene
     /// indices, lower first) before any is tested (poses the animated objects they need).
     ParallelDispatcher(btCollisionConfiguration* configuration, int threads, TaskSystem* tasks,
                        std::vector<QueryScratch>* scratch);
@@ -31,6 +31,7 @@ private:
     int threads_;
     TaskSystem* tasks_;
     std::vector<QueryScratch>* scratch_;
+    std::vector<ManifoldWork> work_; // one per worker
     std::vector<ManifoldAlgorithm*> tested_;
     std::vector<CandidatePair> pairs_;
 };
