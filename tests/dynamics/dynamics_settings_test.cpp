@@ -127,3 +127,39 @@ TEST(DynamicsKinematic, APathObjectPushesABoxAndNothingPushesIt) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(DynamicsSettings, WhatBulletsFloatCannotHoldIsRefusedBeforeAStepNotHungOn) {
+    const test::SceneDir dir;
+    const std::string path = dir.write("drop.json", R"({"spt_scene": 1, "effects": ["motion", "gravity", "contacts", "dynamics"],
+      "objects": [{"name": "plate", "model": "plate.obj", "static": true},
+                  {"name": "box", "model": "box.obj", "position": [0, 2, 0]}]})");
+    const Scene s = load_scene(path);
+    auto refused = [](const Scene& scene, const char* expected) {
+        try {
+            Simulation sim(scene, scene.effects);
+            sim.step();
+            ADD_FAILURE() << "not refused: " << expected;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+    };
+    Scene heavy = s;
+    heavy.gravity = Eigen::Vector3d(0, -1e300, 0);
+    refused(heavy, "gravity of 1e+300");
+    Scene tiny = s;
+    tiny.objects[1].mass = 1e-30;
+    refused(tiny, "object 'box' has a mass of 1e-30");
+    Scene fast = s;
+    fast.objects[1].velocity = Eigen::Vector3d(1e200, 0, 0);
+    refused(fast, "object 'box' moves too fast");
+    // Strong but representable gravity runs; the band it would ask for is capped, not a million pairs.
+    Scene strong = s;
+    strong.gravity = Eigen::Vector3d(0, -1e14, 0);
+    Simulation sim(strong, strong.effects);
+    for (int i = 0; i < 5; ++i) EXPECT_LT(sim.step().counters.sphere_tests, 10000000u);
+}
+
+} // namespace

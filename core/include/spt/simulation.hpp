@@ -11,6 +11,7 @@
 #include "spt/scene.hpp"
 #include "spt/task_system.hpp"
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace spt {
@@ -150,6 +151,7 @@ private:
     std::vector<std::vector<SpherePair>> start_pairs_;
     StepResult result_;
     std::unique_ptr<detail::DynamicsWorld> dynamics_; // effect dynamics: Bullet's world of the objects
+    std::string dynamics_failure_; // why a step of Bullet's world was refused: every later one is too
 };
 
 } // namespace spt

@@ -11,6 +11,7 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 
 namespace spt::detail {
 namespace {
@@ -62,8 +63,29 @@ DynamicsWorld::DynamicsWorld(const Scene& scene, bool gravity, bool keep_pairs, 
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.scene = &scene;
+    // Bullet works in float: what one step can add must stay far below float's range, or a step
+    // would carry a body to infinity inside Bullet before spt could refuse it (docs/scenes.md).
+    const double limit = 1e15;
+    auto refuse = [&](const std::string& what) {
+        throw Error(ErrorKind::BadInput, scene.file + ": " + what + ": the solver (float) takes speeds, gravity and their "
+                                                                  "change in a step up to 1e15");
+    };
+    auto number = [](double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    };
+    if (gravity && !(scene.gravity.stableNorm() <= limit && scene.gravity.stableNorm() * scene.dt <= limit))
+        refuse("gravity of " + number(scene.gravity.stableNorm()) + " with dt " + number(scene.dt));
+    if (!(scene.dt <= limit)) refuse("dt of " + number(scene.dt));
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        if (o.motion == MotionKind::Velocity &&
+            !(o.velocity.stableNorm() * std::max(1.0, scene.dt) <= limit && o.angular_velocity.stableNorm() <= limit))
+            refuse("at /objects/" + std::to_string(i) + ": object '" + o.name + "' moves too fast");
+    }
     m.context.dt = scene.dt;
-    m.context.gravity = gravity ? scene.gravity.norm() : 0.0;
+    m.context.gravity = gravity ? scene.gravity.stableNorm() : 0.0;
     m.context.settings = scene.dynamics;
     m.context.keep_pairs = keep_pairs;
     btDefaultCollisionConstructionInfo construction;

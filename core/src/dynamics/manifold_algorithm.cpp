@@ -138,8 +138,11 @@ void ManifoldAlgorithm::collide(QueryScratch& scratch, ManifoldWork& work) {
         const Eigen::Vector3d n1 = from_bt(t1.getBasis() * normal_in_1_[0]);
         closing = std::max(0.0, relative_velocity.dot(a_first ? Eigen::Vector3d(-n1) : n1));
     }
-    const double margin = 0.005 * std::min(ia.size, ib.size) +
-                          dt * (closing + turn_speed(oa) + turn_speed(ob) + context_->gravity * dt);
+    // At most a quarter of the smaller model: a wider band would hold nearly every sphere pair of
+    // the two, and a body faster than that a step may pass through a thin one (docs/scenes.md).
+    const double smaller = std::min(ia.size, ib.size);
+    const double margin = std::min(0.25 * smaller, 0.005 * smaller + dt * (closing + turn_speed(oa) + turn_speed(ob) +
+                                                                          context_->gravity * dt));
     contact_manifold(*ia.object->model, pose_a, *ib.object->model, pose_b, margin, ia.moves, ib.moves,
                      context_->keep_pairs, scratch, work, found_);
     queried_ = true;

@@ -159,6 +159,7 @@ const StepResult& Simulation::step() {
     if (!std::isfinite(t1))
         throw Error(ErrorKind::BadInput, scene_.file + ": the time of step " + std::to_string(steps_ + 1) +
                                              " is beyond the largest double: dt is too large");
+    if (!dynamics_failure_.empty()) throw Error(ErrorKind::BadInput, dynamics_failure_);
     StepResult& r = result_;
     r.contacts.clear();
     r.counters = {};
@@ -201,21 +202,29 @@ void Simulation::step_dynamics(double t1, StepCounters& c) {
         c.ns_deform += ns_since(t0);
     };
     dynamics_->step(t1, effects_.has(Effect::Depth), pose_for_narrow, c, result_.contacts);
-    for (size_t i = 0; i < poses_.size(); ++i) {
+    std::vector<Pose> poses = poses_;
+    std::vector<Eigen::Vector3d> velocity = velocity_, angular = angular_;
+    for (size_t i = 0; i < poses.size(); ++i) {
         const SceneObject& o = scene_.objects[i];
         if (o.motion == MotionKind::Static) continue;
         if (o.motion == MotionKind::Path) {
-            poses_[i] = path_pose(o.path, t1);
+            poses[i] = path_pose(o.path, t1);
             continue;
         }
-        poses_[i] = dynamics_->pose(i);
-        std::tie(velocity_[i], angular_[i]) = dynamics_->velocity(i);
-        if (!(poses_[i].translation.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate) || !poses_[i].rotation.coeffs().allFinite() ||
-            !velocity_[i].allFinite() || !angular_[i].allFinite())
-            throw Error(ErrorKind::BadInput, scene_.file + ": object '" + o.name + "' leaves the representable range at step " +
-                                                 std::to_string(steps_) +
-                                                 " (a coordinate beyond 1e16 or not finite): dt, its velocity, mass or gravity is too large");
+        poses[i] = dynamics_->pose(i);
+        std::tie(velocity[i], angular[i]) = dynamics_->velocity(i);
+        if (!(poses[i].translation.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate) || !poses[i].rotation.coeffs().allFinite() ||
+            !velocity[i].allFinite() || !angular[i].allFinite()) {
+            // Bullet's world has moved on and cannot be stepped back: the state stays that of the
+            // last step, and every later step is refused alike.
+            dynamics_failure_ = scene_.file + ": object '" + o.name + "' leaves the representable range at step " +
+                                std::to_string(steps_) +
+                                " (a coordinate beyond 1e16 or not finite): dt, its velocity, mass or gravity is too large";
+            --steps_;
+            throw Error(ErrorKind::BadInput, dynamics_failure_);
+        }
     }
+    poses_ = std::move(poses), velocity_ = std::move(velocity), angular_ = std::move(angular);
 }
 
 double Simulation::mass(size_t i) const {
