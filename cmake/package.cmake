@@ -25,8 +25,9 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT) # spt_0.1.0_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/spt")
-# find_package(spt) asks for these (cmake/sptConfig.cmake.in): the static library links them.
-set(spt_deb_depends "libeigen3-dev (>= 3.4), libassimp-dev, zlib1g-dev, libtbb-dev")
+# find_package(spt) asks for these (cmake/sptConfig.cmake.in): the static library links them (and
+# Bullet, by library name: effect dynamics).
+set(spt_deb_depends "libeigen3-dev (>= 3.4), libassimp-dev, zlib1g-dev, libtbb-dev, libbullet-dev")
 if(TARGET spt_render)
   # `spt render` opens libOSMesa or libEGL by soname when it first draws (render/src/gl_library.hpp),
   # which dpkg-shlibdeps cannot see.
