@@ -212,9 +212,11 @@ void contact_manifold(const CollisionModel& a, const Pose& pa, const CollisionMo
         m.on_a = m.on_b + m.depth * n;
         all.push_back(m);
     }
-    if (keep_pairs) // the pairs that overlap, as the pairs effect lists them: without the margin
+    if (keep_pairs) { // the pairs that overlap, as the pairs effect lists them: without the margin
+        const float grown = deep ? 0.0f : q.inflate; // a deep overlap's pairs came from the walk of the spheres as they are
         for (SpherePair p : pairs)
-            if (p.depth > float(margin)) p.depth -= float(margin), p.reach -= float(margin), out.pairs.push_back(p);
+            if (p.depth > grown) p.depth -= grown, p.reach -= grown, out.pairs.push_back(p);
+    }
     out.points = reduce_manifold(all, 0.25 * margin);
 }
 
