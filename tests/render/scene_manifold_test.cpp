@@ -2,12 +2,11 @@
 // mark with its normal, coloured new or kept by its age, drawn on top; the contacts and normals
 // overlays still work with dynamics (they add effect depth); and a scene without dynamics is
 // told apart rather than drawn empty.
+#include "pixel_colours.hpp"
 #include "scenes.hpp"
 #include "spt/render/camera.hpp"
 #include "spt/render/image.hpp"
 #include "spt/render/scene_drawing.hpp"
-#include <algorithm>
-#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace spt::render;
@@ -19,17 +18,6 @@ namespace {
 spt::Scene bundled_scene(const char* name) { return spt::load_scene(std::string(SPT_SOURCE_DIR) + "/resources/scenes/" + name); }
 
 bool same_color(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a; }
-
-// Pixels within 2/255 of `c` in each channel.
-size_t pixels_of(const Image& im, const Color& c) {
-    size_t n = 0;
-    for (size_t i = 0; i + 3 < im.rgba.size(); i += 4) {
-        const float d = std::max({std::abs(im.rgba[i] / 255.0f - c.r), std::abs(im.rgba[i + 1] / 255.0f - c.g),
-                                  std::abs(im.rgba[i + 2] / 255.0f - c.b)});
-        n += d <= 2.0f / 255.0f;
-    }
-    return n;
-}
 
 } // namespace
 
@@ -78,14 +66,14 @@ TEST(SceneManifold, MarksAreDrawnOnTopInTheirColoursAndAChangedMarkDrawsAgain) {
     ASSERT_FALSE(f.collision.marks.empty());
     const Image with = r.view(f, cam);
     const Image without = r.view(drawing.frame(sim.poses(), &step, {}, {}, {}, {}), cam);
-    EXPECT_GT(pixels_of(with, manifold_point_color(1)), 0u) << "kept points, drawn over the boxes that hide them";
-    EXPECT_EQ(pixels_of(without, manifold_point_color(1)), 0u);
+    EXPECT_GT(spt::test::pixels_of_color(with, manifold_point_color(1)), 0u) << "kept points, drawn over the boxes that hide them";
+    EXPECT_EQ(spt::test::pixels_of_color(without, manifold_point_color(1)), 0u);
     // A mark that only changes colour (a point kept instead of new) is a new picture, not the cached one.
     r.view(f, cam);
     for (ContactMark& m : f.collision.marks) m.color = manifold_point_color(0);
     const Image recoloured = r.view(f, cam);
     EXPECT_EQ(r.renderer->last_draw_kind(), DrawKind::Full);
-    EXPECT_GT(pixels_of(recoloured, manifold_point_color(0)), 0u);
+    EXPECT_GT(spt::test::pixels_of_color(recoloured, manifold_point_color(0)), 0u);
 }
 
 TEST(SceneManifold, ContactsAndNormalsStillWorkWithDynamics) {
