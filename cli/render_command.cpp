@@ -55,9 +55,10 @@ private:
     Clock::time_point last_;
 };
 
-const std::vector<std::string> kOverlays = {"spheres", "bounds", "node",   "wire",  "points", "grid",  "axes",
-                                            "none",    "contacts", "normals", "pairs", "ghost",  "trails", "broad"};
-const std::set<std::string> kSceneOnly = {"contacts", "normals", "pairs", "ghost", "trails", "broad"};
+const std::vector<std::string> kOverlays = {"spheres",  "bounds",  "node",     "wire",  "points", "grid",
+                                            "axes",     "none",    "contacts", "normals", "manifold", "pairs",
+                                            "ghost",    "trails",  "broad"};
+const std::set<std::string> kSceneOnly = {"contacts", "normals", "manifold", "pairs", "ghost", "trails", "broad"};
 
 std::pair<int, int> parse_size(const std::string& s) {
     const size_t x = s.find('x');
@@ -133,6 +134,9 @@ int run_scene_render(const RenderArgs& a, int width, int height, const std::vect
     for (const std::string& n : names)
         if (bool* flag = scene_overlay_flag(o, n)) *flag = true;
     const Scene scene = load_scene(a.input);
+    // An overlay with nothing to draw is refused rather than silently left out of every frame.
+    if (const std::string problem = scene_overlays_problem(scene.effects, o); !problem.empty())
+        throw Error(ErrorKind::Usage, a.input + ": " + problem);
     Simulation sim(scene, effects_for_overlays(scene.effects, o), hardware_threads());
     auto context = make_offscreen_context(a.backend, width, height);
     auto renderer = std::make_unique<Renderer>(context->loader());
@@ -352,9 +356,10 @@ Action add_render_command(CLI::App& app) {
     CLI::App* c = app.add_subcommand("render", "Render a mesh and its sampling tree off screen to PNG");
     c->footer("Overlays: spheres (sampling spheres), bounds (bounding spheres of --node and --bounds-depth levels\n"
               "below), node (highlight --node), wire (mesh edges), points (mesh vertices), grid, axes, none.\n"
-              "A scene (SCENE.json) INPUT: frame k is the state after step k; overlays contacts, normals, pairs,\n"
-              "ghost (pose before the response), trails, bounds (objects' bounding spheres), broad (broad-phase\n"
-              "spheres of the step), spheres, grid, axes (docs/scenes.md).\n"
+              "A scene (SCENE.json) INPUT: frame k is the state after step k; overlays contacts, normals, manifold\n"
+              "(contact manifold points of effect dynamics, new and kept), pairs, ghost (pose before the response),\n"
+              "trails, bounds (objects' bounding spheres), broad (broad-phase spheres of the step), spheres, grid,\n"
+              "axes (docs/scenes.md).\n"
               "Default overlays: grid,axes (a .spt INPUT: spheres,grid,axes). {frame} in OUT is replaced by the\n"
               "frame number. Exit codes: 0 ok, 1 usage, 2 bad input, 3 cannot write. See docs/rendering.md.");
     c->add_option("input", a->input, "Mesh file (any format assimp reads), a .spt file (spheres only) or a scene (.json)")

@@ -49,15 +49,25 @@ std::vector<std::vector<Eigen::Vector3f>> SceneHistory::trails(int k) const {
     return out;
 }
 
+std::vector<double> SceneHistory::energies(int k) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const size_t steps = std::min(size_t(std::max(k, 0)) + 1, states_.size());
+    std::vector<double> out(steps);
+    for (size_t s = 0; s < steps; ++s) out[s] = states_[s]->energy;
+    return out;
+}
+
 void SceneHistory::record(const Simulation& sim, const StepResult* step) {
     auto s = std::make_shared<RecordedState>();
     s->poses = sim.poses();
     s->ghost = sim.ghost_poses();
+    s->energy = sim.mechanical_energy();
     if (step) s->step = *step, s->broad = sim.broad_spheres();
     size_t bytes = sizeof(RecordedState) + (s->poses.size() + s->ghost.size()) * sizeof(Pose) +
                    s->broad.size() * sizeof(BroadSphere);
     if (step)
-        for (const PairContact& c : step->contacts) bytes += sizeof(c) + c.pairs.size() * sizeof(SpherePair);
+        for (const PairContact& c : step->contacts)
+            bytes += sizeof(c) + c.pairs.size() * sizeof(SpherePair) + c.manifold.size() * sizeof(ContactPoint);
     std::lock_guard<std::mutex> lock(mutex_);
     states_.push_back(std::move(s));
     bytes_ += bytes;

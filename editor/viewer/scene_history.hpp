@@ -21,6 +21,7 @@ struct RecordedState {
     std::vector<Pose> ghost;          ///< poses before the step's response
     std::optional<StepResult> step;   ///< what step k did; none for k = 0
     std::vector<BroadSphere> broad;   ///< broad-phase spheres of step k (empty for k = 0)
+    double energy = 0;                ///< Simulation::mechanical_energy() of this state
 };
 
 /// A scene and its simulation, recorded in the background.
@@ -58,6 +59,8 @@ public:
     std::shared_ptr<const RecordedState> state(int k) const;
     /// Each object's origin at steps 0..k, for the trails overlay (world frame).
     std::vector<std::vector<Eigen::Vector3f>> trails(int k) const;
+    /// The mechanical energy of states 0..k (those recorded), for the energy plot.
+    std::vector<double> energies(int k) const;
     /// Memory the recorded states may take before recording stops, bytes.
     static constexpr size_t kMemoryBudget = size_t(4) << 30;
 

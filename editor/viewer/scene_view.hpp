@@ -11,7 +11,7 @@ namespace spt::editor {
 
 /// What the viewer draws over the objects.
 struct ViewerOverlays {
-    render::SceneOverlays scene; ///< contacts, normals, pairs, ghost, trails, spheres, bounds, broad
+    render::SceneOverlays scene; ///< contacts, normals, manifold, pairs, ghost, trails, spheres, bounds, broad
     bool grid = true;            ///< ground grid
     bool axes = true;            ///< axis gizmo
     /// The flag of overlay `name` as `spt render --overlay` spells it, or nullptr for another name.

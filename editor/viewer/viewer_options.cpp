@@ -7,7 +7,7 @@ QString viewer_usage() {
     return "usage: spt-viewer [SCENE.json] [--step N] [--view top|front|side|camera] [--overlay LIST]\n"
            "                  [--speed X] [--play] [--size WxH]\n"
            "Plays a scene's simulation (docs/viewer.md). Overlays (comma-separated, as `spt render`):\n"
-           "contacts, normals, pairs, ghost, trails, spheres, bounds, broad, grid, axes, none\n"
+           "contacts, normals, manifold, pairs, ghost, trails, spheres, bounds, broad, grid, axes, none\n"
            "(default grid,axes). Keys: Space play/pause, Right/Left step, Home/End first/last step,\n"
            "F frame all, F5 reload. Exit codes: 0 ok, 2 bad arguments, 3 no window system (no display).\n";
 }

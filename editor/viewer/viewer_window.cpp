@@ -10,6 +10,7 @@
 #include <QMessageBox>
 #include <QSlider>
 #include <QStatusBar>
+#include <QVBoxLayout>
 #include <cmath>
 #include <sys/stat.h>
 
@@ -22,10 +23,17 @@ ViewerWindow::ViewerWindow(const ViewerStart& start, QWidget* parent)
     view_->set_overlays(overlays_);
     setCentralWidget(view_);
     connect(view_, &RenderView::message, this, &ViewerWindow::show_message);
-    counters_ = new CountersPanel(this);
+    // The dock holds the step's counters and, under them, the energy so far.
+    auto* dock_body = new QWidget(this);
+    auto* dock_layout = new QVBoxLayout(dock_body);
+    dock_layout->setContentsMargins(0, 0, 0, 0);
+    counters_ = new CountersPanel(dock_body);
+    energy_ = new EnergyPlot(dock_body);
+    dock_layout->addWidget(counters_, 1);
+    dock_layout->addWidget(energy_);
     auto* dock = new QDockWidget("Step counters", this);
     dock->setObjectName("counters_dock");
-    dock->setWidget(counters_);
+    dock->setWidget(dock_body);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::RightDockWidgetArea, dock);
     build_actions();
@@ -116,11 +124,13 @@ void ViewerWindow::adopt_pending() {
     if (new_file) {
         watch(history_->path());
         setWindowTitle(QString("%1 - spt-viewer").arg(QFileInfo(history_->path()).fileName()));
-        show_message(QString("%1: %2 objects, %3 steps of %4 s")
+        const std::string problem = render::scene_overlays_problem(history_->effects(), overlays_.scene);
+        show_message(QString("%1: %2 objects, %3 steps of %4 s%5")
                          .arg(history_->path())
                          .arg(history_->scene().objects.size())
                          .arg(history_->target())
-                         .arg(history_->scene().dt));
+                         .arg(history_->scene().dt)
+                         .arg(problem.empty() ? QString() : "; " + QString::fromStdString(problem)));
     } else {
         show_message(QString("%1 recorded again (effects %2)")
                          .arg(history_->path(), QString::fromStdString(history_->effects().names())));
@@ -143,6 +153,7 @@ void ViewerWindow::show_state() {
         step_label_->setText(pending_ ? "loading ..." : "no scene");
         timeline_->setEnabled(false);
         counters_->show_step(nullptr, {}, 0);
+        energy_->clear();
         return;
     }
     timeline_->setEnabled(true);
@@ -160,6 +171,8 @@ void ViewerWindow::show_state() {
                              .arg(double(k) * history_->scene().dt, 0, 'f', 3));
     const auto s = history_->state(k);
     if (s) counters_->show_step(s->step ? &*s->step : nullptr, history_->effects(), state_hash(s->poses));
+    const double dt = history_->scene().dt;
+    energy_->show_energies(history_->energies(k), dt, double(history_->target()) * dt);
 }
 
 void ViewerWindow::set_playing(bool playing) {
@@ -213,6 +226,9 @@ void ViewerWindow::set_overlays(const ViewerOverlays& overlays) {
     // Only what an overlay needs is simulated: record again when the effects differ.
     const SceneHistory* base = pending_ && pending_->loaded() ? pending_.get() : history_.get();
     if (!base || !base->loaded()) return;
+    // An overlay the scene has nothing for (manifold without dynamics) stays on; the status bar says why it is empty.
+    const std::string problem = render::scene_overlays_problem(base->scene().effects, overlays_.scene);
+    if (!problem.empty()) show_message(QString::fromStdString(problem));
     const EffectSet want = render::effects_for_overlays(base->scene().effects, overlays_.scene);
     if (want.bits() == base->effects().bits()) return;
     start_pending(std::make_unique<SceneHistory>(base->shared_scene(), overlays_.scene), kFollowShownStep, false);

@@ -1,8 +1,9 @@
 #pragma once
 // spt-viewer's main window: one SceneView of a recorded scene, playback (Space, Left, Right,
-// a timeline, a speed), overlay toggles, the counters panel, PNG export, and reload when
+// a timeline, a speed), overlay toggles, the counters panel and energy plot, PNG export, and reload when
 // the scene file changes on disk. Every state drawn is one core simulated (SceneHistory).
 #include "counters_panel.hpp"
+#include "energy_plot.hpp"
 #include "scene_history.hpp"
 #include "scene_view.hpp"
 #include <QElapsedTimer>
@@ -64,6 +65,8 @@ public:
     SceneView* view() const { return view_; }
     /// The counters panel.
     CountersPanel* counters() const { return counters_; }
+    /// The energy plot under the counters.
+    EnergyPlot* energy() const { return energy_; }
     /// Writes states first..last as PNGs of the view (each `spt render` of that step, view and
     /// size), waiting for steps not recorded yet. `pattern` holds {frame} unless first == last.
     /// False with the reason (naming the file) in `error`.
@@ -98,6 +101,7 @@ private:
 
     SceneView* view_ = nullptr;
     CountersPanel* counters_ = nullptr;
+    EnergyPlot* energy_ = nullptr;
     QSlider* timeline_ = nullptr;
     QLabel* step_label_ = nullptr;
     QComboBox* speed_box_ = nullptr;

@@ -27,6 +27,7 @@ struct OverlayItem {
 };
 const OverlayItem kOverlayItems[] = {
     {"contacts", "&Contact points", "C"},  {"normals", "Contact &normals", "N"},
+    {"manifold", "Contact &manifolds (dynamics)", "M"},
     {"pairs", "Colliding sphere &pairs", "P"}, {"ghost", "&Ghost (pose before the response)", "G"},
     {"trails", "&Trails", "T"},             {"spheres", "&Sampling spheres", "S"},
     {"bounds", "&Bounding spheres", "B"},   {"broad", "Broa&d-phase spheres", "D"},

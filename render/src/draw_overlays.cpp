@@ -23,16 +23,22 @@ void Renderer::Impl::splat_collision_spheres(const CollisionOverlay& c) {
 }
 
 void Renderer::Impl::draw_collision_marks(const CollisionOverlay& c, const Bounds& b) {
-    if (c.pairs.empty()) return;
+    if (c.pairs.empty() && c.marks.empty()) return;
     const float len = c.normal_length > 0 ? c.normal_length : 0.04f * scene_diameter(b);
-    std::vector<LineVertex> lines, points;
+    std::vector<LineVertex> lines, points, marks;
     for (const SpherePair& p : c.pairs) {
         push_line_vertex(lines, p.contact, c.normal_color);
         push_line_vertex(lines, p.contact + p.normal * len, c.normal_color);
         push_line_vertex(points, p.contact, c.contact_color);
     }
+    for (const ContactMark& m : c.marks) {
+        push_line_vertex(lines, m.point, c.mark_normal_color);
+        push_line_vertex(lines, m.point + m.normal * len, c.mark_normal_color);
+        push_line_vertex(marks, m.point, m.color);
+    }
     draw_lines(lines, GL_LINES);
     draw_lines(points, GL_POINTS, c.contact_size, true);
+    draw_lines(marks, GL_POINTS, c.mark_size, true);
 }
 
 void Renderer::Impl::draw_trails(const Frame& f) {

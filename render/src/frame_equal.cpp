@@ -25,20 +25,22 @@ bool eq(const WireSphere& a, const WireSphere& b) { return eq(a.sphere, b.sphere
 bool eq(const SpherePair& a, const SpherePair& b) {
     return eq(a.a, b.a) && eq(a.b, b.b) && a.contact == b.contact && a.normal == b.normal && a.depth == b.depth;
 }
-bool eq(const Trail& a, const Trail& b) { return a.points == b.points && eq(a.color, b.color); }
-bool eq(const CollisionOverlay& a, const CollisionOverlay& b) {
-    if (a.pairs.size() != b.pairs.size()) return false;
-    for (size_t i = 0; i < a.pairs.size(); ++i)
-        if (!eq(a.pairs[i], b.pairs[i])) return false;
-    return eq(a.color_a, b.color_a) && eq(a.color_b, b.color_b) && eq(a.contact_color, b.contact_color) &&
-           eq(a.normal_color, b.normal_color) && a.normal_length == b.normal_length && a.contact_size == b.contact_size;
+bool eq(const ContactMark& a, const ContactMark& b) {
+    return a.point == b.point && a.normal == b.normal && eq(a.color, b.color);
 }
-
+bool eq(const Trail& a, const Trail& b) { return a.points == b.points && eq(a.color, b.color); }
 template <class T> bool eq(const std::vector<T>& a, const std::vector<T>& b) {
     if (a.size() != b.size()) return false;
     for (size_t i = 0; i < a.size(); ++i)
         if (!eq(a[i], b[i])) return false;
     return true;
+}
+
+bool eq(const CollisionOverlay& a, const CollisionOverlay& b) {
+    return eq(a.pairs, b.pairs) && eq(a.color_a, b.color_a) && eq(a.color_b, b.color_b) &&
+           eq(a.contact_color, b.contact_color) && eq(a.normal_color, b.normal_color) &&
+           a.normal_length == b.normal_length && a.contact_size == b.contact_size && eq(a.marks, b.marks) &&
+           eq(a.mark_normal_color, b.mark_normal_color) && a.mark_size == b.mark_size;
 }
 
 } // namespace

@@ -140,6 +140,7 @@ Bounds Renderer::bounds(const Frame& f) const {
         b.add_sphere(p.a.center, p.a.radius);
         b.add_sphere(p.b.center, p.b.radius);
     }
+    for (const ContactMark& m : f.collision.marks) b.add(m.point);
     for (const Trail& t : f.trails)
         for (const auto& p : t.points) b.add(p);
     return b;

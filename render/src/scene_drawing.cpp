@@ -34,14 +34,18 @@ std::vector<SphereInstance> spheres_of(const CollisionModel& m, const Color& col
 
 constexpr Color kBoundsColor{0.1f, 0.45f, 0.95f, 1};
 constexpr Color kBroadColor{0.95f, 0.55f, 0.05f, 1};
+// Manifold points: saturated cyan and magenta, unlike every object colour and the yellow contacts.
+constexpr Color kNewPointColor{0.0f, 0.85f, 0.9f, 1};
+constexpr Color kKeptPointColor{0.9f, 0.1f, 0.65f, 1};
 
 } // namespace
 
 bool* scene_overlay_flag(SceneOverlays& o, std::string_view name) {
     const std::pair<std::string_view, bool*> flags[] = {{"contacts", &o.contacts}, {"normals", &o.normals},
-                                                        {"pairs", &o.pairs},       {"ghost", &o.ghost},
-                                                        {"trails", &o.trails},     {"spheres", &o.spheres},
-                                                        {"bounds", &o.bounds},     {"broad", &o.broad}};
+                                                        {"manifold", &o.manifold}, {"pairs", &o.pairs},
+                                                        {"ghost", &o.ghost},       {"trails", &o.trails},
+                                                        {"spheres", &o.spheres},   {"bounds", &o.bounds},
+                                                        {"broad", &o.broad}};
     for (const auto& [n, flag] : flags)
         if (n == name) return flag;
     return nullptr;
@@ -52,6 +56,15 @@ EffectSet effects_for_overlays(EffectSet e, const SceneOverlays& o) {
     if (o.pairs) e.add(Effect::Contacts), e.add(Effect::Pairs);
     return e;
 }
+
+std::string scene_overlays_problem(EffectSet effects, const SceneOverlays& o) {
+    if (!o.manifold || effects.has(Effect::Dynamics)) return {};
+    const std::string names = effects.names();
+    return "overlay 'manifold' draws the contact manifolds of effect 'dynamics', which this scene does not run "
+           "(its effects: " + (names.empty() ? std::string("none") : names) + ")";
+}
+
+Color manifold_point_color(int age) { return age == 0 ? kNewPointColor : kKeptPointColor; }
 
 SceneDrawing::SceneDrawing(Renderer& renderer, const Scene& scene) : scene_(scene) {
     std::map<std::pair<const CollisionModel*, bool>, std::pair<MeshHandle, SphereSetHandle>> done;
@@ -164,6 +177,9 @@ Frame SceneDrawing::frame(const std::vector<Pose>& poses, const StepResult* step
                 p.depth = float(c.depth);
                 f.collision.pairs.push_back(p);
             }
+            if (o.manifold)
+                for (const ContactPoint& m : c.manifold)
+                    f.collision.marks.push_back({m.point.cast<float>(), m.normal.cast<float>(), manifold_point_color(m.age)});
             if (o.pairs) {
                 const CollisionModel &ma = model_of(c.a), &mb = model_of(c.b);
                 for (const spt::SpherePair& sp : c.pairs) {

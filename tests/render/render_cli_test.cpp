@@ -228,6 +228,14 @@ TEST(RenderSceneCli, FramesAreWrittenOneAPngAndSceneOverlaysNeedAScene) {
                                spt::test::q(std::string(SPT_SOURCE_DIR) + "/resources/meshes/box.ply") +
                                " --overlay contacts -o " + spt::test::q(dir + "/m.png"));
     EXPECT_EQ(r.exit_code, 1) << r.output;
+    // Contact manifolds exist only with effect dynamics: a scene without it is refused, naming both,
+    // rather than rendered with the overlay silently empty.
+    r = spt::test::run_command(spt::test::spt_binary() + " render " + spt::test::q(scene) +
+                               " --size 64x64 --overlay manifold -o " + spt::test::q(dir + "/m.png"));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("thin_wall.json"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("'manifold'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("'dynamics'"), std::string::npos) << r.output;
     std::filesystem::remove_all(dir);
 }
 

@@ -70,3 +70,35 @@ TEST(golden, scene_pile) {
 }
 
 } // namespace
+
+namespace {
+
+// Scenes with effect dynamics, overlay manifold: each manifold point a dot (new this step or kept
+// and warm-started, two colours) with its normal.
+
+TEST(golden, scene_bounce_rebound) {
+    // Step 90 is the one step the ball touches the floor: its new manifold points under it.
+    EXPECT_GOLDEN(render_scene("bounce.json", 90, "--view front --overlay manifold,contacts,normals,trails,grid"),
+                  "scene_bounce");
+}
+
+TEST(golden, scene_slope_holds_and_slides) {
+    // After 2 s the box with friction 0.6 holds where it was put (kept points), the one with 0.2 has slid
+    // down its trail (its points are new as they move).
+    EXPECT_GOLDEN(render_scene("slope.json", 200, "--overlay manifold,trails,grid"), "scene_slope");
+}
+
+TEST(golden, scene_stack_standing) {
+    EXPECT_GOLDEN(render_scene("stack.json", 500, "--view front --overlay manifold,grid"), "scene_stack");
+}
+
+TEST(golden, scene_balls_in_box_heaped) {
+    EXPECT_GOLDEN(render_scene("balls_in_box.json", 300, "--overlay manifold,grid"), "scene_balls_in_box");
+}
+
+TEST(golden, scene_pile_dynamics_heaped) {
+    // 1000 objects: frame 100 (1 s, the cube already slumped into a heap) keeps the render to seconds.
+    EXPECT_GOLDEN(render_scene("pile_dynamics.json", 100, "--overlay manifold,grid"), "scene_pile_dynamics");
+}
+
+} // namespace

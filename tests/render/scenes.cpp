@@ -123,7 +123,7 @@ Frame collision_scene(Renderer& r, size_t* pairs) {
 
 Camera collision_close_up(const Frame& frame, View view) {
     Bounds b;
-    for (const SpherePair& p : frame.collision.pairs) b.add_sphere(p.a.center, p.a.radius), b.add_sphere(p.b.center, p.b.radius);
+    for (const render::SpherePair& p : frame.collision.pairs) b.add_sphere(p.a.center, p.a.radius), b.add_sphere(p.b.center, p.b.radius);
     Camera c = fit_camera(view, b);
     c.radius *= 1.5f;
     return c;

@@ -6,12 +6,13 @@ using spt::editor::parse_viewer_arguments;
 
 TEST(ViewerOptions, AcceptsEveryOption) {
     const auto c = parse_viewer_arguments({"scene.json", "--step", "12", "--view", "front", "--overlay",
-                                           "contacts,trails,broad", "--speed", "2.5", "--play", "--size", "640x480"});
+                                           "contacts,trails,broad,manifold", "--speed", "2.5", "--play", "--size", "640x480"});
     ASSERT_TRUE(c.error.isEmpty()) << c.error.toStdString();
     EXPECT_EQ(c.start.file, "scene.json");
     EXPECT_EQ(c.start.step, 12);
     EXPECT_EQ(c.start.view, spt::render::View::Front);
     EXPECT_TRUE(c.start.overlays.scene.contacts && c.start.overlays.scene.trails && c.start.overlays.scene.broad);
+    EXPECT_TRUE(c.start.overlays.scene.manifold);
     EXPECT_FALSE(c.start.overlays.grid) << "an --overlay list replaces the default grid,axes";
     EXPECT_DOUBLE_EQ(c.start.speed, 2.5);
     EXPECT_TRUE(c.start.play);

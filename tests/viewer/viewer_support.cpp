@@ -56,6 +56,19 @@ QString write_drop_scene(const TempDir& dir, int steps, const char* effects_json
     return QString::fromStdString(path);
 }
 
+std::unique_ptr<editor::ViewerWindow> show_viewer(const QString& scene, const editor::ViewerOverlays& overlays,
+                                                  render::View view, int step) {
+    editor::ViewerStart start;
+    start.file = scene;
+    start.overlays = overlays;
+    start.view = view;
+    start.step = step;
+    auto w = std::make_unique<editor::ViewerWindow>(start);
+    w->view()->setFixedSize(320, 240);
+    w->show();
+    return w;
+}
+
 bool wait_recorded(editor::ViewerWindow& w, int k, int timeout_ms) {
     return wait_for(
         [&] {
@@ -87,6 +100,18 @@ render::Image spt_render_frame(const TempDir& dir, const QString& scene, int fra
     render::Image image = render::read_png(png.toStdString());
     for (size_t k = 3; k < image.rgba.size(); k += 4) image.rgba[k] = 255;
     return image;
+}
+
+render::CompareResult compare_with_spt_render(editor::ViewerWindow& w, const TempDir& dir, const QString& scene, int step,
+                                              render::View view, const QString& overlays, render::Image& shown,
+                                              std::string& error) {
+    w.view()->set_view(view);
+    w.set_step(step);
+    shown = to_image(w.view()->grabFramebuffer());
+    const render::Image expected = spt_render_frame(dir, scene, step, render::view_name(view),
+                                                    QSize(shown.width, shown.height), overlays, &error);
+    if (!error.empty()) return {};
+    return render::compare_images(shown, expected);
 }
 
 std::string viewer_output_dir() {

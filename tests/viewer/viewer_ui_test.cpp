@@ -16,19 +16,6 @@ namespace {
 
 const char* kResponseEffects = R"(["motion","gravity","contacts","depth","response"])";
 
-std::unique_ptr<editor::ViewerWindow> open_viewer(const QString& scene, const editor::ViewerOverlays& overlays,
-                                                  render::View view, int step) {
-    editor::ViewerStart start;
-    start.file = scene;
-    start.overlays = overlays;
-    start.view = view;
-    start.step = step;
-    auto w = std::make_unique<editor::ViewerWindow>(start);
-    w->view()->setFixedSize(320, 240);
-    w->show();
-    return w;
-}
-
 // `spt simulate SCENE` as CSV rows, header first.
 std::vector<QStringList> simulate_rows(const QString& scene) {
     QProcess spt;
@@ -47,22 +34,19 @@ TEST(ViewerUi, FrameEqualsSptRenderOfTheSameSceneStepViewAndSize) {
     const QString scene = write_drop_scene(dir, 60, kResponseEffects);
     editor::ViewerOverlays o;
     o.scene.contacts = o.scene.normals = o.scene.trails = o.scene.bounds = o.scene.broad = o.scene.ghost = true;
-    auto w = open_viewer(scene, o, render::View::Camera, 45);
+    auto w = show_viewer(scene, o, render::View::Camera, 45);
     ASSERT_TRUE(wait_recorded(*w, 45)) << w->last_error().toStdString();
     ASSERT_TRUE(wait_idle(*w));
     ASSERT_EQ(w->step(), 45);
     const QString overlays = "contacts,normals,trails,bounds,broad,ghost,grid,axes";
-    for (const char* view : {"camera", "front"}) {
-        w->view()->set_view(std::string(view) == "camera" ? render::View::Camera : render::View::Front);
+    for (render::View v : {render::View::Camera, render::View::Front}) {
+        const std::string view = render::view_name(v);
         for (int step : {0, 45}) {
-            w->set_step(step);
-            const render::Image shown = to_image(w->view()->grabFramebuffer());
-            ASSERT_EQ(shown.width, 320 * int(w->view()->devicePixelRatioF()));
+            render::Image shown;
             std::string error;
-            const render::Image expected =
-                spt_render_frame(dir, scene, step, view, QSize(shown.width, shown.height), overlays, &error);
+            const render::CompareResult r = compare_with_spt_render(*w, dir, scene, step, v, overlays, shown, error);
             ASSERT_TRUE(error.empty()) << error;
-            const render::CompareResult r = render::compare_images(shown, expected);
+            ASSERT_EQ(shown.width, 320 * int(w->view()->devicePixelRatioF()));
             EXPECT_TRUE(r.passed) << view << " step " << step << ": " << r.summary();
             render::write_png(shown, viewer_output_dir() + "/viewer_" + view + "_" + std::to_string(step) + ".png");
         }
@@ -71,7 +55,7 @@ TEST(ViewerUi, FrameEqualsSptRenderOfTheSameSceneStepViewAndSize) {
 
 TEST(ViewerUi, SpacePlaysAndPausesArrowsStepBackAndForth) {
     TempDir dir("viewer-play");
-    auto w = open_viewer(write_drop_scene(dir, 400, kResponseEffects), {}, render::View::Camera, 0);
+    auto w = show_viewer(write_drop_scene(dir, 400, kResponseEffects), {}, render::View::Camera, 0);
     ASSERT_TRUE(wait_recorded(*w, 0));
     ASSERT_TRUE(wait_idle(*w));
     w->set_speed(4);
@@ -112,7 +96,7 @@ TEST(ViewerUi, CountersShowTheNumbersOfSptSimulate) {
     const std::vector<QStringList> rows = simulate_rows(scene);
     ASSERT_EQ(rows.size(), 61u);
     ASSERT_EQ(rows[0], editor::steps_csv_columns());
-    auto w = open_viewer(scene, {}, render::View::Camera, 60);
+    auto w = show_viewer(scene, {}, render::View::Camera, 60);
     ASSERT_TRUE(wait_recorded(*w, 60));
     int colliding_steps = 0;
     for (int k = 1; k <= 60; ++k) {
@@ -133,7 +117,7 @@ TEST(ViewerUi, CountersShowTheNumbersOfSptSimulate) {
 
 TEST(ViewerUi, OverlayThatNeedsAnEffectRecordsAgainAndKeepsTheStep) {
     TempDir dir("viewer-effects");
-    auto w = open_viewer(write_drop_scene(dir, 60, R"(["motion","gravity","contacts"])"), {}, render::View::Camera,
+    auto w = show_viewer(write_drop_scene(dir, 60, R"(["motion","gravity","contacts"])"), {}, render::View::Camera,
                          50);
     ASSERT_TRUE(wait_recorded(*w, 50));
     ASSERT_TRUE(wait_idle(*w));
@@ -166,7 +150,7 @@ TEST(ViewerUi, OverlayThatNeedsAnEffectRecordsAgainAndKeepsTheStep) {
 TEST(ViewerUi, ExportRangeWritesOnePngAStepEqualToSptRender) {
     TempDir dir("viewer-export");
     const QString scene = write_drop_scene(dir, 40, kResponseEffects);
-    auto w = open_viewer(scene, {}, render::View::Side, 0);
+    auto w = show_viewer(scene, {}, render::View::Side, 0);
     ASSERT_TRUE(wait_recorded(*w, 0));
     ASSERT_TRUE(wait_idle(*w));
     QString error;
@@ -196,7 +180,7 @@ TEST(ViewerUi, BundledFig8SceneShowsItsCollisionAtStep30) {
     // window is saved for docs/viewer.md and the README.
     editor::ViewerOverlays o;
     o.scene.contacts = o.scene.normals = o.scene.ghost = o.scene.trails = true;
-    auto w = open_viewer(QString(SPT_SOURCE_DIR) + "/resources/scenes/fig8.json", o, render::View::Camera, 30);
+    auto w = show_viewer(QString(SPT_SOURCE_DIR) + "/resources/scenes/fig8.json", o, render::View::Camera, 30);
     w->view()->setMinimumSize(0, 0);
     w->view()->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
     w->resize(1100, 640);

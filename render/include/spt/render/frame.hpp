@@ -103,8 +103,17 @@ struct SpherePair {
     float depth = 0;           ///< penetration depth, model units
 };
 
+/// A contact point in a colour of its own, with its normal: a point of a contact manifold
+/// (scene overlay `manifold`). World frame.
+struct ContactMark {
+    Eigen::Vector3f point = Eigen::Vector3f::Zero();   ///< world frame, model units
+    Eigen::Vector3f normal = Eigen::Vector3f::UnitY(); ///< unit; drawn from the point along it, as a pair's normal
+    Color color{1.0f, 0.85f, 0.1f, 1};                 ///< the point's fill
+};
+
 /// Colliding sphere pairs as a query reports them (collision_overlay.hpp makes them):
 /// the two objects' spheres depth-tested, contact points and normals on top of everything.
+/// Marks (manifold points) are drawn on top too, after the pairs' contacts.
 struct CollisionOverlay {
     std::vector<SpherePair> pairs;                 ///< world frame; empty draws nothing
     Color color_a{0.93f, 0.27f, 0.18f, 1};         ///< fill of the first object's spheres
@@ -113,6 +122,9 @@ struct CollisionOverlay {
     Color normal_color{0.05f, 0.05f, 0.05f, 1};    ///< normal segments, drawn from the contact along the normal
     float normal_length = 0;   ///< model units; 0: 4% of the scene's bounding diameter
     float contact_size = 6;    ///< diameter of a contact point, framebuffer pixels
+    std::vector<ContactMark> marks;                ///< world frame; each point in its own colour, with its normal
+    Color mark_normal_color{0.1f, 0.2f, 0.5f, 1};  ///< the marks' normal segments (as long as the pairs')
+    float mark_size = 5;       ///< diameter of a mark, framebuffer pixels
 };
 
 /// A polyline through successive positions of a moving point. World frame.

@@ -1,12 +1,13 @@
 #pragma once
 /// A simulated scene as a Frame: each object's mesh (or, for a .spt model, its sampling spheres)
-/// at its pose, and the scene overlays (contacts, normals, pairs, ghost, trails). Shared by
+/// at its pose, and the scene overlays (contacts, normals, manifold, pairs, ghost, trails). Shared by
 /// `spt render SCENE.json` and a viewer, so both draw the same pixels. World frame, model units.
 #include "spt/render/frame.hpp"
 #include "spt/render/renderer.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/simulation.hpp"
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -16,6 +17,7 @@ namespace spt::render {
 struct SceneOverlays {
     bool contacts = false; ///< contact points of the colliding pairs (needs effect depth)
     bool normals = false;  ///< contact normals (needs effect depth)
+    bool manifold = false; ///< contact manifold points and their normals, new and kept ones in two colours (effect dynamics)
     bool pairs = false;    ///< every overlapping sphere pair (needs effect pairs)
     bool ghost = false;    ///< objects at their pose before the response, see-through
     bool trails = false;   ///< the path of each moving object's origin so far
@@ -25,12 +27,21 @@ struct SceneOverlays {
 };
 
 /// The flag of scene overlay `name` in `overlays`, spelled as `spt render --overlay` spells it
-/// (contacts, normals, pairs, ghost, trails, spheres, bounds, broad); nullptr for any other name.
+/// (contacts, normals, manifold, pairs, ghost, trails, spheres, bounds, broad); nullptr for any other name.
 bool* scene_overlay_flag(SceneOverlays& overlays, std::string_view name);
 
 /// The effects a simulation needs so that `overlays` can be drawn: `scene` plus contacts and
-/// depth for contacts and normals, plus contacts and pairs for pairs. Nothing else is added.
+/// depth for contacts and normals, plus contacts and pairs for pairs. Nothing else is added:
+/// manifold needs dynamics, which changes the motion, so it draws only what the scene runs.
 EffectSet effects_for_overlays(EffectSet scene, const SceneOverlays& overlays);
+
+/// Why `overlays` would draw nothing of a simulation with `effects` (manifold without effect
+/// dynamics), naming the overlay and the effects; empty when every overlay can be drawn.
+std::string scene_overlays_problem(EffectSet effects, const SceneOverlays& overlays);
+
+/// The colour of a manifold point in overlay `manifold`: one for a point new this step (age 0),
+/// another for one kept from earlier steps (the solver warm-starts it).
+Color manifold_point_color(int age);
 
 /// The uploaded geometry of one scene.
 class SceneDrawing {
