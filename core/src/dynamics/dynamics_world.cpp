@@ -58,6 +58,20 @@ struct DynamicsWorld::Impl {
     }
 };
 
+void configure_solver(btContactSolverInfo& solving, const Scene& scene, double gravity) {
+    solving.m_numIterations = scene.dynamics.iterations;
+    // Every overlap is pushed out by the split impulse, which moves positions and adds no
+    // velocity: with restitution 0 no contact adds energy (docs/scenes.md, "Dynamics").
+    solving.m_splitImpulse = 1;
+    solving.m_splitImpulsePenetrationThreshold = 0;
+    solving.m_erp2 = 0.8;
+    solving.m_warmstartingFactor = 1;
+    // A contact bounces only when it closes faster than gravity alone makes it in two steps: a
+    // resting contact never does, whatever the scene's units.
+    solving.m_restitutionVelocityThreshold = btScalar(2 * gravity * scene.dt);
+    solving.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+}
+
 DynamicsWorld::DynamicsWorld(const Scene& scene, bool gravity, bool keep_pairs, int threads, TaskSystem* tasks,
                              std::vector<QueryScratch>* scratch)
     : impl_(std::make_unique<Impl>()) {
@@ -98,18 +112,7 @@ DynamicsWorld::DynamicsWorld(const Scene& scene, bool gravity, bool keep_pairs, 
     m.solver = std::make_unique<btSequentialImpulseConstraintSolver>();
     m.world = std::make_unique<TimedWorld>(m.dispatcher.get(), m.broadphase.get(), m.solver.get(), m.configuration.get());
     m.world->setGravity(to_bt(gravity ? scene.gravity : Eigen::Vector3d::Zero()));
-    btContactSolverInfo& solving = m.world->getSolverInfo();
-    solving.m_numIterations = scene.dynamics.iterations;
-    // Every overlap is pushed out by the split impulse, which moves positions and adds no
-    // velocity: with restitution 0 no contact adds energy (docs/scenes.md, "Dynamics").
-    solving.m_splitImpulse = 1;
-    solving.m_splitImpulsePenetrationThreshold = 0;
-    solving.m_erp2 = 0.8;
-    solving.m_warmstartingFactor = 1;
-    // A contact bounces only when it closes faster than gravity alone makes it in two steps: a
-    // resting contact never does, whatever the scene's units.
-    solving.m_restitutionVelocityThreshold = btScalar(2 * m.context.gravity * scene.dt);
-    solving.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+    configure_solver(m.world->getSolverInfo(), scene, m.context.gravity);
 
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];

@@ -7,9 +7,16 @@
 #include <memory>
 #include <vector>
 
+struct btContactSolverInfo;
+
 namespace spt::detail {
 
 struct BodyInfo;
+
+/// Sets Bullet's solver as effect dynamics steps with: the scene's iterations, split impulse, no
+/// bounce slower than `gravity` (|g|, 0 without gravity) makes in two steps. Shared with the
+/// benchmark's plain Bullet world (bench/dynamics), so that only the contacts differ.
+void configure_solver(btContactSolverInfo& solving, const Scene& scene, double gravity);
 
 class DynamicsWorld {
 public:
