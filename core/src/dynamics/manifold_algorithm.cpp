@@ -120,7 +120,7 @@ void ManifoldAlgorithm::collide(QueryScratch& scratch, ManifoldWork& work) {
                 const Eigen::Vector3d on0 = from_bt(t0 * p.m_localPointA), on1 = from_bt(t1 * p.m_localPointB);
                 const Eigen::Vector3d n1 = from_bt(t1.getBasis() * normal_in_1_[size_t(k)]);
                 const Eigen::Vector3d ab = a_first ? Eigen::Vector3d(-n1) : n1;
-                const double depth = (on1 - on0).dot(n1); // a's point beyond b's, along the normal on 1 towards 0
+                const double depth = (on1 - on0).dot(n1); // body0's point past body1's, against the normal on body1
                 write_point(p, on0, on1, n1, depth, slop, oa, ob, ab);
                 p.m_lifeTime += 1;
             }
