@@ -152,6 +152,9 @@ TEST(DynamicsSettings, WhatBulletsFloatCannotHoldIsRefusedBeforeAStepNotHungOn) 
     Scene tiny = s;
     tiny.objects[1].mass = 1e-30;
     refused(tiny, "object 'box' has a mass of 1e-30");
+    Scene instant = s;
+    instant.dt = 1e-9;
+    refused(instant, "dt of 1e-09 s");
     Scene fast = s;
     fast.objects[1].velocity = Eigen::Vector3d(1e200, 0, 0);
     refused(fast, "object 'box' moves too fast");

@@ -92,6 +92,10 @@ DynamicsWorld::DynamicsWorld(const Scene& scene, bool gravity, bool keep_pairs, 
     if (gravity && !(scene.gravity.stableNorm() <= limit && scene.gravity.stableNorm() * scene.dt <= limit))
         refuse("gravity of " + number(scene.gravity.stableNorm()) + " with dt " + number(scene.dt));
     if (!(scene.dt <= limit)) refuse("dt of " + number(scene.dt));
+    // Bullet takes a step shorter than float's epsilon for none at all: the scene would stand still.
+    if (!(scene.dt >= 1e-6))
+        throw Error(ErrorKind::BadInput, scene.file + ": dt of " + number(scene.dt) +
+                                             " s: the solver (float) takes steps from 1e-6 s; shorter ones it skips");
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         if (o.motion == MotionKind::Velocity &&
