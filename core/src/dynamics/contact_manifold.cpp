@@ -2,20 +2,12 @@
 #include "dynamics/contact_manifold.hpp"
 #include "query/query_run.hpp"
 #include "query/scratch.hpp"
+#include "query/world_sphere.hpp"
 #include <algorithm>
 #include <cmath>
 
 namespace spt::detail {
 namespace {
-
-Eigen::Vector3d world_centre(const CollisionModel& m, const Pose& p, uint32_t node, uint32_t sphere) {
-    const CompactTree& t = m.tree();
-    return p.apply(m.origin() + t.sphere_center(t.nodes()[node], sphere).cast<double>());
-}
-
-Eigen::Vector3d sphere_normal(const CompactTree& t, uint32_t sphere) {
-    return Eigen::Vector3d(t.nx()[sphere], t.ny()[sphere], t.nz()[sphere]) / 127.0;
-}
 
 // Below this, a pair's two surfaces do not face each other (-n_a . n_b).
 constexpr double kFacing = 0.1;
@@ -26,7 +18,7 @@ constexpr double kSquarely = 0.98;
 // where its sphere is two-sided (its normal is an axis); also the pair's centres, radii and normals.
 double facing(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb, const SpherePair& p,
               PairFrame* f = nullptr, Eigen::Vector3d* na_out = nullptr, Eigen::Vector3d* nb_out = nullptr) {
-    const Eigen::Vector3d ca = world_centre(a, pa, p.node_a, p.a), cb = world_centre(b, pb, p.node_b, p.b);
+    const Eigen::Vector3d ca = world_sphere_centre(a, pa, p.node_a, p.a), cb = world_sphere_centre(b, pb, p.node_b, p.b);
     const Eigen::Vector3d ab = cb - ca;
     Eigen::Vector3d na = pa.rotate(sphere_normal(a.tree(), p.a)), nb = pb.rotate(sphere_normal(b.tree(), p.b));
     const uint8_t *two_a = a.tree().two_sided(), *two_b = b.tree().two_sided();
@@ -140,11 +132,11 @@ void contact_manifold(const CollisionModel& a, const Pose& pa, const CollisionMo
         QueryOptions own = q;
         own.inflate = 0;
         const QueryResult r0 = collide_all_unless_deep(a, pa, b, pb, own, scratch, deep);
-        out.counters.node_pairs += r0.counters.node_pairs, out.counters.sphere_tests += r0.counters.sphere_tests;
+        add_counters(out.counters, r0.counters);
         if (!deep || !crossing()) {
             q.mode = QueryMode::All;
             const QueryResult all = collide(a, pa, b, pb, q, scratch);
-            out.counters.node_pairs += all.counters.node_pairs, out.counters.sphere_tests += all.counters.sphere_tests;
+            add_counters(out.counters, all.counters);
             deep = false;
         }
     }
@@ -183,7 +175,7 @@ void contact_manifold(const CollisionModel& a, const Pose& pa, const CollisionMo
     if (frames.empty()) { // no two surfaces face each other: every pair, along their centres
         for (const SpherePair& p : pairs) {
             PairFrame f;
-            f.ca = world_centre(a, pa, p.node_a, p.a), f.cb = world_centre(b, pb, p.node_b, p.b);
+            f.ca = world_sphere_centre(a, pa, p.node_a, p.a), f.cb = world_sphere_centre(b, pb, p.node_b, p.b);
             f.ra = a.tree().nodes()[p.node_a].ss_radius, f.rb = b.tree().nodes()[p.node_b].ss_radius;
             sum += double(p.depth) * (f.cb - f.ca).normalized();
             frames.push_back(f);

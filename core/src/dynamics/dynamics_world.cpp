@@ -21,6 +21,13 @@ int64_t elapsed_ns(Clock::time_point t0) {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
 }
 
+// `v` as a message writes it (shortest of fixed or exponent).
+std::string message_number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
 } // namespace
 
 // Bullet's world with the broad phase timed apart from the rest.
@@ -84,17 +91,12 @@ DynamicsWorld::DynamicsWorld(const Scene& scene, bool gravity, bool keep_pairs, 
         throw Error(ErrorKind::BadInput, scene.file + ": " + what + ": the solver (float) takes speeds, gravity and their "
                                                                   "change in a step up to 1e15");
     };
-    auto number = [](double v) {
-        std::ostringstream s;
-        s << v;
-        return s.str();
-    };
     if (gravity && !(scene.gravity.stableNorm() <= limit && scene.gravity.stableNorm() * scene.dt <= limit))
-        refuse("gravity of " + number(scene.gravity.stableNorm()) + " with dt " + number(scene.dt));
-    if (!(scene.dt <= limit)) refuse("dt of " + number(scene.dt));
+        refuse("gravity of " + message_number(scene.gravity.stableNorm()) + " with dt " + message_number(scene.dt));
+    if (!(scene.dt <= limit)) refuse("dt of " + message_number(scene.dt));
     // Bullet takes a step shorter than float's epsilon for none at all: the scene would stand still.
     if (!(scene.dt >= 1e-6))
-        throw Error(ErrorKind::BadInput, scene.file + ": dt of " + number(scene.dt) +
+        throw Error(ErrorKind::BadInput, scene.file + ": dt of " + message_number(scene.dt) +
                                              " s: the solver (float) takes steps from 1e-6 s; shorter ones it skips");
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
@@ -127,6 +129,11 @@ DynamicsWorld::DynamicsWorld(const Scene& scene, bool gravity, bool keep_pairs, 
         RigidMass rm;
         if (o.motion == MotionKind::Velocity) {
             rm = rigid_mass(o, scene.file, i);
+            // Float's limits again: the solver's inverse masses and impulses must stay far from them.
+            if (!(rm.mass >= 1e-12 && rm.mass <= 1e12) || !rm.principal_moments.allFinite())
+                throw Error(ErrorKind::BadInput, scene.file + ": at /objects/" + std::to_string(i) + ": object '" + o.name +
+                                                     "' has a mass of " + message_number(rm.mass) +
+                                                     ": the solver (float) takes masses from 1e-12 to 1e12");
             info->moves = true;
             info->mass = rm.mass;
             info->inertia = rm.principal_moments;

@@ -3,7 +3,6 @@
 #include "spt/error.hpp"
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <sstream>
 
 namespace spt::detail {
 namespace {
@@ -46,11 +45,6 @@ RigidMass rigid_mass(const SceneObject& o, const std::string& scene_file, size_t
                                              : "a .spt file without its closed mesh") +
                         "; give it a 'mass'");
     }
-    // Bullet's solver works in float: its inverse masses and impulses must stay far from float's limits.
-    if (!(r.mass >= 1e-12 && r.mass <= 1e12) || !inertia.allFinite())
-        throw Error(ErrorKind::BadInput, scene_file + ": at /objects/" + std::to_string(index) + ": object '" + o.name +
-                                             "' has a mass of " + [&] { std::ostringstream m; m << r.mass; return m.str(); }() +
-                                             ": the solver (float) takes masses from 1e-12 to 1e12");
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (inertia + inertia.transpose()));
     Eigen::Matrix3d axes = eigen.eigenvectors();
     if (axes.determinant() < 0) axes.col(2) = -axes.col(2); // a rotation, not a reflection

@@ -89,6 +89,12 @@ inline void keep_exit(ExitSearch& e, double root, double reach) {
     else if (root == e.root) e.reach = std::max(e.reach, reach);
 }
 
+// Adds one query's counters to a sum of several.
+inline void add_counters(QueryCounters& to, const QueryCounters& c) {
+    to.node_pairs += c.node_pairs, to.bound_tests += c.bound_tests, to.sphere_tests += c.sphere_tests;
+    to.triangle_tests += c.triangle_tests;
+}
+
 // A deep pair overlaps by more than half its reach (r_a + r_b, grown): its surfaces have crossed
 // by a sampling radius, rather than press (docs/scenes.md, "Deep overlaps").
 inline bool is_deep_pair(const SpherePair& p) { return p.reach - p.depth < 0.5f * p.reach; }

@@ -3,22 +3,11 @@
 #include "scene/pair_work.hpp"
 #include "query/query_run.hpp"
 #include "query/scratch.hpp"
+#include "query/world_sphere.hpp"
 #include <algorithm>
 #include <cmath>
 
 namespace spt::detail {
-namespace {
-
-Eigen::Vector3d surface_normal(const CompactTree& t, uint32_t sphere) {
-    return Eigen::Vector3d(t.nx()[sphere], t.ny()[sphere], t.nz()[sphere]) / 127.0;
-}
-
-Eigen::Vector3d centre(const CollisionModel& m, const Pose& p, uint32_t node, uint32_t sphere) {
-    const CompactTree& t = m.tree();
-    return p.apply(m.origin() + t.sphere_center(t.nodes()[node], sphere).cast<double>());
-}
-
-} // namespace
 
 Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const CollisionModel& b, const Pose& pb,
                                const std::vector<SpherePair>& pairs, const Eigen::Vector3d& fallback, bool a_moves,
@@ -30,8 +19,8 @@ Eigen::Vector3d contact_normal(const CollisionModel& a, const Pose& pa, const Co
     m.memo_ca.start(a.tree().sphere_count()), m.memo_cb.start(b.tree().sphere_count());
     auto frame = [](const CollisionModel& o, const Pose& p, uint32_t node, uint32_t sphere) {
         Eigen::Matrix<double, 3, 2> v;
-        v.col(0) = centre(o, p, node, sphere);
-        v.col(1) = p.rotate(surface_normal(o.tree(), sphere));
+        v.col(0) = world_sphere_centre(o, p, node, sphere);
+        v.col(1) = p.rotate(sphere_normal(o.tree(), sphere));
         return v;
     };
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
@@ -82,7 +71,7 @@ void from_pairs(const CollisionModel& a, const Pose& pa, const CollisionModel& b
         w.point = ca + w.normal * (double(na.bv_radius) - 0.5 * double(best->depth));
         return;
     }
-    const Eigen::Vector3d ca = centre(a, pa, best->node_a, best->a), cb = centre(b, pb, best->node_b, best->b);
+    const Eigen::Vector3d ca = world_sphere_centre(a, pa, best->node_a, best->a), cb = world_sphere_centre(b, pb, best->node_b, best->b);
     const Eigen::Vector3d line = (cb - ca).norm() > 0 ? Eigen::Vector3d((cb - ca).normalized()) : Eigen::Vector3d::UnitX();
     const double ra = a.tree().nodes()[best->node_a].ss_radius;
     w.point = ca + line * (ra - 0.5 * double(best->depth)); // middle of the overlap
@@ -102,9 +91,9 @@ void leaf_pair(const CollisionModel& a, const Pose& pa, const CollisionModel& b,
     const float reach = na.ss_radius + nb.ss_radius + inflate;
     pairs.clear();
     for (uint32_t i = na.first; i < na.first + na.count; ++i) {
-        const Eigen::Vector3d ca = centre(a, pa, node_a, i);
+        const Eigen::Vector3d ca = world_sphere_centre(a, pa, node_a, i);
         for (uint32_t j = nb.first; j < nb.first + nb.count; ++j) {
-            const double depth = double(reach) - (centre(b, pb, node_b, j) - ca).norm();
+            const double depth = double(reach) - (world_sphere_centre(b, pb, node_b, j) - ca).norm();
             if (depth > 0) pairs.push_back({i, j, node_a, node_b, float(depth), reach});
         }
     }
@@ -119,12 +108,11 @@ void deep_contact(const CollisionModel& a, const Pose& pa, const CollisionModel&
     QueryOptions q = all;
     q.mode = QueryMode::Deepest;
     const QueryResult r = collide(a, pa, b, pb, q, scratch);
-    w.qc.node_pairs += r.counters.node_pairs, w.qc.bound_tests += r.counters.bound_tests;
-    w.qc.sphere_tests += r.counters.sphere_tests;
+    add_counters(w.qc, r.counters);
     detail::ScratchBuffers& s = detail::buffers_of(scratch);
     const uint32_t node_a = s.deepest_node_a, node_b = s.deepest_node_b;
     w.depth = std::max(0.0, r.deepest.depth - double(q.inflate));
-    const Eigen::Vector3d ca = centre(a, pa, node_a, r.deepest.a), cb = centre(b, pb, node_b, r.deepest.b);
+    const Eigen::Vector3d ca = world_sphere_centre(a, pa, node_a, r.deepest.a), cb = world_sphere_centre(b, pb, node_b, r.deepest.b);
     const Eigen::Vector3d line = (cb - ca).norm() > 0 ? Eigen::Vector3d((cb - ca).normalized()) : Eigen::Vector3d::UnitX();
     const double ra = a.tree().nodes()[node_a].ss_radius;
     w.point = ca + line * (ra - 0.5 * r.deepest.depth); // middle of the overlap, as contact_from_pairs
@@ -144,8 +132,7 @@ void deepest_contact(const CollisionModel& a, const Pose& pa, const CollisionMod
     // overlap is deep.
     bool deep = false;
     const QueryResult r = collide_all_unless_deep(a, pa, b, pb, q, scratch, deep);
-    w.qc.node_pairs += r.counters.node_pairs, w.qc.bound_tests += r.counters.bound_tests;
-    w.qc.sphere_tests += r.counters.sphere_tests, w.qc.triangle_tests += r.counters.triangle_tests;
+    add_counters(w.qc, r.counters);
     w.deep = deep;
     if (deep) return deep_contact(a, pa, b, pb, q, a_dynamic, b_dynamic, w, scratch);
     from_pairs(a, pa, b, pb, level, band, a_dynamic, b_dynamic, scratch.pairs(), r.collide, r.deepest.point, w, scratch);

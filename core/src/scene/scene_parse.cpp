@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -36,6 +37,12 @@ public:
         if (!std::isfinite(v)) fail(path, "must be finite");
         return v;
     }
+    // A number from lo to hi, both included; else "must be " + range.
+    double number_in(const json& j, const std::string& path, double lo, double hi, const char* range) const {
+        const double v = number(j, path);
+        if (!(v >= lo && v <= hi)) fail(path, std::string("must be ") + range);
+        return v;
+    }
     Eigen::Vector3d vec3(const json& j, const std::string& path) const {
         if (!j.is_array() || j.size() != 3) fail(path, "must be an array of 3 numbers");
         return {number(j[0], path + "/0"), number(j[1], path + "/1"), number(j[2], path + "/2")};
@@ -59,6 +66,17 @@ public:
 private:
     std::string file_;
 };
+
+// How a contact of the object (or, top-level, any pair) behaves under effect dynamics: the fields
+// of `j` that are there, written over the three values.
+void read_contact_settings(const Reader& r, const json& j, const std::string& p, double& friction, double& restitution,
+                           double& rolling_friction) {
+    if (j.contains("friction")) friction = r.number_in(j["friction"], p + "/friction", 0, 1e3, "from 0 to 1000");
+    if (j.contains("restitution"))
+        restitution = r.number_in(j["restitution"], p + "/restitution", 0, 1, "between 0 and 1");
+    if (j.contains("rolling_friction"))
+        rolling_friction = r.number_in(j["rolling_friction"], p + "/rolling_friction", 0, 1e3, "from 0 to 1000");
+}
 
 std::vector<Keyframe> read_path(const Reader& r, const json& j, const std::string& path) {
     if (!j.is_array() || j.empty()) r.fail(path, "must be a non-empty array of keyframes");
@@ -119,26 +137,11 @@ SceneObject read_object(const Reader& r, const json& j, const std::string& p, co
         o.animation = read_animation(r, j["animation"], p + "/animation");
     }
     if (j.contains("mass") && j.contains("density")) r.fail(p, "an object has a 'mass' or a 'density', not both");
-    if (j.contains("mass")) {
-        o.mass = r.number(j["mass"], p + "/mass");
-        if (!(o.mass > 0) || o.mass > 1e30) r.fail(p + "/mass", "must be positive and at most 1e30");
-    }
-    if (j.contains("density")) {
-        o.density = r.number(j["density"], p + "/density");
-        if (!(o.density > 0) || o.density > 1e30) r.fail(p + "/density", "must be positive and at most 1e30");
-    }
-    if (j.contains("friction")) {
-        o.friction = r.number(j["friction"], p + "/friction");
-        if (o.friction < 0 || o.friction > 1e3) r.fail(p + "/friction", "must be from 0 to 1000");
-    }
-    if (j.contains("restitution")) {
-        o.restitution = r.number(j["restitution"], p + "/restitution");
-        if (o.restitution < 0 || o.restitution > 1) r.fail(p + "/restitution", "must be between 0 and 1");
-    }
-    if (j.contains("rolling_friction")) {
-        o.rolling_friction = r.number(j["rolling_friction"], p + "/rolling_friction");
-        if (o.rolling_friction < 0 || o.rolling_friction > 1e3) r.fail(p + "/rolling_friction", "must be from 0 to 1000");
-    }
+    const double positive = std::numeric_limits<double>::denorm_min(); // the least above 0
+    if (j.contains("mass")) o.mass = r.number_in(j["mass"], p + "/mass", positive, 1e30, "positive and at most 1e30");
+    if (j.contains("density"))
+        o.density = r.number_in(j["density"], p + "/density", positive, 1e30, "positive and at most 1e30");
+    read_contact_settings(r, j, p, o.friction, o.restitution, o.rolling_friction);
     const bool is_static = j.contains("static") && r.flag(j["static"], p + "/static");
     const bool moving = j.contains("velocity") || j.contains("angular_velocity");
     if (is_static && (moving || j.contains("path")))
@@ -201,29 +204,13 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::s
                 r.fail("/response/rule", "must be 'backtrack' or 'paper', not '" + rule + "'");
             s.response.rule = rule == "paper" ? BacktrackRule::Paper : BacktrackRule::Exact;
         }
-        if (resp.contains("restitution")) {
-            s.response.restitution = r.number(resp["restitution"], "/response/restitution");
-            if (s.response.restitution < 0 || s.response.restitution > 1)
-                r.fail("/response/restitution", "must be between 0 and 1");
-        }
+        if (resp.contains("restitution"))
+            s.response.restitution = r.number_in(resp["restitution"], "/response/restitution", 0, 1, "between 0 and 1");
     }
     if (j.contains("dynamics")) {
         r.fields(j["dynamics"], "/dynamics", {"friction", "restitution", "rolling_friction", "iterations"});
         const json& d = j["dynamics"];
-        if (d.contains("friction")) {
-            s.dynamics.friction = r.number(d["friction"], "/dynamics/friction");
-            if (s.dynamics.friction < 0 || s.dynamics.friction > 1e3) r.fail("/dynamics/friction", "must be from 0 to 1000");
-        }
-        if (d.contains("restitution")) {
-            s.dynamics.restitution = r.number(d["restitution"], "/dynamics/restitution");
-            if (s.dynamics.restitution < 0 || s.dynamics.restitution > 1)
-                r.fail("/dynamics/restitution", "must be between 0 and 1");
-        }
-        if (d.contains("rolling_friction")) {
-            s.dynamics.rolling_friction = r.number(d["rolling_friction"], "/dynamics/rolling_friction");
-            if (s.dynamics.rolling_friction < 0 || s.dynamics.rolling_friction > 1e3)
-                r.fail("/dynamics/rolling_friction", "must be from 0 to 1000");
-        }
+        read_contact_settings(r, d, "/dynamics", s.dynamics.friction, s.dynamics.restitution, s.dynamics.rolling_friction);
         if (d.contains("iterations")) {
             const json& it = d["iterations"];
             if (!it.is_number_integer() || it.get<int64_t>() < 1 || it.get<int64_t>() > 1000)

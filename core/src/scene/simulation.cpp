@@ -6,6 +6,7 @@
 #include "dynamics/dynamics_world.hpp"
 #include "scene/pair_work.hpp"
 #include "scene/same_pose.hpp"
+#include "query/query_run.hpp"
 #include "query/scratch.hpp"
 #include "spt/ccd.hpp"
 #include "spt/error.hpp"
@@ -22,9 +23,17 @@ int64_t ns_since(Clock::time_point t0) {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
 }
 
-void add(QueryCounters& to, const QueryCounters& c) {
-    to.node_pairs += c.node_pairs, to.bound_tests += c.bound_tests, to.sphere_tests += c.sphere_tests;
-    to.triangle_tests += c.triangle_tests;
+// Whether a moved object's state is one a query takes and a CSV writes: no coordinate beyond
+// kMaxMeshCoordinate, nothing infinite or NaN.
+bool representable(const Pose& p, const Eigen::Vector3d& velocity, const Eigen::Vector3d& angular) {
+    return p.translation.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate && p.rotation.coeffs().allFinite() &&
+           velocity.allFinite() && angular.allFinite();
+}
+
+// The refusal of a step that would carry `object` out of that range; `causes`: what may be too large.
+std::string beyond_range(const std::string& file, const std::string& object, int step, const char* causes) {
+    return file + ": object '" + object + "' leaves the representable range at step " + std::to_string(step) +
+           " (a coordinate beyond 1e16 or not finite): " + causes + " is too large";
 }
 
 } // namespace
@@ -143,12 +152,8 @@ void Simulation::move(double t1) {
         }
         // Refused, not written: a huge dt, velocity or gravity would carry the object past what a
         // query accepts, or to infinity.
-        const Pose& p = poses_[i];
-        if (!(p.translation.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate) || !p.rotation.coeffs().allFinite() ||
-            !velocity_[i].allFinite())
-            throw Error(ErrorKind::BadInput, scene_.file + ": object '" + o.name + "' leaves the representable range at step " +
-                                                 std::to_string(steps_ + 1) +
-                                                 " (a coordinate beyond 1e16 or not finite): dt, its velocity or gravity is too large");
+        if (!representable(poses_[i], velocity_[i], angular_[i]))
+            throw Error(ErrorKind::BadInput, beyond_range(scene_.file, o.name, steps_ + 1, "dt, its velocity or gravity"));
     }
 }
 
@@ -178,11 +183,11 @@ const StepResult& Simulation::step() {
         deform(t1);
         r.counters.ns_deform += ns_since(t0);
     }
+    if (dynamics_) step_dynamics(t1, r.counters);
     ++steps_;
     r.step = steps_;
     r.time = t1;
     if (dynamics_) {
-        step_dynamics(t1, r.counters);
         ghost_ = poses_;
         r.state_hash = state_hash(poses_);
         return r;
@@ -213,14 +218,10 @@ void Simulation::step_dynamics(double t1, StepCounters& c) {
         }
         poses[i] = dynamics_->pose(i);
         std::tie(velocity[i], angular[i]) = dynamics_->velocity(i);
-        if (!(poses[i].translation.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate) || !poses[i].rotation.coeffs().allFinite() ||
-            !velocity[i].allFinite() || !angular[i].allFinite()) {
+        if (!representable(poses[i], velocity[i], angular[i])) {
             // Bullet's world has moved on and cannot be stepped back: the state stays that of the
             // last step, and every later step is refused alike.
-            dynamics_failure_ = scene_.file + ": object '" + o.name + "' leaves the representable range at step " +
-                                std::to_string(steps_) +
-                                " (a coordinate beyond 1e16 or not finite): dt, its velocity, mass or gravity is too large";
-            --steps_;
+            dynamics_failure_ = beyond_range(scene_.file, o.name, steps_ + 1, "dt, its velocity, mass or gravity");
             throw Error(ErrorKind::BadInput, dynamics_failure_);
         }
     }
@@ -284,7 +285,7 @@ void Simulation::run_contacts(StepCounters& c) {
             const CcdResult res = first_contact(model(p.a), model(p.b), relative_pose(previous_[p.a], previous_[p.b]),
                                                 relative_pose(poses_[p.a], poses_[p.b]), o, scratch_[size_t(w)]);
             work[k].ccd_ran = true;
-            add(work[k].qc, res.counters);
+            detail::add_counters(work[k].qc, res.counters);
             work[k].ccd_hit = res.hit;
             work[k].toi = res.hit ? res.toi : 1.0;
             work[k].ccd_band = 2e-4 * model(p.b).diagonal(); // twice first_contact's default tolerance
@@ -309,19 +310,19 @@ void Simulation::run_contacts(StepCounters& c) {
         QueryOptions q;
         q.level = level;
         const QueryResult res = collide(model(p.a), poses_[p.a], model(p.b), poses_[p.b], q, s);
-        add(work[k].qc, res.counters);
+        detail::add_counters(work[k].qc, res.counters);
         work[k].collide = res.collide;
         if (res.collide && effects_.has(Effect::Exact) && level != QueryLevel::Exact) {
             q.level = QueryLevel::Exact; // confirmed by the triangles
             const QueryResult ex = collide(model(p.a), poses_[p.a], model(p.b), poses_[p.b], q, s);
-            add(work[k].qc, ex.counters);
+            detail::add_counters(work[k].qc, ex.counters);
             work[k].collide = ex.collide;
         }
         if (effects_.has(Effect::Pairs) && (work[k].collide || work[k].ccd_hit)) {
             q.level = sphere_level;
             q.mode = QueryMode::All;
             const QueryResult all = collide(model(p.a), poses_[p.a], model(p.b), poses_[p.b], q, s);
-            add(work[k].qc, all.counters);
+            detail::add_counters(work[k].qc, all.counters);
             work[k].pairs = s.pairs();
             work[k].all_collide = all.collide, work[k].all_point = all.deepest.point;
         }
