@@ -14,6 +14,9 @@
 namespace spt {
 
 struct BuildOptions; // tree_builder.hpp
+namespace detail {
+struct TreeGraft; // tree/split_chooser.hpp: build_subtree with a split chooser
+}
 
 /// One node, with the fields of the paper's CNode.
 struct TreeNode {
@@ -37,6 +40,19 @@ struct EditResult {
     std::string reason; ///< empty when ok
     /// True when the edit was made.
     explicit operator bool() const { return ok; }
+};
+
+/// A build from motion made under a node (spt/motion_tree.hpp, build_motion_subtree): what
+/// replaying it on a re-exported mesh needs (.spt version 5).
+struct MotionBuildStep {
+    NodeId node = root_id(); ///< paper id of the node built under
+    /// The scene file run: a relative path is relative to the folder of the .spt file that holds
+    /// the tree (front ends write it so when they know where the file goes).
+    std::string scene;
+    std::string object;      ///< the object of the scene whose motion it was
+    int steps = 0;           ///< steps recorded (0: the scene's own count)
+    uint32_t leaf_size = 8;  ///< BuildOptions::leaf_size of the build
+    uint32_t after_steps = 0; ///< how many recipe steps were made before it (the order of a replay)
 };
 
 /// A named sampling tree over a SampleSet that the caller keeps alive alongside.
@@ -96,8 +112,18 @@ public:
     void add_recipe_step(RecipeStep step) { recipe_.push_back(std::move(step)); }
     /// Replaces the recipe (loaders).
     void set_recipe(std::vector<RecipeStep> recipe) { recipe_ = std::move(recipe); }
+    /// The builds from motion made in this tree, in the order made; a merge drops those under the merged node.
+    const std::vector<MotionBuildStep>& motion_builds() const { return motion_builds_; }
+    /// Records a build from motion (after it was made); its after_steps is set to the recipe's length now.
+    void add_motion_build(MotionBuildStep step) {
+        step.after_steps = uint32_t(recipe_.size());
+        motion_builds_.push_back(std::move(step));
+    }
+    /// Replaces the builds from motion (loaders).
+    void set_motion_builds(std::vector<MotionBuildStep> builds) { motion_builds_ = std::move(builds); }
 
 private:
+    friend struct detail::TreeGraft;
     // Edits go through split, merge, set_radius and build_subtree, which keep the tree valid.
     TreeNode* find_mutable(NodeId id);
     void put(TreeNode node);
@@ -106,6 +132,7 @@ private:
     std::string name_;
     std::map<NodeId, TreeNode> nodes_;
     std::vector<RecipeStep> recipe_;
+    std::vector<MotionBuildStep> motion_builds_;
 };
 
 } // namespace spt

@@ -167,4 +167,12 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::s
 /// Cancelled once `cancel` (may be null) is set; a model stopped so is not cached.
 void load_models(Scene& scene, const std::atomic<bool>* cancel = nullptr);
 
+/// Gives object `o` another model of the same object (another tree, or a document of its mesh):
+/// tree `tree` (the first if empty) of `doc`, with `mesh` (the mesh `doc` was made from, with its
+/// clips if the object is animated; may be null: spheres only, and an animated object keeps its
+/// own mesh, which must then be the document's). The broad-phase sphere is fitted again.
+/// Error(BadInput) naming the object if the document has no such tree or the mesh is another.
+void set_object_model(SceneObject& o, std::shared_ptr<const SptDocument> doc, const std::string& tree,
+                      std::shared_ptr<const AnimatedMesh> mesh);
+
 } // namespace spt

@@ -11,6 +11,8 @@
 #include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
+#include "spt/motion.hpp"
+#include "spt/motion_tree.hpp"
 #include "spt/node_id.hpp"
 #include "spt/pose.hpp"
 #include "spt/pose_file.hpp"

@@ -194,4 +194,37 @@ void load_models(Scene& scene, const std::atomic<bool>* cancel) {
     }
 }
 
+void set_object_model(SceneObject& o, std::shared_ptr<const SptDocument> doc, const std::string& tree,
+                      std::shared_ptr<const AnimatedMesh> mesh) {
+    const std::string where = "object '" + o.name + "'";
+    if (!doc) throw Error(ErrorKind::BadInput, where + ": no document given");
+    if (!tree.empty() && !doc->tree(tree))
+        throw Error(ErrorKind::BadInput, where + ": the document has no tree named '" + tree + "'");
+    if (doc->trees.empty()) throw Error(ErrorKind::BadInput, where + ": the document has no tree");
+    const std::string name = tree.empty() ? doc->trees.front().name() : tree;
+    if (!mesh && o.animated) mesh = o.animated_mesh;
+    std::shared_ptr<CollisionModel> model;
+    try {
+        model = mesh ? std::make_shared<CollisionModel>(*doc, mesh->imported.mesh, name)
+                     : std::make_shared<CollisionModel>(*doc, name);
+    } catch (const Error& e) {
+        throw Error(ErrorKind::BadInput, where + ": " + e.what());
+    }
+    Cached c;
+    bound(*model, mesh ? &mesh->imported.mesh : nullptr, c);
+    o.model = std::move(model);
+    o.tree = name;
+    o.bound_center = c.center;
+    o.bound_radius = c.radius;
+    if (o.animated && mesh) {
+        try {
+            o.clip = mesh->find_clip(o.animation.clip);
+        } catch (const Error& e) {
+            throw Error(ErrorKind::BadInput, where + ": " + e.what());
+        }
+        o.animated_mesh = std::move(mesh);
+        o.document = std::move(doc);
+    }
+}
+
 } // namespace spt

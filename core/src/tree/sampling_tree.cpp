@@ -387,12 +387,20 @@ EditResult SamplingTree::merge(NodeId id, const SampleSet& samples, const Radius
     std::sort(all.begin(), all.end());
     remove_subtree(id);
     // The merged splits no longer exist: neither do the steps that made them.
-    recipe_.erase(std::remove_if(recipe_.begin(), recipe_.end(),
-                                 [id](const RecipeStep& step) {
-                                     NodeId a = step.node;
-                                     while (a > id) a = parent_of(a);
-                                     return a == id;
-                                 }),
+    auto under = [id](NodeId node) {
+        while (node > id) node = parent_of(node);
+        return node == id;
+    };
+    // A build from motion keeps its place among the recipe steps that remain.
+    for (MotionBuildStep& m : motion_builds_) {
+        uint32_t gone = 0;
+        for (uint32_t k = 0; k < m.after_steps && k < recipe_.size(); ++k) gone += under(recipe_[k].node);
+        m.after_steps -= gone;
+    }
+    motion_builds_.erase(std::remove_if(motion_builds_.begin(), motion_builds_.end(),
+                                        [&](const MotionBuildStep& m) { return under(m.node); }),
+                         motion_builds_.end());
+    recipe_.erase(std::remove_if(recipe_.begin(), recipe_.end(), [&](const RecipeStep& step) { return under(step.node); }),
                   recipe_.end());
     n = find_mutable(id);
     n->active = true;

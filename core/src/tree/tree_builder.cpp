@@ -2,6 +2,7 @@
 #include "spt/tree_builder.hpp"
 #include "sampling/radius_class.hpp"
 #include "tree/bounds.hpp"
+#include "tree/split_chooser.hpp"
 #include "base/cancel.hpp"
 #include "base/parallel.hpp"
 #include <Eigen/Geometry>
@@ -98,6 +99,7 @@ struct Builder {
     // Set by split_volume when it knows the exact boxes of the two parts it made (left, right).
     std::array<Bounds3, 2> parts;
     bool parts_known = false;
+    const detail::SplitChooser* chooser = nullptr; // asked first at every split (build from motion)
 
     // Appends a node to `out`; returns its index.
     size_t emit(TreeNode&& node) {
@@ -115,7 +117,7 @@ struct Builder {
         const Bounds3* left_box = boxes ? &(*boxes)[0] : nullptr;
         const Bounds3* right_box = boxes ? &(*boxes)[1] : nullptr;
         if (node_depth(id) < parallel_depth && std::min(mid - b, e - mid) >= kParallelSubtree) {
-            Builder right{options, items, {}, {}, max_depth, parallel_depth, {}, false};
+            Builder right{options, items, {}, {}, max_depth, parallel_depth, {}, false, chooser};
             detail::parallel_for(2, 2, [&](size_t k, int) {
                 if (k == 0) build(b, mid, left_child(id), left_box);
                 else right.build(mid, e, right_child(id), right_box);
@@ -289,6 +291,26 @@ struct Builder {
         // save; the median of the longest axis is as good there.
         const bool small = e - b <= 4 * size_t(options.leaf_size);
         parts_known = false;
+        if (chooser) {
+            std::vector<uint32_t> members(e - b);
+            for (size_t i = b; i < e; ++i) members[i - b] = items[i].sample;
+            std::vector<uint8_t> left;
+            if (chooser->choose(members.data(), members.size(), id, left)) {
+                // Left items first, each side in the order it had: the same on any thread count.
+                std::vector<Item> parted;
+                parted.reserve(e - b);
+                for (size_t i = b; i < e; ++i)
+                    if (left[i - b]) parted.push_back(items[i]);
+                const size_t mid = b + parted.size();
+                for (size_t i = b; i < e; ++i)
+                    if (!left[i - b]) parted.push_back(items[i]);
+                if (mid > b && mid < e) {
+                    std::copy(parted.begin(), parted.end(), items.begin() + long(b));
+                    build_children(std::move(node), b, mid, e);
+                    return;
+                }
+            }
+        }
         size_t mid = options.strategy == SplitStrategy::Median || small ? split_median(b, e, box)
                                                                         : split_volume(b, e, box);
         if (mid <= b || mid >= e) mid = split_median(b, e, box), parts_known = false;
@@ -299,13 +321,15 @@ struct Builder {
 };
 
 
+} // namespace
+
 // A tree whose root (id 1) holds `members` (sorted sample indices), at most max_depth deep.
-SamplingTree build_over(std::string name, const SampleSet& samples, const std::vector<uint32_t>& members,
-                        const BuildOptions& options, int max_depth) {
+SamplingTree detail::build_over(std::string name, const SampleSet& samples, const std::vector<uint32_t>& members,
+                                const BuildOptions& options, int max_depth, const SplitChooser* chooser) {
     BuildOptions fixed = options;
     fixed.leaf_size = std::max<uint32_t>(1, options.leaf_size);
     std::vector<Item> items(members.size());
-    Builder builder{fixed, items, {}, {}, max_depth, detail::parallel_levels(options.threads), {}, false};
+    Builder builder{fixed, items, {}, {}, max_depth, detail::parallel_levels(options.threads), {}, false, chooser};
     for (size_t k = 0; k < members.size(); ++k) {
         const uint32_t i = members[k];
         const auto& p = samples.points[i];
@@ -325,17 +349,20 @@ SamplingTree build_over(std::string name, const SampleSet& samples, const std::v
     return SamplingTree(std::move(name), builder.in_id_order());
 }
 
-} // namespace
-
 SamplingTree build_tree(std::string name, const SampleSet& samples, const BuildOptions& options) {
     if (samples.size() == 0) return SamplingTree(std::move(name), 0u);
     std::vector<uint32_t> all(samples.size());
     for (uint32_t i = 0; i < samples.size(); ++i) all[i] = i;
-    return build_over(std::move(name), samples, all, options, kMaxNodeDepth);
+    return detail::build_over(std::move(name), samples, all, options, kMaxNodeDepth, nullptr);
 }
 
 EditResult SamplingTree::build_subtree(NodeId id, const SampleSet& samples, const BuildOptions& options) {
-    const TreeNode* n = find(id);
+    return detail::TreeGraft::build_subtree(*this, id, samples, options, nullptr);
+}
+
+EditResult detail::TreeGraft::build_subtree(SamplingTree& tree, NodeId id, const SampleSet& samples,
+                                            const BuildOptions& options, const SplitChooser* chooser) {
+    const TreeNode* n = tree.find(id);
     if (!n) return {false, "node " + std::to_string(id) + " does not exist"};
     if (!n->active) return {false, "node " + std::to_string(id) + " is already split; merge it first"};
     const uint32_t leaf = std::max<uint32_t>(1, options.leaf_size);
@@ -344,14 +371,14 @@ EditResult SamplingTree::build_subtree(NodeId id, const SampleSet& samples, cons
                            " samples, no more than the leaf size " + std::to_string(leaf)};
     // Built as a tree of its own (root 1), radii and bounds included, then renumbered under id.
     const int base = node_depth(id);
-    const SamplingTree sub = build_over(name_, samples, n->samples, options, kMaxNodeDepth - base);
+    const SamplingTree sub = build_over(tree.name_, samples, n->samples, options, kMaxNodeDepth - base, chooser);
     for (const TreeNode* t : sub.nodes()) {
         TreeNode moved = *t;
         const int d = node_depth(t->id);
         moved.id = (id << d) | (t->id - (NodeId(1) << d));
-        put(std::move(moved));
+        tree.put(std::move(moved));
     }
-    if (parent_of(id) != 0) refresh_path(parent_of(id), samples, options.bounds);
+    if (parent_of(id) != 0) tree.refresh_path(parent_of(id), samples, options.bounds);
     return {};
 }
 
