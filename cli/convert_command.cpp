@@ -6,6 +6,7 @@
 #include "spt/animation.hpp"
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
+#include "spt/motion_tree.hpp"
 #include "spt/recipe.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
@@ -32,6 +33,8 @@ namespace fs = std::filesystem;
 struct ConvertArgs {
     std::vector<std::string> inputs;
     std::string output, out_dir, bounds = "tight", strategy = "volume", tree_name = "default", recipe;
+    std::string motion, object; // --motion SCENE.json --object NAME: a tree built for that motion
+    int motion_steps = 0;
     uint32_t leaf_size = 8;
     double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
     int jobs = 0, threads = 0; // threads: per file; 0 until run_convert settles it
@@ -59,7 +62,11 @@ long peak_mib() {
 // unless some split was made at a clip's pose) poses the samples as the splits were made.
 void replay_recipe_file(SptDocument& doc, const TriangleMesh& mesh, const BuildOptions& build, const SptDocument& recipes,
                         const std::string& recipe, const std::string& in, std::shared_ptr<const AnimatedMesh> animated) {
-    for (const TreeReplay& r : replay_trees(doc, mesh, recipes, build, std::move(animated))) {
+    const std::string folder = fs::path(recipe).parent_path().string();
+    for (const TreeReplay& r : replay_trees(doc, mesh, recipes, build, std::move(animated), folder)) {
+        if (r.motion_builds)
+            std::cerr << "  recipe: tree '" << r.tree << "': " << r.motion_builds << " build"
+                      << (r.motion_builds == 1 ? "" : "s") << " from motion redone\n";
         if (r.built_automatically) {
             std::cerr << "  recipe: tree '" << r.tree << "' of " << recipe << " has no recipe; built automatically\n";
             continue;
@@ -132,6 +139,22 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
         doc = make_document(m.mesh, opt, &st);
     }
     if (recipes) replay_recipe_file(doc, m.mesh, opt.build, *recipes, a.recipe, in, animated);
+    if (!a.motion.empty()) {
+        // The tree is built for the scene's motion of the object; the file records the scene relative
+        // to its own folder, so that --recipe finds it again.
+        std::shared_ptr<const AnimatedMesh> with_mesh = animated;
+        if (!with_mesh) {
+            auto plain = std::make_shared<AnimatedMesh>();
+            plain->imported = m;
+            with_mesh = std::move(plain);
+        }
+        const fs::path folder = fs::absolute(fs::path(out)).parent_path();
+        const std::string recorded = fs::relative(fs::absolute(a.motion), folder).generic_string();
+        MotionBuildOptions mb;
+        mb.build = opt.build;
+        add_motion_tree(doc, with_mesh, a.motion, recorded.empty() ? a.motion : recorded, a.object, a.tree_name, mb,
+                        a.motion_steps, !a.append || a.force);
+    }
     report_clips(animated, doc, a.tree_name, a.threads);
     const auto t_save = std::chrono::steady_clock::now();
     save_spt(doc, out);
@@ -194,6 +217,12 @@ void draw_progress(size_t done, size_t total, size_t failed) {
 }
 
 int run_convert(const ConvertArgs& a) {
+    if (a.motion.empty() != a.object.empty())
+        throw Error(ErrorKind::Usage, "--motion SCENE.json and --object NAME go together: the scene's motion of that object");
+    if (!a.motion.empty() && !a.recipe.empty())
+        throw Error(ErrorKind::Usage, "--motion builds a tree for a motion; --recipe replaces the trees: use one");
+    if (!a.motion.empty() && a.inputs.size() != 1)
+        throw Error(ErrorKind::Usage, "--motion builds for one object: give one input mesh");
     if (a.append && !a.recipe.empty())
         throw Error(ErrorKind::Usage, "--append adds one automatic tree; --recipe replaces the trees");
     if (a.append && a.tolerance > 0)
@@ -304,6 +333,13 @@ Action add_convert_command(CLI::App& app) {
                   "Redo the manual splits recorded in this .spt file (made from an earlier version of the mesh), "
                   "each at the clip and time it was made at; its trees replace the automatic one")
         ->check(CLI::ExistingFile);
+    c->add_option("--motion", a->motion,
+                  "Build the tree (--tree-name) for this scene's motion of --object: the scene is run and the "
+                  "regions that come near a partner are split first (docs/editor.md, \"Authoring from motion\")")
+        ->check(CLI::ExistingFile);
+    c->add_option("--object", a->object, "The object of the --motion scene whose motion the tree is for");
+    c->add_option("--motion-steps", a->motion_steps, "Steps of the --motion scene to record (default: the scene's)")
+        ->check(CLI::Range(1, 100000000));
     c->add_option("-j,--jobs", a->jobs, "Files converted at once (default: all cores)")->check(CLI::Range(1, 1024));
     c->add_option("--threads", a->threads,
                   "Threads sampling each file (default: the cores the --jobs at once leave it; the output is the "

@@ -77,6 +77,7 @@ struct TreeReplay {
     bool built_automatically = false; ///< the recipe document's tree had no recipe: built with the options
     size_t steps = 0;                 ///< authoring steps in its recipe
     ReplayReport report;              ///< what replaying them did (nothing when built automatically)
+    size_t motion_builds = 0;         ///< builds from motion redone after the steps (their scenes run again)
 };
 
 /// Replaces `doc`'s trees with the trees of `recipes` (an authored document of an earlier mesh)
@@ -85,8 +86,13 @@ struct TreeReplay {
 /// unchanged. What `spt convert NEW_MESH --recipe OLD.spt` does after sampling. Steps made at a
 /// clip's pose (recipe_has_poses) need `animated`, `mesh` with its clips (mesh must be its
 /// imported.mesh), and select at that pose; without it they are Error(BadInput).
+/// A tree that records builds from motion (SamplingTree::motion_builds) has them redone after its
+/// steps: each scene (a relative path resolved against `recipe_folder`, the recipe file's folder) is
+/// run again with the new samples (replay_motion_builds); a split made after such a build is
+/// Error(BadInput).
 std::vector<TreeReplay> replay_trees(SptDocument& doc, const TriangleMesh& mesh, const SptDocument& recipes,
-                                     const BuildOptions& build, std::shared_ptr<const AnimatedMesh> animated = nullptr);
+                                     const BuildOptions& build, std::shared_ptr<const AnimatedMesh> animated = nullptr,
+                                     const std::string& recipe_folder = {});
 
 /// Builds another tree named `name` over the samples already in `doc` (the paper keeps one a
 /// kind of motion) and adds it, replacing one of that name only if `replace`. `mesh` must be

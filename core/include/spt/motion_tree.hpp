@@ -18,7 +18,7 @@ struct MotionBuildOptions {
     /// Weight of the random-pose term (a child's bounding-sphere volume over its parent's, the
     /// Volume strategy's cost) beside the motion's (the share of recorded steps a child is entered):
     /// keeps the tree good at poses the motion did not record.
-    double random_weight = 0.25;
+    double random_weight = 1;
 };
 
 /// Builds a tree named `name` over all samples of `recording.model.document`'s sample set
@@ -32,5 +32,23 @@ SamplingTree build_motion_tree(std::string name, const SampleSet& samples, const
 /// on `tree`'s object (record_motion).
 EditResult build_motion_subtree(SamplingTree& tree, NodeId node, const SampleSet& samples,
                                 const MotionRecording& recording, const MotionBuildOptions& options = {});
+
+/// Adds to `doc` a tree named `name` built for the motion of `object` in the scene file
+/// `scene_path` (run for `steps` steps, 0: the scene's count, with an automatic tree of `options.build`
+/// as the object's model), and records the build in the tree (MotionBuildStep at the root, its scene written
+/// as `scene_in_file`: relative to the folder of the .spt file the document goes to). `mesh` is the
+/// mesh the document was made from (with its clips for an animated object; null: spheres only). A
+/// tree of that name is replaced only if `replace` (else Error(CannotWrite)). What `spt convert MESH
+/// --motion SCENE --object NAME` does.
+const SamplingTree& add_motion_tree(SptDocument& doc, std::shared_ptr<const AnimatedMesh> mesh,
+                                    const std::string& scene_path, const std::string& scene_in_file,
+                                    const std::string& object, const std::string& name, MotionBuildOptions options,
+                                    int steps = 0, bool replace = false);
+
+/// Redoes `recorded`'s builds from motion on `tree` (over `doc`'s samples, `mesh` the mesh it was
+/// made from), in order, each scene path resolved against `folder` when relative, each motion
+/// recorded with an automatic tree as add_motion_tree records it. What replaying a recipe does with them.
+void replay_motion_builds(SamplingTree& tree, const std::vector<MotionBuildStep>& recorded, const SptDocument& doc,
+                          std::shared_ptr<const AnimatedMesh> mesh, const std::string& folder, const BuildOptions& build);
 
 } // namespace spt

@@ -1,4 +1,5 @@
 #include "spt/convert.hpp"
+#include "spt/motion_tree.hpp"
 #include "spt/error.hpp"
 #include "spt/recipe.hpp"
 #include <algorithm>
@@ -7,17 +8,34 @@
 namespace spt {
 
 std::vector<TreeReplay> replay_trees(SptDocument& doc, const TriangleMesh& mesh, const SptDocument& recipes,
-                                     const BuildOptions& build, std::shared_ptr<const AnimatedMesh> animated) {
+                                     const BuildOptions& build, std::shared_ptr<const AnimatedMesh> animated,
+                                     const std::string& recipe_folder) {
     std::vector<TreeReplay> done;
     std::vector<SamplingTree> trees;
     for (const SamplingTree& t : recipes.trees) {
         TreeReplay r;
         r.tree = t.name();
         r.steps = t.recipe().size();
-        r.built_automatically = t.recipe().empty();
+        r.motion_builds = t.motion_builds().size();
+        r.built_automatically = t.recipe().empty() && t.motion_builds().empty();
+        for (const MotionBuildStep& m : t.motion_builds())
+            if (m.after_steps != t.recipe().size())
+                throw Error(ErrorKind::BadInput, "tree '" + t.name() + "': a split made after its build from motion "
+                                                 "under node " + std::to_string(m.node) +
+                                                 " cannot be replayed yet (merge the split, or build from motion last)");
         if (r.built_automatically) trees.push_back(build_tree(t.name(), doc.samples, build));
+        else if (t.recipe().empty()) trees.push_back(unsplit_tree(t.name(), doc.samples));
         else if (animated) trees.push_back(replay_recipe(t, doc, animated, &r.report));
         else trees.push_back(replay_recipe(t, doc.samples, mesh, &r.report));
+        if (!t.motion_builds().empty()) {
+            auto with_clips = animated;
+            if (!with_clips) {
+                auto plain = std::make_shared<AnimatedMesh>();
+                plain->imported.mesh = mesh;
+                with_clips = std::move(plain);
+            }
+            replay_motion_builds(trees.back(), t.motion_builds(), doc, with_clips, recipe_folder, build);
+        }
         done.push_back(std::move(r));
     }
     doc.trees = std::move(trees); // only once every tree is made: a failure leaves doc as it was

@@ -2,6 +2,7 @@
 #include "spt/spt_file.hpp"
 #include "io/binary_io.hpp"
 #include "io/recipe_codec.hpp"
+#include "io/motion_codec.hpp"
 #include "base/parallel.hpp"
 #include "sampling/encoding.hpp"
 #include <zlib.h>
@@ -57,6 +58,8 @@ std::string SptDocument::validate() const {
 
 uint32_t spt_version_for(const SptDocument& doc) {
     uint32_t version = doc.samples.origin.isZero(0) ? 1 : 2;
+    for (const auto& t : doc.trees)
+        if (!t.motion_builds().empty()) return detail::kMotionBuildsVersion;
     for (const auto& t : doc.trees) {
         if (detail::has_poses(t.recipe())) return 4;
         if (!t.recipe().empty()) version = 3;
@@ -107,6 +110,7 @@ std::vector<uint8_t> encode_spt(const SptDocument& doc) {
         for (const TreeNode* n : nodes)
             for (uint32_t idx : n->samples) w.put(idx);
         if (version >= 3) detail::put_recipe(w, tree.recipe(), version);
+        if (version >= detail::kMotionBuildsVersion) detail::put_motion_builds(w, tree.motion_builds());
     }
     std::vector<uint8_t> b = w.take();
     std::memcpy(b.data(), kMagic, 8);
@@ -135,7 +139,7 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
     std::memcpy(&body_crc, bytes.data() + 24, 4);
     std::memcpy(&header_crc, bytes.data() + 28, 4);
     if (crc(bytes.data(), 28) != header_crc) r.fail(28, "header checksum mismatch (corrupt header)");
-    if (version < 1 || version > kSptVersion)
+    if (version < 1 || version > kSptVersion || version == 5)
         r.fail(8, "format version " + std::to_string(version) + " is not supported (this build reads versions 1 to " +
                       std::to_string(kSptVersion) + ")");
     if (flags != 0) r.fail(12, "unknown flags " + std::to_string(flags));
@@ -236,6 +240,7 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         const std::string why = tree.validate(count);
         if (!why.empty()) r.fail(tree_at, "tree '" + tree.name() + "': " + why);
         if (version >= 3) tree.set_recipe(detail::get_recipe(r, tree, version));
+        if (version >= detail::kMotionBuildsVersion) tree.set_motion_builds(detail::get_motion_builds(r, tree));
         doc.trees.push_back(std::move(tree));
     }
     // Each document has one encoding: the oldest version that holds it.
@@ -243,6 +248,8 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         r.fail(8, "a version 3 file without recipe steps (written as version 1 or 2)");
     if (version == 4 && spt_version_for(doc) != 4)
         r.fail(8, "a version 4 file without a recipe step made at a clip's pose (written as version 3 or older)");
+    if (version == detail::kMotionBuildsVersion && spt_version_for(doc) != version)
+        r.fail(8, "a version 6 file without a build from motion (written as version 4 or older)");
     if (r.remaining() != 0) r.fail(r.offset(), std::to_string(r.remaining()) + " bytes of unexpected trailing data");
     return doc;
 }

@@ -80,8 +80,6 @@ std::vector<MotionCost> measure_motion_cost(const MotionRecording& rec, const st
             }
             const MotionStep& st = rec.steps[s];
             if (st.partners.empty()) continue;
-            if (deforms)
-                for (TimedTree& m : models) m.deforming->pose(clip, st.clip_time);
             for (const MotionPartner& p : st.partners)
                 if (partner_pose[p.object]) {
                     const SceneObject& o = scene.objects[p.object];
@@ -90,10 +88,14 @@ std::vector<MotionCost> measure_motion_cost(const MotionRecording& rec, const st
             // The trees take turns, starting one later each step and round.
             for (size_t n = 0; n < models.size(); ++n) {
                 const size_t t = (n + s + size_t(r)) % models.size();
+                // Posed right before its queries, as a simulation poses an object, and each query run
+                // once untimed first: every tree is timed warm, whichever was posed last.
+                if (deforms) models[t].deforming->pose(clip, st.clip_time);
                 size_t qt = q;
                 for (const MotionPartner& p : st.partners) {
                     const CollisionModel& b =
                         partner_pose[p.object] ? partner_pose[p.object]->model() : *scene.objects[p.object].model;
+                    collide_relative(models[t].model(), b, p.pose, query, scratch);
                     const auto t0 = Clock::now();
                     const QueryResult res = collide_relative(models[t].model(), b, p.pose, query, scratch);
                     const double ns = double(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count());

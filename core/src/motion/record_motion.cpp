@@ -27,10 +27,13 @@ void mark_contacts(const CollisionModel& object, const CollisionModel& partner, 
     }
 }
 
-// Gaps (model units, clamped at 0) of the object's sampling spheres within `reach` of the
-// partner's leaf bounding spheres, kept per sample in `gap` (min over partners and leaves).
+// Gaps (model units, clamped at 0) of the object's sample points within `reach` of the partner's
+// leaf bounding spheres, kept per sample in `gap` (min over partners and leaves). The points are the
+// samples' own (`rigid`, the local frame) or, on a deformed object, its spheres' centres moved back
+// out along their normals by their radii: either way what the object's tree is does not matter.
 void measure_reach(const CollisionModel& object, const CollisionModel& partner, const Pose& partner_in_object,
-                   float reach, QueryScratch& scratch, std::vector<float>& gap, std::vector<uint32_t>& touched) {
+                   float reach, const SampleSet* rigid, QueryScratch& scratch, std::vector<float>& gap,
+                   std::vector<uint32_t>& touched) {
     QueryOptions leaves;
     leaves.level = QueryLevel::Bounds;
     leaves.mode = QueryMode::All;
@@ -47,10 +50,18 @@ void measure_reach(const CollisionModel& object, const CollisionModel& partner, 
             partner_in_object.apply(Eigen::Vector3d(nb.center[0], nb.center[1], nb.center[2]) + partner.origin()) -
             object.origin();
         for (uint32_t k = na.first; k < na.first + na.count; ++k) {
-            const double d = (a.sphere_center(na, k).cast<double>() - cb).norm() - nb.bv_radius - na.ss_radius;
+            const uint32_t s = sample[k];
+            Eigen::Vector3d point;
+            if (rigid) {
+                point = rigid->points[s].cast<double>();
+            } else {
+                const bool two_sided = a.two_sided() && a.two_sided()[k];
+                const Eigen::Vector3d n(a.nx()[k] / 127.0, a.ny()[k] / 127.0, a.nz()[k] / 127.0);
+                point = a.sphere_center(na, k).cast<double>() + (two_sided ? 0.0 : double(na.ss_radius)) * n;
+            }
+            const double d = (point - cb).norm() - nb.bv_radius;
             const float g = float(std::max(0.0, d));
             if (!(g < reach)) continue;
-            const uint32_t s = sample[k];
             if (std::isinf(gap[s])) touched.push_back(s);
             gap[s] = std::min(gap[s], g);
         }
@@ -133,7 +144,9 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
                 in_contact = true;
                 mark_contacts(mine, theirs, p.pose, scratch, stamp, uint32_t(k + 1), rec.contact_steps);
             }
-            if (with_reach) measure_reach(mine, theirs, p.pose, float(rec.reach), scratch, gap, touched);
+            if (with_reach)
+                measure_reach(mine, theirs, p.pose, float(rec.reach), deforms ? nullptr : &model.document->samples,
+                              scratch, gap, touched);
             st.partners.push_back(p);
         }
         if (in_contact) ++rec.steps_in_contact;
