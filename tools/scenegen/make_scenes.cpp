@@ -286,6 +286,53 @@ void pile_dynamics(const fs::path& dir) {
     write_scene(dir, "pile_dynamics.json", out);
 }
 
+// A robot-like arm (a mount, an upper arm, a forearm and a two-finger gripper, one rigid mesh)
+// reaching into a bin four times: down past the rim, the fingertips 1 cm into the bin's floor,
+// brushing a wall, up and over to the next place: the third motion of docs/editor.md's targets.
+void robot_arm(const fs::path& dir) {
+    meshgen::RawMesh arm;
+    arm.append(meshgen::cylinder(0.06, 0.5, 24), Eigen::Vector3d(0, 0.8, 0)); // the mount, above the upper arm
+    arm.append(meshgen::box(0.7, 0.1, 0.1, 6), Eigen::Vector3d(0.35, 0.5, 0));      // upper arm, from the column's top
+    arm.append(meshgen::box(0.08, 0.6, 0.08, 6), Eigen::Vector3d(0.7, 0.2, 0));     // forearm, down
+    arm.append(meshgen::box(0.16, 0.04, 0.1, 4), Eigen::Vector3d(0.7, -0.12, 0));   // palm
+    arm.append(meshgen::box(0.03, 0.16, 0.08, 4), Eigen::Vector3d(0.64, -0.22, 0)); // fingers
+    arm.append(meshgen::box(0.03, 0.16, 0.08, 4), Eigen::Vector3d(0.76, -0.22, 0));
+    meshgen::write_obj(arm, (dir / "arm.obj").string());
+    meshgen::write_obj(meshgen::box(1.2, 0.1, 1.2, 8), (dir / "bin_floor.obj").string());
+    meshgen::write_obj(meshgen::box(1.2, 0.5, 0.05, 6), (dir / "bin_side.obj").string());
+    json s = header(0.01, 400, {"motion", "contacts"});
+    json objects = json::array({fixed("bin_floor", "bin_floor.obj", vec(0, 0, 0))});
+    const double side[4][2] = {{0, -0.625}, {0, 0.625}, {-0.625, 0}, {0.625, 0}};
+    for (int k = 0; k < 4; ++k) {
+        json wall = fixed("bin_side" + std::to_string(k), "bin_side.obj", vec(side[k][0], 0.3, side[k][1]));
+        if (k >= 2) wall["orientation"] = json::array({std::sqrt(0.5), 0.0, std::sqrt(0.5), 0.0});
+        objects.push_back(wall);
+    }
+    // The arm's fingertips are 0.3 below its origin and 0.7 out along x: the origin sits above the
+    // place it reaches for, minus that offset, turned about y between reaches.
+    json arm_object = object("arm", "arm.obj");
+    json path = json::array();
+    const double reach[4][2] = {{-0.3, -0.3}, {0.3, -0.25}, {0.25, 0.3}, {-0.35, 0.2}};
+    double t = 0;
+    for (int k = 0; k < 4; ++k) {
+        const double angle = 0.3 * k;
+        const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()));
+        const Eigen::Vector3d tip = q * Eigen::Vector3d(0.7, -0.3, 0);
+        const Eigen::Vector3d above(reach[k][0] - tip.x(), 1.0, reach[k][1] - tip.z());
+        const Eigen::Vector3d down(above.x(), 0.05 + 0.3 - 0.01, above.z()); // tips 1 cm into the floor's top (y 0.05)
+        const json orientation = json::array({q.w(), q.x(), q.y(), q.z()});
+        path.push_back({{"t", t}, {"position", vec3(above)}, {"orientation", orientation}});
+        path.push_back({{"t", t + 0.4}, {"position", vec3(down)}, {"orientation", orientation}});
+        path.push_back({{"t", t + 0.6}, {"position", vec3(down + Eigen::Vector3d(0.05, 0, 0.05))}, {"orientation", orientation}});
+        path.push_back({{"t", t + 0.85}, {"position", vec3(above)}, {"orientation", orientation}});
+        t += 1.0;
+    }
+    arm_object["path"] = path;
+    objects.push_back(arm_object);
+    s["objects"] = objects;
+    write_scene(dir, "robot_arm.json", s);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -307,6 +354,7 @@ int main(int argc, char** argv) {
         stack(dir);
         balls_in_box(dir);
         pile_dynamics(dir);
+        robot_arm(dir);
     } catch (const Error& e) {
         std::cerr << e.what() << "\n";
         return spt::cli::exit_code(e.kind());

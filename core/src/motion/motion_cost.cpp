@@ -116,9 +116,17 @@ std::vector<MotionCost> measure_motion_cost(const MotionRecording& rec, const st
         MotionCost& c = out[t];
         c.queries = queries;
         if (queries == 0) continue;
-        std::vector<double>& b = best[t];
-        std::nth_element(b.begin(), b.begin() + long(b.size() / 2), b.end());
-        c.median_ns = b[b.size() / 2];
+        // A step's time is the sum of its queries' (one per partner); the median is over the steps.
+        std::vector<double> per_step;
+        size_t q = 0;
+        for (const MotionStep& st : rec.steps) {
+            if (st.partners.empty()) continue;
+            double sum = 0;
+            for (size_t k = 0; k < st.partners.size(); ++k) sum += best[t][q++];
+            per_step.push_back(sum);
+        }
+        std::nth_element(per_step.begin(), per_step.begin() + long(per_step.size() / 2), per_step.end());
+        c.median_ns = per_step[per_step.size() / 2];
         c.mean_node_pairs = node_pairs[t] / double(queries);
         c.mean_sphere_tests = sphere_tests[t] / double(queries);
         c.collide_share = double(collided[t]) / double(queries);
