@@ -63,12 +63,17 @@ int main(int argc, char** argv) {
         for (uint32_t leaf : {4u, 8u, 16u}) {
             BuildOptions b = base;
             b.leaf_size = leaf;
+            b.threads = 2;
+            t0 = std::chrono::steady_clock::now();
             trees.push_back(build_tree("auto" + std::to_string(leaf), doc->samples, b));
+            std::printf("auto leaf %u built in %.3f s\n", leaf,
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
             names.push_back("auto leaf " + std::to_string(leaf));
         }
         for (uint32_t leaf : {4u, 8u}) {
             MotionBuildOptions mb;
             mb.build.leaf_size = leaf;
+            mb.build.threads = 2;
             if (const char* w = std::getenv("SPT_MOTION_WEIGHT")) mb.random_weight = std::atof(w);
             t0 = std::chrono::steady_clock::now();
             trees.push_back(build_motion_tree("motion" + std::to_string(leaf), doc->samples, rec, mb));
@@ -109,6 +114,14 @@ int main(int argc, char** argv) {
                                           double(std::chrono::duration_cast<std::chrono::nanoseconds>(
                                                      std::chrono::steady_clock::now() - q0).count()));
                 }
+        for (size_t t = 0; t < trees.size(); ++t) {
+            std::vector<double> np;
+            for (const QueryCounters& c : on_motion[t].counters) np.push_back(double(c.node_pairs));
+            std::sort(np.begin(), np.end());
+            if (!np.empty())
+                std::printf("%s node pairs: p10 %.0f p50 %.0f p90 %.0f max %.0f\n", names[t].c_str(), np[np.size() / 10],
+                            np[np.size() / 2], np[np.size() * 9 / 10], np.back());
+        }
         size_t best_auto = 0;
         for (size_t t = 1; t < 3; ++t)
             if (on_motion[t].median_ns < on_motion[best_auto].median_ns) best_auto = t;

@@ -86,6 +86,41 @@ TEST(BundledScenes, WalkingFeetStrikeTheFloorAndOnlyTheFeet) {
     EXPECT_GT(right, 20);
 }
 
+// The arm reaches into the bin four times: its gripper meets the bin's floor at each reach (tips 1 cm
+// in), and nothing of the arm above the gripper meets anything.
+TEST(BundledScenes, RobotArmReachesIntoTheBinFourTimesWithItsGripperOnly) {
+    const Scene s = bundled("robot_arm.json");
+    ASSERT_EQ(s.objects.size(), 6u);
+    ASSERT_EQ(s.objects[5].name, "arm");
+    Simulation sim(s, s.effects);
+    int reaches = 0;
+    bool touching = false;
+    for (int i = 0; i < s.steps; ++i) {
+        const StepResult& r = sim.step();
+        bool floor = false;
+        for (const PairContact& c : r.contacts) {
+            EXPECT_EQ(c.b, 5u) << "only the arm moves";
+            floor = floor || c.a == 0;
+        }
+        // The gripper's lowest point: the arm's frame puts it 0.3 below the origin.
+        if (!r.contacts.empty()) {
+            QueryScratch scratch;
+            QueryOptions deepest;
+            deepest.mode = QueryMode::Deepest;
+            for (const PairContact& c : r.contacts) {
+                const QueryResult q = collide(*s.objects[5].model, sim.poses()[5], *s.objects[c.a].model,
+                                              sim.poses()[c.a], deepest, scratch);
+                ASSERT_TRUE(q.collide);
+                const Eigen::Vector3d in_arm = sim.poses()[5].inverse().apply(q.deepest.point);
+                EXPECT_LT(in_arm.y(), -0.1) << "step " << r.step << ": the gripper, not the arm above it";
+            }
+        }
+        if (floor && !touching) ++reaches;
+        touching = floor;
+    }
+    EXPECT_EQ(reaches, 4);
+}
+
 TEST(BundledScenes, PileHasAThousandMovingObjectsAndItsBroadPhaseIsExact) {
     const Scene s = bundled("pile.json");
     ASSERT_EQ(s.objects.size(), 1001u);

@@ -104,6 +104,7 @@ struct MotionCost {
     double mean_sphere_tests = 0; ///< sampling-sphere pair tests per query
     double collide_share = 0;     ///< share of the queries that collide
     size_t queries = 0;           ///< queries timed: one per step and partner
+    std::vector<QueryCounters> counters; ///< per query, steps in order, partners in order within a step
     bool cancelled = false;       ///< stopped early; the figures are incomplete
 };
 

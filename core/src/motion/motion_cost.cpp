@@ -49,8 +49,9 @@ std::vector<MotionCost> measure_motion_cost(const MotionRecording& rec, const st
         if (deforms)
             models[t].deforming = std::make_unique<DeformingModel>(doc, rec.model.mesh, name, exact);
         else
-            models[t].rigid = rec.model.mesh ? std::make_unique<CollisionModel>(doc, rec.model.mesh->imported.mesh, name)
-                                             : std::make_unique<CollisionModel>(doc, name);
+            // The triangles only for `exact`: their tree is most of a large model's setup.
+            models[t].rigid = exact ? std::make_unique<CollisionModel>(doc, rec.model.mesh->imported.mesh, name)
+                                    : std::make_unique<CollisionModel>(doc, name);
     }
     // Animated partners are posed at their recorded clip times, each its own model.
     std::vector<std::unique_ptr<DeformingModel>> partner_pose(scene.objects.size());
@@ -101,6 +102,7 @@ std::vector<MotionCost> measure_motion_cost(const MotionRecording& rec, const st
                     const double ns = double(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count());
                     best[t][qt] = std::min(best[t][qt], ns);
                     if (r == 0) {
+                        out[t].counters.push_back(res.counters);
                         node_pairs[t] += double(res.counters.node_pairs);
                         sphere_tests[t] += double(res.counters.sphere_tests);
                         collided[t] += res.collide;

@@ -12,7 +12,11 @@ namespace {
 constexpr int kMotionBins = 16;
 // A node looks at no more entries than this (an even subsample beyond): the top levels of a
 // large model would otherwise dominate the build while their choice barely changes.
-constexpr size_t kMaxEntries = 1 << 16;
+constexpr size_t kMaxEntries = 1 << 12;
+// All nodes together read no more entries than this: beyond it, only every k-th recorded step is
+// read (a large model near a partner at every step would otherwise make the build slower than
+// the recording).
+constexpr size_t kMaxTotalEntries = size_t(1) << 21;
 // A node's box comes from an even subsample of at most this many samples (the partition is exact).
 constexpr size_t kMaxBoxSamples = 1 << 12;
 
@@ -52,28 +56,33 @@ MotionSplit::MotionSplit(const SampleSet& samples, const MotionRecording& rec, d
     if (rec.contact_steps.size() != samples.size())
         throw Error(ErrorKind::BadInput, "the motion was recorded on " + std::to_string(rec.contact_steps.size()) +
                                              " samples, the tree is over " + std::to_string(samples.size()));
-    steps_ = uint32_t(rec.reaches.size());
+    size_t total = 0;
+    for (const MotionReach& r : rec.reaches) total += r.near.size();
+    const size_t every = std::max<size_t>(1, (total + kMaxTotalEntries - 1) / kMaxTotalEntries);
+    std::vector<const MotionReach*> read;
+    for (size_t k = 0; k < rec.reaches.size(); k += every) read.push_back(&rec.reaches[k]);
+    steps_ = uint32_t(read.size());
     first_.assign(samples.size() + 1, 0);
-    for (const MotionReach& r : rec.reaches)
-        for (const auto& [s, g] : r.near) ++first_[s + 1];
+    for (const MotionReach* r : read)
+        for (const auto& [s, g] : r->near) ++first_[s + 1];
     for (size_t i = 0; i < samples.size(); ++i) first_[i + 1] += first_[i];
     entry_step_.resize(first_.back());
     entry_gap_.resize(first_.back());
     std::vector<uint32_t> at(first_.begin(), first_.end() - 1);
-    for (uint32_t k = 0; k < rec.reaches.size(); ++k)
-        for (const auto& [s, g] : rec.reaches[k].near) {
+    for (uint32_t k = 0; k < read.size(); ++k)
+        for (const auto& [s, g] : read[k]->near) {
             entry_step_[at[s]] = k;
             entry_gap_[at[s]++] = g;
         }
 }
 
-bool MotionSplit::choose(const uint32_t* members, size_t n, NodeId, std::vector<uint8_t>& left) const {
-    if (n < 2 || steps_ == 0) return false;
+MotionSplit::Answer MotionSplit::choose(const uint32_t* members, size_t n, NodeId, std::vector<uint8_t>& left) const {
+    if (n < 2 || steps_ == 0) return Answer::NotBelow;
     std::vector<Entry> entries;
     for (size_t m = 0; m < n; ++m)
         for (uint32_t e = first_[members[m]]; e < first_[members[m] + 1]; ++e)
             entries.push_back({uint32_t(m), entry_step_[e], entry_gap_[e]});
-    if (entries.empty()) return false;
+    if (entries.empty()) return Answer::NotBelow; // nor has any node below
     if (entries.size() > kMaxEntries) {
         const size_t stride = (entries.size() + kMaxEntries - 1) / kMaxEntries;
         size_t k = 0;
@@ -86,7 +95,7 @@ bool MotionSplit::choose(const uint32_t* members, size_t n, NodeId, std::vector<
     for (size_t m = 0; m < n; m += box_stride) node.add(p[members[m]]);
     for (const Entry& e : entries) node.add(p[members[e.member]]); // the near samples exactly
     const float node_r = node.radius();
-    if (!(node_r > 0)) return false;
+    if (!(node_r > 0)) return Answer::Builder;
     // Is the node itself entered at any recorded step? If not, the motion says nothing about it.
     {
         const Eigen::Vector3f c = node.centre();
@@ -96,7 +105,7 @@ bool MotionSplit::choose(const uint32_t* members, size_t n, NodeId, std::vector<
                 entered = true;
                 break;
             }
-        if (!entered) return false;
+        if (!entered) return Answer::Builder;
     }
     const size_t words = (steps_ + 63) / 64;
     const double K = double(steps_);
@@ -160,7 +169,7 @@ bool MotionSplit::choose(const uint32_t* members, size_t n, NodeId, std::vector<
             if (cost < best_cost) best_cost = cost, best_axis = a, best_plane = j;
         }
     }
-    if (best_axis < 0) return false;
+    if (best_axis < 0) return Answer::Builder;
     left.assign(n, 0);
     size_t nl = 0;
     for (size_t m = 0; m < n; ++m) {
@@ -169,7 +178,7 @@ bool MotionSplit::choose(const uint32_t* members, size_t n, NodeId, std::vector<
         left[m] = b < best_plane;
         nl += left[m];
     }
-    return nl > 0 && nl < n;
+    return nl > 0 && nl < n ? Answer::Split : Answer::Builder;
 }
 
 } // namespace spt::detail

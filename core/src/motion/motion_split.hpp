@@ -13,7 +13,7 @@ namespace spt::detail {
 class MotionSplit : public SplitChooser {
 public:
     MotionSplit(const SampleSet& samples, const MotionRecording& recording, double random_weight);
-    bool choose(const uint32_t* members, size_t n, NodeId id, std::vector<uint8_t>& left) const override;
+    Answer choose(const uint32_t* members, size_t n, NodeId id, std::vector<uint8_t>& left) const override;
 
 private:
     const SampleSet& samples_;

@@ -88,7 +88,10 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
         throw Error(ErrorKind::Usage, "record_motion: steps, reach_steps and reach_fraction must be >= 0, threads >= 1");
     auto run = std::make_shared<Scene>(scene);
     SceneObject& o = run->objects[index];
-    set_object_model(o, model.document, model.tree, model.mesh);
+    // A rigid object's triangles only where the scene tests triangles: their tree is most of a large
+    // model's setup, and spheres are what is recorded.
+    const bool triangles = scene.level == QueryLevel::Exact || scene.effects.has(Effect::Exact);
+    set_object_model(o, model.document, model.tree, o.animated || triangles ? model.mesh : nullptr);
 
     MotionRecording rec;
     rec.scene_file = scene.file;

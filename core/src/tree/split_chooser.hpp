@@ -11,10 +11,13 @@ namespace spt::detail {
 class SplitChooser {
 public:
     virtual ~SplitChooser() = default;
-    // The node's samples are members[0..n); on true, left[i] says whether members[i] goes to the
-    // left child (both sides non-empty). False: the builder's strategy splits the node. Called from
-    // several threads at once on disjoint nodes.
-    virtual bool choose(const uint32_t* members, size_t n, NodeId id, std::vector<uint8_t>& left) const = 0;
+    enum class Answer {
+        Split,    // left[i] says whether members[i] goes to the left child
+        Builder,  // the builder's strategy splits this node
+        NotBelow, // ... and every node below it, without asking again
+    };
+    // The node's samples are members[0..n). Called from several threads at once on disjoint nodes.
+    virtual Answer choose(const uint32_t* members, size_t n, NodeId id, std::vector<uint8_t>& left) const = 0;
 };
 
 // build_tree over `members` (sorted sample indices) with `chooser` asked first (may be null),

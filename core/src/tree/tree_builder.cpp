@@ -110,7 +110,10 @@ struct Builder {
 
     // Emits an inner node and builds its children over [b, mid) and [mid, e); `boxes`, if
     // given, are the children's boxes.
-    void build_children(TreeNode&& node, size_t b, size_t mid, size_t e, const std::array<Bounds3, 2>* boxes = nullptr) {
+    // `ask`: the chooser (if any) is asked at the children's nodes; false once it said nothing below
+    // a node concerns it.
+    void build_children(TreeNode&& node, size_t b, size_t mid, size_t e, const std::array<Bounds3, 2>* boxes = nullptr,
+                        bool ask = true) {
         const NodeId id = node.id;
         node.active = false;
         const size_t at = emit(std::move(node));
@@ -119,8 +122,8 @@ struct Builder {
         if (node_depth(id) < parallel_depth && std::min(mid - b, e - mid) >= kParallelSubtree) {
             Builder right{options, items, {}, {}, max_depth, parallel_depth, {}, false, chooser};
             detail::parallel_for(2, 2, [&](size_t k, int) {
-                if (k == 0) build(b, mid, left_child(id), left_box);
-                else right.build(mid, e, right_child(id), right_box);
+                if (k == 0) build(b, mid, left_child(id), left_box, ask);
+                else right.build(mid, e, right_child(id), right_box, ask);
             }, options.tasks);
             const auto base = uint32_t(out.size());
             right_of[at] = base;
@@ -128,9 +131,9 @@ struct Builder {
             std::move(right.out.begin(), right.out.end(), std::back_inserter(out));
             return;
         }
-        build(b, mid, left_child(id), left_box);
+        build(b, mid, left_child(id), left_box, ask);
         right_of[at] = uint32_t(out.size());
-        build(mid, e, right_child(id), right_box);
+        build(mid, e, right_child(id), right_box, ask);
     }
 
     // The built nodes in breadth-first order, children left to right: increasing ids, the
@@ -261,7 +264,7 @@ struct Builder {
     }
 
     // Builds the node `id` over [b, e); `known`, if given, is the box of the items.
-    void build(size_t b, size_t e, NodeId id, const Bounds3* known = nullptr) {
+    void build(size_t b, size_t e, NodeId id, const Bounds3* known = nullptr, bool ask = true) {
         if (e - b >= kCancelCheckSamples) detail::stop_if_cancelled(options.cancel, "building", "the tree");
         TreeNode node;
         node.id = id;
@@ -291,11 +294,13 @@ struct Builder {
         // save; the median of the longest axis is as good there.
         const bool small = e - b <= 4 * size_t(options.leaf_size);
         parts_known = false;
-        if (chooser) {
+        if (chooser && ask) {
             std::vector<uint32_t> members(e - b);
             for (size_t i = b; i < e; ++i) members[i - b] = items[i].sample;
             std::vector<uint8_t> left;
-            if (chooser->choose(members.data(), members.size(), id, left)) {
+            const detail::SplitChooser::Answer answer = chooser->choose(members.data(), members.size(), id, left);
+            ask = answer != detail::SplitChooser::Answer::NotBelow;
+            if (answer == detail::SplitChooser::Answer::Split) {
                 // Left items first, each side in the order it had: the same on any thread count.
                 std::vector<Item> parted;
                 parted.reserve(e - b);
@@ -316,7 +321,7 @@ struct Builder {
         if (mid <= b || mid >= e) mid = split_median(b, e, box), parts_known = false;
         // Copied: the children's splits overwrite `parts`.
         const std::array<Bounds3, 2> boxes = parts;
-        build_children(std::move(node), b, mid, e, parts_known ? &boxes : nullptr);
+        build_children(std::move(node), b, mid, e, parts_known ? &boxes : nullptr, ask);
     }
 };
 
