@@ -76,10 +76,13 @@ int main(int argc, char** argv) {
             mb.build.threads = 2;
             if (const char* w = std::getenv("SPT_MOTION_WEIGHT")) mb.random_weight = std::atof(w);
             t0 = std::chrono::steady_clock::now();
-            trees.push_back(build_motion_tree("motion" + std::to_string(leaf), doc->samples, rec, mb));
+            MotionBuildReport report;
+            trees.push_back(build_motion_tree("motion" + std::to_string(leaf), doc->samples, rec, mb, &report));
             const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             names.push_back("motion leaf " + std::to_string(leaf));
-            std::printf("motion leaf %u built in %.3f s\n", leaf, s);
+            std::printf("motion leaf %u built in %.3f s: work %.1f (weight %g) against the automatic build's %.1f%s\n",
+                        leaf, s, report.work_motion, report.random_weight, report.work_automatic,
+                        report.kept_automatic ? ": kept the automatic build" : "");
         }
         std::vector<const SamplingTree*> ptrs;
         for (const SamplingTree& t : trees) ptrs.push_back(&t);
@@ -126,12 +129,13 @@ int main(int argc, char** argv) {
         for (size_t t = 1; t < 3; ++t)
             if (on_motion[t].median_ns < on_motion[best_auto].median_ns) best_auto = t;
         const double random_auto = median(best[best_auto]);
-        std::printf("| tree | motion: median ns | node pairs | sphere tests | collide | vs best auto | random: median ns | node pairs | vs best auto |\n");
-        std::printf("|---|---|---|---|---|---|---|---|---|\n");
+        std::printf("| tree | motion: median ns | mean ns | p90 ns | node pairs | sphere tests | collide | vs best auto | random: median ns | node pairs | vs best auto |\n");
+        std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (size_t t = 0; t < trees.size(); ++t) {
             const double rnd = median(best[t]);
-            std::printf("| %s%s | %.0f | %.1f | %.1f | %.2f | %.2f | %.0f | %.1f | %.2f |\n", names[t].c_str(),
-                        t == best_auto ? " (best auto)" : "", on_motion[t].median_ns, on_motion[t].mean_node_pairs,
+            std::printf("| %s%s | %.0f | %.0f | %.0f | %.1f | %.1f | %.2f | %.2f | %.0f | %.1f | %.2f |\n", names[t].c_str(),
+                        t == best_auto ? " (best auto)" : "", on_motion[t].median_ns, on_motion[t].mean_ns, on_motion[t].p90_ns,
+                        on_motion[t].mean_node_pairs,
                         on_motion[t].mean_sphere_tests, on_motion[t].collide_share,
                         on_motion[t].median_ns / on_motion[best_auto].median_ns, rnd, random_pairs[t], rnd / random_auto);
         }

@@ -100,6 +100,8 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
 /// Figures of one tree on a recorded motion.
 struct MotionCost {
     double median_ns = 0;         ///< median over the steps of a step's queries' time (each query's best), nanoseconds
+    double mean_ns = 0;           ///< mean of the same step times, nanoseconds
+    double p90_ns = 0;            ///< the 90th percentile of the same step times, nanoseconds: the expensive steps
     double mean_node_pairs = 0;   ///< node pairs per query
     double mean_sphere_tests = 0; ///< sampling-sphere pair tests per query
     double collide_share = 0;     ///< share of the queries that collide

@@ -127,8 +127,10 @@ std::vector<MotionCost> measure_motion_cost(const MotionRecording& rec, const st
             for (size_t k = 0; k < st.partners.size(); ++k) sum += best[t][q++];
             per_step.push_back(sum);
         }
-        std::nth_element(per_step.begin(), per_step.begin() + long(per_step.size() / 2), per_step.end());
+        std::sort(per_step.begin(), per_step.end());
+        for (double v : per_step) c.mean_ns += v / double(per_step.size());
         c.median_ns = per_step[per_step.size() / 2];
+        c.p90_ns = per_step[per_step.size() * 9 / 10];
         c.mean_node_pairs = node_pairs[t] / double(queries);
         c.mean_sphere_tests = sphere_tests[t] / double(queries);
         c.collide_share = double(collided[t]) / double(queries);

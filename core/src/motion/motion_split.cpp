@@ -10,6 +10,8 @@ namespace spt::detail {
 namespace {
 
 constexpr int kMotionBins = 16;
+// Nodes of at most this many leaves' worth of samples are left to the automatic builder.
+constexpr size_t kMotionLeaves = 8;
 // A node looks at no more entries than this (an even subsample beyond): the top levels of a
 // large model would otherwise dominate the build while their choice barely changes.
 constexpr size_t kMaxEntries = 1 << 12;
@@ -51,8 +53,8 @@ size_t count_bits(const std::vector<uint64_t>& bits, size_t at, size_t words) {
 
 } // namespace
 
-MotionSplit::MotionSplit(const SampleSet& samples, const MotionRecording& rec, double random_weight)
-    : samples_(samples), random_weight_(random_weight) {
+MotionSplit::MotionSplit(const SampleSet& samples, const MotionRecording& rec, double random_weight, uint32_t leaf_size)
+    : samples_(samples), random_weight_(random_weight), leaf_size_(std::max<uint32_t>(1, leaf_size)) {
     if (rec.contact_steps.size() != samples.size())
         throw Error(ErrorKind::BadInput, "the motion was recorded on " + std::to_string(rec.contact_steps.size()) +
                                              " samples, the tree is over " + std::to_string(samples.size()));
@@ -78,6 +80,9 @@ MotionSplit::MotionSplit(const SampleSet& samples, const MotionRecording& rec, d
 
 MotionSplit::Answer MotionSplit::choose(const uint32_t* members, size_t n, NodeId, std::vector<uint8_t>& left) const {
     if (n < 2 || steps_ == 0) return Answer::NotBelow;
+    // Below a few leaves' worth the automatic split is as good, and the motion's entries are many
+    // a sample there: the build's time would go to the nodes that matter least.
+    if (n <= kMotionLeaves * leaf_size_) return Answer::NotBelow;
     std::vector<Entry> entries;
     for (size_t m = 0; m < n; ++m)
         for (uint32_t e = first_[members[m]]; e < first_[members[m] + 1]; ++e)

@@ -12,12 +12,13 @@ namespace spt::detail {
 // spheres lies within (child radius - distance of the sample from the child's centre) of a partner.
 class MotionSplit : public SplitChooser {
 public:
-    MotionSplit(const SampleSet& samples, const MotionRecording& recording, double random_weight);
+    MotionSplit(const SampleSet& samples, const MotionRecording& recording, double random_weight, uint32_t leaf_size);
     Answer choose(const uint32_t* members, size_t n, NodeId id, std::vector<uint8_t>& left) const override;
 
 private:
     const SampleSet& samples_;
     double random_weight_;
+    size_t leaf_size_;
     uint32_t steps_ = 0;                  // recorded steps with a reach
     std::vector<uint32_t> first_;         // per sample: its first entry (CSR), then the total
     std::vector<uint32_t> entry_step_;    // per entry: index into the reaches
