@@ -1,6 +1,7 @@
 // Trees built for a recorded motion: the automatic builder with the motion's split chooser asked
 // first at every node, at two weights of the random-pose term, and the automatic build alone; the
 // candidate that works least on (a sample of) the recorded steps is kept.
+#include "base/parallel.hpp"
 #include "motion/motion_split.hpp"
 #include "spt/error.hpp"
 #include "spt/motion_tree.hpp"
@@ -8,6 +9,9 @@
 
 namespace spt {
 namespace {
+
+// Nodes of more samples than this try one weight only.
+constexpr size_t kOneWeightSamples = size_t(1) << 18;
 
 // The recording with at most `most` of its steps that meet a partner, evenly spread (0: all).
 MotionRecording compared_steps(const MotionRecording& rec, int most) {
@@ -31,18 +35,27 @@ EditResult build_best(SamplingTree& tree, NodeId node, const SampleSet& samples,
     if (rec.contact_steps.size() != samples.size())
         throw Error(ErrorKind::BadInput, "the motion was recorded on " + std::to_string(rec.contact_steps.size()) +
                                              " samples, the tree is over " + std::to_string(samples.size()));
-    const double weights[2] = {options.random_weight, options.random_weight / 4};
-    std::vector<SamplingTree> candidates;
-    for (double w : weights) {
-        const detail::MotionSplit chooser(samples, rec, w, options.build.leaf_size);
-        SamplingTree t = tree;
-        const EditResult done = detail::TreeGraft::build_subtree(t, node, samples, options.build, &chooser);
-        if (!done) return done;
-        candidates.push_back(std::move(t));
-    }
-    SamplingTree automatic = tree;
-    if (const EditResult done = automatic.build_subtree(node, samples, options.build); !done) return done;
-    candidates.push_back(std::move(automatic));
+    // A large node tries one weight: the build's time is the chooser's, and a second weight would
+    // add as much again.
+    const TreeNode* at = tree.find(node);
+    const bool large = at && at->samples.size() > kOneWeightSamples;
+    std::vector<double> weights{options.random_weight};
+    if (!large) weights.push_back(options.random_weight / 4);
+    // The candidates are built side by side, each on one thread: the same trees as one after another.
+    std::vector<SamplingTree> candidates(weights.size() + 1, tree);
+    std::vector<EditResult> done(candidates.size());
+    BuildOptions one = options.build;
+    one.threads = 1;
+    detail::parallel_for(candidates.size(), std::max(1, options.build.threads), [&](size_t k, int) {
+        if (k < weights.size()) {
+            const detail::MotionSplit chooser(samples, rec, weights[k], options.build.leaf_size);
+            done[k] = detail::TreeGraft::build_subtree(candidates[k], node, samples, one, &chooser);
+        } else {
+            done[k] = candidates[k].build_subtree(node, samples, one);
+        }
+    }, options.build.tasks);
+    for (const EditResult& d : done)
+        if (!d) return d;
     const MotionRecording few = compared_steps(rec, options.compare_steps);
     std::vector<const SamplingTree*> compared;
     for (const SamplingTree& t : candidates) compared.push_back(&t);
@@ -56,7 +69,7 @@ EditResult build_best(SamplingTree& tree, NodeId node, const SampleSet& samples,
     for (size_t k = 1; k < candidates.size(); ++k)
         if (cost[k] < cost[best]) best = k;
     if (report) {
-        const size_t motion = cost[1] < cost[0] ? 1 : 0;
+        const size_t motion = weights.size() > 1 && cost[1] < cost[0] ? 1 : 0;
         *report = {cost[motion], weights[motion], cost.back(), best + 1 == candidates.size()};
     }
     tree = std::move(candidates[best]);

@@ -11,7 +11,7 @@ namespace {
 
 constexpr int kMotionBins = 16;
 // Nodes of at most this many leaves' worth of samples are left to the automatic builder.
-constexpr size_t kMotionLeaves = 8;
+constexpr size_t kMotionLeaves = 32;
 // A node looks at no more entries than this (an even subsample beyond): the top levels of a
 // large model would otherwise dominate the build while their choice barely changes.
 constexpr size_t kMaxEntries = 1 << 12;
