@@ -56,6 +56,12 @@ nlohmann::json describe(const SptDocument& doc, const std::string& path) {
                               {"root_bv_radius", root->bv_radius},
                               {"query_layout_bytes", compact.memory_bytes()},
                               {"query_bytes_per_sample", double(compact.memory_bytes()) / double(std::max<size_t>(1, doc.samples.size()))}});
+        json& tj = j["trees"].back();
+        tj["recipe_steps"] = t.recipe().size();
+        tj["motion_builds"] = json::array();
+        for (const MotionBuildStep& m : t.motion_builds())
+            tj["motion_builds"].push_back({{"node", m.node}, {"scene", m.scene}, {"object", m.object}, {"steps", m.steps},
+                                           {"leaf_size", m.leaf_size}});
     }
     return j;
 }
@@ -146,13 +152,17 @@ int run_info(const InfoArgs& a) {
               << " triangles, diagonal " << doc.mesh.diagonal << ", local origin " << j["local_origin"].dump() << "\n"
               << "samples: " << j["samples"]["total"] << " (" << j["samples"]["vertex"] << " vertex, "
               << j["samples"]["face"] << " face)\n";
-    for (const auto& t : j["trees"])
+    for (const auto& t : j["trees"]) {
         std::cout << "tree '" << t["name"].get<std::string>() << "': " << t["nodes"] << " nodes, " << t["active_nodes"]
                   << " active, depth " << t["depth"] << ", largest active node " << t["largest_active_node"]
                   << " samples\n  sampling-sphere radius min " << t["ss_radius"]["min"] << " median "
                   << t["ss_radius"]["median"] << " max " << t["ss_radius"]["max"] << "; root bounding radius "
                   << t["root_bv_radius"] << "\n  query layout " << t["query_layout_bytes"] << " bytes ("
                   << t["query_bytes_per_sample"].get<double>() << " per sample)\n";
+        for (const auto& m : t["motion_builds"])
+            std::cout << "  built for a motion under node " << m["node"] << ": object '" << m["object"].get<std::string>()
+                      << "' of " << m["scene"].get<std::string>() << "\n";
+    }
     return 0;
 }
 

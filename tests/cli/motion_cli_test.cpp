@@ -37,6 +37,8 @@ TEST(ConvertCli, MotionBuildsATreeForTheSceneAndARecipeRebuildsItTheSame) {
     // Relative to the file's folder, so the pair can move together.
     EXPECT_FALSE(t.motion_builds()[0].scene.empty());
     EXPECT_NE(t.motion_builds()[0].scene.front(), '/') << t.motion_builds()[0].scene;
+    r = run_command(spt_binary() + " info " + q(first));
+    EXPECT_NE(r.output.find("built for a motion under node 1: object 'torus' of "), std::string::npos) << r.output;
     r = run_command(spt_binary() + " convert " + q(resource("meshes/torus.obj")) + " --recipe " + q(first) + " -o " +
                     q(again));
     ASSERT_EQ(r.exit_code, 0) << r.output;
