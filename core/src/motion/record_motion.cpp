@@ -1,5 +1,6 @@
 // Runs a scene with one object's tree and records its motion: poses, partners, the samples
 // whose spheres took part in a contact, and the samples near a partner at evenly spread steps.
+#include "base/parallel.hpp"
 #include "spt/error.hpp"
 #include "spt/motion.hpp"
 #include "spt/query.hpp"
@@ -110,12 +111,39 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
     if (!(rec.reach > 0)) rec.reach = 0.04 * o.model->extent();
 
     Simulation sim(*run, run->effects, options.threads, options.tasks);
-    QueryScratch scratch;
-    std::vector<uint32_t> stamp(samples, 0);
-    std::vector<float> gap(samples, std::numeric_limits<float>::infinity());
-    std::vector<uint32_t> touched;
     // The steps that get a reach: evenly spread, the last one included.
     const int reach_every = options.reach_steps > 0 ? std::max(1, (steps + options.reach_steps - 1) / options.reach_steps) : 0;
+    auto with_reach = [&](int k) { return reach_every > 0 && ((steps - 1 - k) % reach_every == 0); };
+    const SampleSet* rigid_points = deforms ? nullptr : &model.document->samples;
+    // Where no object deforms, every model stays as loaded: the samples of each step are found after
+    // the run, the steps spread over the threads (each its own counts, added in the end: the same
+    // for any count). A deforming object is posed step by step, so its samples are found as it goes.
+    bool any_deforms = false;
+    if (run->effects.has(Effect::Deform))
+        for (const SceneObject& other : run->objects) any_deforms = any_deforms || other.animated;
+    struct Marks {
+        QueryScratch scratch;
+        std::vector<uint32_t> stamp, counts, touched;
+        std::vector<float> gap;
+        explicit Marks(size_t n) : stamp(n, 0), counts(n, 0), gap(n, std::numeric_limits<float>::infinity()) {}
+    };
+    // Step k's samples against its partners (models as `objects` hold them now); its reach into `reach`.
+    auto mark_step = [&](Marks& m, const std::vector<SceneObject>& objects, int k, MotionStep& st, MotionReach* reach) {
+        const CollisionModel& mine = *objects[index].model;
+        for (const MotionPartner& p : st.partners) {
+            const CollisionModel& theirs = *objects[p.object].model;
+            if (p.contact) mark_contacts(mine, theirs, p.pose, m.scratch, m.stamp, uint32_t(k + 1), m.counts);
+            if (reach) measure_reach(mine, theirs, p.pose, float(rec.reach), rigid_points, m.scratch, m.gap, m.touched);
+        }
+        if (!reach) return;
+        std::sort(m.touched.begin(), m.touched.end());
+        reach->step = uint32_t(k);
+        reach->near.reserve(m.touched.size());
+        for (uint32_t s : m.touched) reach->near.emplace_back(s, m.gap[s]), m.gap[s] = std::numeric_limits<float>::infinity();
+        m.touched.clear();
+    };
+    std::vector<Marks> marks;
+    marks.emplace_back(samples);
     rec.steps.reserve(size_t(steps));
     for (int k = 0; k < steps; ++k) {
         if (options.cancel && options.cancel->load()) throw Cancelled("recording the motion was cancelled");
@@ -127,9 +155,6 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
         st.step = res.step;
         st.time = res.time;
         st.pose = poses[index];
-        const bool with_reach = reach_every > 0 && ((steps - 1 - k) % reach_every == 0);
-        MotionReach reach;
-        reach.step = uint32_t(k);
         bool in_contact = false;
         for (uint32_t j = 0; j < now.objects.size(); ++j) {
             if (j == index) continue;
@@ -141,28 +166,37 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
             p.pose = relative_pose(poses[index], poses[j]);
             for (const PairContact& c : res.contacts)
                 if ((c.a == index && c.b == j) || (c.b == index && c.a == j)) p.contact = true;
-            const CollisionModel& mine = *now.objects[index].model;
-            const CollisionModel& theirs = *now.objects[j].model;
-            if (p.contact) {
-                in_contact = true;
-                mark_contacts(mine, theirs, p.pose, scratch, stamp, uint32_t(k + 1), rec.contact_steps);
-            }
-            if (with_reach)
-                measure_reach(mine, theirs, p.pose, float(rec.reach), deforms ? nullptr : &model.document->samples,
-                              scratch, gap, touched);
+            in_contact = in_contact || p.contact;
             st.partners.push_back(p);
         }
         if (in_contact) ++rec.steps_in_contact;
-        if (with_reach) {
-            std::sort(touched.begin(), touched.end());
-            reach.near.reserve(touched.size());
-            for (uint32_t s : touched) reach.near.emplace_back(s, gap[s]), gap[s] = std::numeric_limits<float>::infinity();
-            touched.clear();
-            rec.reaches.push_back(std::move(reach));
+        if (any_deforms) {
+            MotionReach reach;
+            mark_step(marks.front(), now.objects, k, st, with_reach(k) ? &reach : nullptr);
+            if (with_reach(k)) rec.reaches.push_back(std::move(reach));
         }
         rec.steps.push_back(std::move(st));
         if (options.progress) options.progress(k + 1, steps);
     }
+    if (!any_deforms) {
+        std::vector<int> reach_of(size_t(steps), -1);
+        for (int k = 0; k < steps; ++k)
+            if (with_reach(k)) reach_of[size_t(k)] = int(rec.reaches.size()), rec.reaches.emplace_back();
+        const int jobs = std::max(1, std::min(options.threads, steps));
+        while (int(marks.size()) < jobs) marks.emplace_back(samples);
+        // Contiguous runs of steps, one a job: a job's stamps stay valid within its run.
+        detail::parallel_for(size_t(jobs), jobs, [&](size_t job, int) {
+            Marks& m = marks[job];
+            for (size_t k = job * size_t(steps) / size_t(jobs); k < (job + 1) * size_t(steps) / size_t(jobs); ++k) {
+                if (options.cancel && options.cancel->load()) return;
+                const int r = reach_of[k];
+                mark_step(m, run->objects, int(k), rec.steps[k], r >= 0 ? &rec.reaches[size_t(r)] : nullptr);
+            }
+        }, options.tasks);
+        if (options.cancel && options.cancel->load()) throw Cancelled("recording the motion was cancelled");
+    }
+    for (const Marks& m : marks)
+        for (size_t i = 0; i < samples; ++i) rec.contact_steps[i] += m.counts[i];
     // Clip times: what the simulation posed the animated objects at, by the scene's rule.
     for (MotionStep& st : rec.steps) {
         const double t_query = st.time; // the step's queries run at the end-of-step time
