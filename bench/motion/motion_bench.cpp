@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
         MotionOptions mo;
         mo.steps = steps;
         mo.threads = 2;
+        if (const char* r = std::getenv("SPT_REACH_STEPS")) mo.reach_steps = std::atoi(r);
         // The scene alone, as spt simulate runs it: what the recording adds to it is the heat map's work.
         auto t0 = std::chrono::steady_clock::now();
         {

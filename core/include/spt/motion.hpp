@@ -67,7 +67,7 @@ struct MotionRecording {
     uint32_t most_contact_steps = 0; ///< the largest entry of contact_steps
     uint32_t steps_in_contact = 0;   ///< steps at which the object collided with some partner
     double reach = 0;                ///< how far MotionReach looks, model units
-    std::vector<MotionReach> reaches; ///< at most MotionOptions::reach_steps steps, spread evenly
+    std::vector<MotionReach> reaches; ///< at most MotionOptions::reach_steps steps, in step order
     /// The scene as run: the partners' models (shared), the recorded object's replaced by the recorded model.
     std::shared_ptr<const Scene> scene;
     MotionModel model;           ///< what was recorded
@@ -78,8 +78,9 @@ struct MotionOptions {
     int steps = 0;           ///< steps to run; 0: the scene's own count
     int threads = 1;         ///< jobs for the simulation's parallel stages (>= 1)
     TaskSystem* tasks = nullptr; ///< a host's threads; null: the library's pool
-    /// At most this many steps get a MotionReach (evenly spread): what the builder reads.
-    int reach_steps = 128;
+    /// At most this many steps get a MotionReach: what the builder reads. Evenly spread over the
+    /// steps that meet a partner (over all steps when an object of the scene deforms), the last included.
+    int reach_steps = 64;
     /// MotionRecording::reach as a fraction of the object's diagonal; 0: the default (4%).
     double reach_fraction = 0;
     const std::atomic<bool>* cancel = nullptr; ///< set by another thread: stops between steps, throws Cancelled

@@ -179,9 +179,16 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
         if (options.progress) options.progress(k + 1, steps);
     }
     if (!any_deforms) {
-        std::vector<int> reach_of(size_t(steps), -1);
+        // Known now: the reaches go to steps that meet a partner, evenly spread over those.
+        std::vector<int> met;
         for (int k = 0; k < steps; ++k)
-            if (with_reach(k)) reach_of[size_t(k)] = int(rec.reaches.size()), rec.reaches.emplace_back();
+            if (!rec.steps[size_t(k)].partners.empty()) met.push_back(k);
+        const size_t wanted = std::min(met.size(), size_t(options.reach_steps));
+        std::vector<int> reach_of(size_t(steps), -1);
+        for (size_t i = 0; i < wanted; ++i) {
+            const int k = met[met.size() - 1 - (wanted - 1 - i) * met.size() / wanted]; // the last one included
+            if (reach_of[size_t(k)] < 0) reach_of[size_t(k)] = int(rec.reaches.size()), rec.reaches.emplace_back();
+        }
         const int jobs = std::max(1, std::min(options.threads, steps));
         while (int(marks.size()) < jobs) marks.emplace_back(samples);
         // Contiguous runs of steps, one a job: a job's stamps stay valid within its run.
