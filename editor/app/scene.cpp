@@ -31,6 +31,11 @@ void Scene::set_color_by(render::ColorBy by) {
     rebuild_tree();
 }
 
+void Scene::set_motion(std::shared_ptr<const MotionRecording> motion) {
+    motion_ = std::move(motion);
+    if (color_by_ == render::ColorBy::Contacts) rebuild_tree();
+}
+
 void Scene::rebuild_mesh() {
     data_.mesh = doc_.mesh();
     data_.origin = doc_.samples().origin;
@@ -68,7 +73,18 @@ void Scene::rebuild_spheres() {
     if (doc_.has_tree() && compact_) {
         // At a pose, the posed layout: the same tree and sphere order, the centres moved.
         const CompactTree& drawn = doc_.posed() ? doc_.posed()->model().tree() : *compact_;
-        data_.spheres = render::sampling_spheres(drawn, doc_.tree(), color_by_, data_.origin);
+        // The motion's counts are per sample of the document it was recorded with: another
+        // document's (a file opened since) colour nothing.
+        const std::vector<uint32_t>* counts =
+            motion_ && motion_->contact_steps.size() == doc_.samples().size() ? &motion_->contact_steps : nullptr;
+        data_.spheres = render::sampling_spheres(drawn, doc_.tree(), color_by_, data_.origin, counts);
+        data_.legend.clear();
+        data_.heat = {};
+        if (color_by_ == render::ColorBy::Contacts) {
+            static const std::vector<uint32_t> none;
+            data_.heat = render::heat_scale(counts ? *counts : none);
+            data_.legend = render::heat_legend(data_.heat, counts ? *counts : std::vector<uint32_t>(doc_.samples().size(), 0));
+        }
     }
     ++data_.spheres_revision;
 }
@@ -113,7 +129,8 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         // nothing is selected, so that a selection change leaves the frame as it was and the
         // renderer recolours its cached frame instead of drawing it again.
         for (render::SphereItem item :
-             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true)) {
+             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true,
+                                      color_by_ == render::ColorBy::Contacts)) {
             item.marked_color = selection_color();
             item.pose = render::local_frame(data_.origin);
             f.spheres.push_back(item);

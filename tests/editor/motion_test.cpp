@@ -1,0 +1,209 @@
+// Authoring from motion (issue 40) in the editor: a scene's motion loaded in the background through
+// the path File > Load motion takes, its heat map in every view, a build from motion as one undo
+// command recorded in the tree, and the cost panel's column for the motion.
+#include "cost_panel.hpp"
+#include "editor_support.hpp"
+#include "tree_panel.hpp"
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMessageBox>
+#include <QScreen>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTest>
+#include <gtest/gtest.h>
+
+using namespace spt;
+using namespace spt::test;
+
+namespace {
+
+const QString kResources = QString(SPT_SOURCE_DIR) + "/resources/";
+const QString kWalking = kResources + "scenes/walking.json";
+
+// The bundled walking figure's document with its skinned mesh (the scene's object `walker`).
+std::unique_ptr<editor::MainWindow> open_figure(const TempDir& dir, std::string* error) {
+    editor::StartOptions start = test_start(dir);
+    start.file = kResources + "scenes/figure_walk.spt";
+    start.mesh = kResources + "models/walking_figure.gltf";
+    start.output = QString::fromStdString(dir.file("out.spt"));
+    auto w = std::make_unique<editor::MainWindow>(start);
+    w->show();
+    if (!wait_ready(*w)) return *error = "the editor did not open the figure: " + w->last_error().toStdString(), nullptr;
+    return w;
+}
+
+// Loads the motion of `object` in `scene` as the menu does once the object is chosen; true when it is in.
+bool load(editor::MainWindow& w, const QString& scene, const QString& object, int steps, QString* failure = nullptr) {
+    QSignalSpy loaded(&w.motion(), &editor::MotionSession::loaded);
+    QSignalSpy failed(&w.motion(), &editor::MotionSession::failed);
+    if (!w.load_motion(scene, object, steps)) return false;
+    if (!QTest::qWaitFor([&] { return loaded.count() + failed.count() > 0; }, 300000)) return false;
+    if (failure && failed.count()) *failure = failed.front().front().toString();
+    return loaded.count() == 1;
+}
+
+// Pixels of a heat colour from the upper half of the ramp (green to yellow): neither the grey of 0
+// steps, the mesh and the grid, nor the highlight's orange-yellow (the axis gizmo's Y is green too).
+int heat_pixels(const QImage& image) {
+    int n = 0;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < rgb.height(); ++y)
+        for (int x = 0; x < rgb.width(); ++x) {
+            const QColor c(rgb.pixel(x, y));
+            if (c.green() > c.red() + 25 && c.green() > c.blue() + 25 && c.green() > 120) ++n;
+        }
+    return n;
+}
+
+} // namespace
+
+TEST(MotionUi, LoadingAMotionColoursEveryViewByContactsAndBadInputKeepsTheDocument) {
+    TempDir dir("editor-motion-load");
+    std::string error;
+    const auto w = open_figure(dir, &error);
+    ASSERT_TRUE(w) << error;
+    const std::vector<uint8_t> bytes = w->document().encode();
+    std::vector<int> before;
+    std::vector<QImage> level_pictures;
+    for (int i = 0; i < 4; ++i) {
+        level_pictures.push_back(w->grid().view(i)->grabFramebuffer());
+        before.push_back(heat_pixels(level_pictures.back()));
+    }
+
+    // Bad input: a message naming the file; the document and the views stay.
+    QString failure;
+    EXPECT_FALSE(load(*w, QString::fromStdString(dir.file("no_such_scene.json")), "walker", 0, &failure));
+    EXPECT_TRUE(failure.contains("no_such_scene.json")) << failure.toStdString();
+    EXPECT_TRUE(w->last_error().contains("no_such_scene.json")) << w->last_error().toStdString();
+    EXPECT_FALSE(load(*w, kWalking, "nobody", 0, &failure));
+    EXPECT_TRUE(failure.contains("walking.json") && failure.contains("'nobody'")) << failure.toStdString();
+    // The floor is another mesh than the figure's.
+    EXPECT_FALSE(load(*w, kWalking, "floor", 0, &failure));
+    EXPECT_TRUE(failure.contains("walking.json") && failure.contains("not made from")) << failure.toStdString();
+    EXPECT_FALSE(w->motion().recording());
+    EXPECT_EQ(w->document().encode(), bytes);
+
+    // The menu's object list offers the walker first: its mesh is the document's.
+    const editor::SceneObjects objects = editor::read_scene_objects(kWalking);
+    ASSERT_EQ(objects.names, QStringList({"floor", "walker"}));
+    EXPECT_EQ(editor::matching_object(objects, QString::fromStdString(w->document().document().mesh.name), {}), 1);
+
+    ASSERT_TRUE(load(*w, kWalking, "walker", 0));
+    const auto rec = w->motion().recording();
+    ASSERT_TRUE(rec);
+    EXPECT_EQ(rec->steps.size(), 200u);
+    EXPECT_GT(rec->most_contact_steps, 10u);
+    EXPECT_EQ(w->document().encode(), bytes) << "a motion is not an edit";
+    EXPECT_EQ(w->undo_stack().count(), 0);
+    // The views switch to the heat map: the combo says so, every view has its legend and draws it.
+    EXPECT_EQ(w->tree_panel().findChild<QComboBox*>("color_by")->currentIndex(), 2);
+    int views_with_heat = 0;
+    for (int i = 0; i < 4; ++i) {
+        editor::ViewWidget* v = w->grid().view(i);
+        ASSERT_TRUE(v->legend()->isVisible()) << i;
+        EXPECT_TRUE(v->legend()->text().contains("steps in contact")) << i;
+        EXPECT_TRUE(v->legend()->text().contains(QString("%1 samples").arg(std::count(rec->contact_steps.begin(),
+                                                                                        rec->contact_steps.end(), 0u))))
+            << v->legend()->text().toStdString();
+        const QImage heat = v->grabFramebuffer();
+        EXPECT_NE(heat, level_pictures[size_t(i)]) << "view " << i << " still coloured by level";
+        if (heat_pixels(heat) > before[size_t(i)] + 20) ++views_with_heat;
+    }
+    // The soles (the samples most in contact) are under the figure in the top view and a few
+    // pixels in the front view: the side and camera views show them large enough to count.
+    EXPECT_GE(views_with_heat, 2);
+    // For docs/editor.md.
+    w->findChild<QDockWidget*>("history_dock")->raise();
+    for (QMessageBox* box : w->findChildren<QMessageBox*>()) box->close(); // the bad input's messages
+    QTest::qWait(200);
+    w->screen()->grabWindow(w->winId()).save(QString::fromStdString(editor_output_dir() + "/motion_heat_map.png"));
+
+    // Back to levels: the legend goes, the heat colours too.
+    w->tree_panel().findChild<QComboBox*>("color_by")->setCurrentIndex(0);
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_FALSE(w->grid().view(i)->legend()->isVisible());
+        EXPECT_EQ(w->grid().view(i)->grabFramebuffer(), level_pictures[size_t(i)]) << "view " << i;
+    }
+}
+
+TEST(MotionUi, BuildFromMotionWithShiftBIsOneUndoableEditRecordedInTheTree) {
+    TempDir dir("editor-motion-build");
+    std::string error;
+    const auto w = open_figure(dir, &error);
+    ASSERT_TRUE(w) << error;
+    QAction* action = w->build_motion_action();
+    ASSERT_TRUE(action);
+    EXPECT_FALSE(action->isEnabled()) << "no motion yet";
+    ASSERT_TRUE(load(*w, kWalking, "walker", 80));
+    // 'walk' is built already: its root is inner. A new tree's root holds every sample.
+    EXPECT_FALSE(action->isEnabled());
+    ASSERT_TRUE(w->add_tree("from motion"));
+    EXPECT_TRUE(action->isEnabled());
+    const std::vector<uint8_t> before = w->document().encode();
+    const int index = w->undo_stack().index();
+
+    QTest::keyClick(w.get(), Qt::Key_B, Qt::ShiftModifier);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !w->building(); }, 300000));
+    ASSERT_EQ(w->undo_stack().index(), index + 1) << w->last_message().toStdString();
+    EXPECT_TRUE(w->undo_stack().text(index).startsWith("Build from motion under node 1 (walking.json / walker"))
+        << w->undo_stack().text(index).toStdString();
+    const SamplingTree& tree = w->document().tree();
+    EXPECT_EQ(tree.name(), "from motion");
+    EXPECT_GT(tree.node_count(), 100u);
+    ASSERT_EQ(tree.motion_builds().size(), 1u);
+    const MotionBuildStep& step = tree.motion_builds().front();
+    EXPECT_EQ(step.node, root_id());
+    EXPECT_EQ(step.object, "walker");
+    EXPECT_EQ(step.steps, 80);
+    EXPECT_EQ(step.leaf_size, w->tree_panel().build_options().leaf_size);
+    // Relative to the folder of the file it is saved to (-o).
+    EXPECT_EQ(QString::fromStdString(step.scene),
+              QDir(QString::fromStdString(dir.path().string())).relativeFilePath(kWalking));
+    EXPECT_TRUE(w->tree_panel().findChild<QComboBox*>("tree_list")->currentText().contains("motion: walking.json / walker"));
+    EXPECT_FALSE(action->isEnabled()) << "the root is inner now";
+    const std::vector<uint8_t> after = w->document().encode();
+
+    QTest::keyClick(w.get(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(w->document().encode(), before);
+    EXPECT_TRUE(action->isEnabled());
+    QTest::keyClick(w.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    EXPECT_EQ(w->document().encode(), after);
+}
+
+TEST(MotionUi, CostPanelMeasuresTheEditedAutomaticAndMotionBuiltTreesOnTheMotion) {
+    TempDir dir("editor-motion-cost");
+    std::string error;
+    const auto w = open_figure(dir, &error);
+    ASSERT_TRUE(w) << error;
+    ASSERT_TRUE(load(*w, kWalking, "walker", 60));
+    editor::CostPanel& panel = w->cost_panel();
+    panel.set_pose_counts(10, 10);
+    QSignalSpy finished(&panel, &editor::CostPanel::finished);
+    ASSERT_TRUE(panel.run());
+    ASSERT_TRUE(finished.wait(300000));
+    ASSERT_TRUE(panel.report()) << w->last_message().toStdString();
+    const editor::CostReport& r = *panel.report();
+    ASSERT_EQ(r.motion.size(), 3u);
+    for (const MotionCost& c : r.motion) {
+        EXPECT_FALSE(c.cancelled);
+        EXPECT_GT(c.queries, 0u);
+        EXPECT_GT(c.median_ns, 0);
+        EXPECT_GT(c.mean_node_pairs, 0);
+    }
+    EXPECT_EQ(r.motion_label, "walking.json / walker");
+    auto* table = panel.findChild<QTableWidget*>("cost_motion_table");
+    ASSERT_TRUE(table);
+    for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row) ASSERT_TRUE(table->item(row, col)) << row << "," << col;
+    EXPECT_EQ(table->item(2, 2)->text(), QString::number(r.motion[2].mean_sphere_tests, 'f', 1));
+    // The tree box says which motion the tree was measured on.
+    EXPECT_TRUE(w->tree_panel().findChild<QComboBox*>("tree_list")->currentText().contains("measured: walking.json / walker"))
+        << w->tree_panel().findChild<QComboBox*>("tree_list")->currentText().toStdString();
+    w->findChild<QDockWidget*>("cost_dock")->raise();
+    QTest::qWait(200);
+    panel.grab().save(QString::fromStdString(editor_output_dir() + "/motion_cost_panel.png"));
+}
