@@ -83,11 +83,6 @@ int main(int argc, char** argv) {
                          qPrintable(options.object), qPrintable(options.scene), qPrintable(objects.names.join("', '")));
             return 2;
         }
-        if (options.object.isEmpty() && spt::editor::matching_object(objects, files.front(), files.front()) < 0) {
-            std::fprintf(stderr, "spt-editor: --scene %s: no object's model or mesh is %s; name one with --object ('%s')\n",
-                         qPrintable(options.scene), qPrintable(files.front()), qPrintable(objects.names.join("', '")));
-            return 2;
-        }
         if (parser.isSet("motion-steps")) options.motion_steps = parser.value("motion-steps").toInt(&ok);
         if (!ok || options.motion_steps < 0 || options.motion_steps > (1 << 24)) {
             std::fprintf(stderr, "spt-editor: --motion-steps %s: expected a whole number of steps from 0 to 16777216\n",

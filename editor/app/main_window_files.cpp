@@ -73,9 +73,15 @@ void MainWindow::loaded(const LoadResult& r) {
         start_motion_pending_ = false;
         QString object = start_.object;
         if (object.isEmpty()) {
+            // The object whose model is the document's, known now that the document is in.
             const SceneObjects objects = read_scene_objects(start_.scene);
             const int match = matching_object(objects, QString::fromStdString(doc_.document().mesh.name), source_path_);
-            if (match >= 0) object = objects.names[match];
+            if (match < 0)
+                return show_error(QString("%1: no object's model or mesh is %2 or %3; name one with --object or File > "
+                                          "Load motion ('%4')")
+                                      .arg(start_.scene, QFileInfo(source_path_).fileName(),
+                                           QString::fromStdString(doc_.document().mesh.name), objects.names.join("', '")));
+            object = objects.names[match];
         }
         load_motion(start_.scene, object, start_.motion_steps);
     }

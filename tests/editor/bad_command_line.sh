@@ -29,7 +29,6 @@ walking=$here/resources/scenes/walking.json
 expect_2 "no_such_scene.json: cannot open the scene" a.spt --scene no_such_scene.json --object walker
 expect_2 "--object nobody: $walking has no object of that name; it has 'floor', 'walker'" \
     figure_walk.spt --scene "$walking" --object nobody
-expect_2 "no object's model or mesh is torus.obj; name one with --object" torus.obj --scene "$walking"
 expect_2 "--object and --motion-steps need --scene" a.spt --object walker
 expect_2 "--scene needs FILE" --scene "$walking" --object walker
 expect_2 "--motion-steps -3: expected" figure_walk.spt --scene "$walking" --motion-steps -3

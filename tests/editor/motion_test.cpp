@@ -10,6 +10,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QScreen>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -206,4 +207,31 @@ TEST(MotionUi, CostPanelMeasuresTheEditedAutomaticAndMotionBuiltTreesOnTheMotion
     w->findChild<QDockWidget*>("cost_dock")->raise();
     QTest::qWait(200);
     panel.grab().save(QString::fromStdString(editor_output_dir() + "/motion_cost_panel.png"));
+}
+
+TEST(MotionUi, CancelMotionDropsTheRunAndKeepsTheMotionLoadedBefore) {
+    TempDir dir("editor-motion-cancel");
+    std::string error;
+    const auto w = open_figure(dir, &error);
+    ASSERT_TRUE(w) << error;
+    ASSERT_TRUE(load(*w, kWalking, "walker", 30));
+    const auto first = w->motion().recording();
+    QSignalSpy failed(&w->motion(), &editor::MotionSession::failed);
+    ASSERT_TRUE(w->load_motion(kWalking, "walker", 0));
+    EXPECT_TRUE(w->windowTitle().endsWith("(loading motion)")) << w->windowTitle().toStdString();
+    EXPECT_FALSE(w->load_motion(kWalking, "walker", 0)) << "a second load started while one was running";
+    auto* cancel = w->findChild<QPushButton*>("cancel_motion");
+    ASSERT_TRUE(cancel && cancel->isVisible());
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return failed.count() == 1; }, 300000));
+    EXPECT_TRUE(failed.front().at(1).toBool()) << "not reported as cancelled: " << failed.front().at(0).toString().toStdString();
+    EXPECT_EQ(w->motion().recording(), first);
+    EXPECT_EQ(w->motion().steps(), 30);
+    EXPECT_FALSE(w->windowTitle().contains("loading motion"));
+    EXPECT_FALSE(cancel->isVisible());
+    // Another document forgets the motion: its counts are per sample of this one.
+    w->open_file(kResources + "meshes/torus.obj");
+    ASSERT_TRUE(wait_ready(*w));
+    EXPECT_FALSE(w->motion().recording());
+    EXPECT_FALSE(w->build_motion_action()->isEnabled());
 }
