@@ -235,3 +235,20 @@ TEST(MotionUi, CancelMotionDropsTheRunAndKeepsTheMotionLoadedBefore) {
     EXPECT_FALSE(w->motion().recording());
     EXPECT_FALSE(w->build_motion_action()->isEnabled());
 }
+
+// One code path for the heat map: each view equals `spt render --color-by contacts` of the same
+// view and size (the legend is a label over the view, not in its framebuffer).
+TEST(MotionUi, EachHeatMapViewMatchesSptRenderColorByContacts) {
+    TempDir dir("editor-motion-vs-render");
+    std::string error;
+    const auto w = open_figure(dir, &error);
+    ASSERT_TRUE(w) << error;
+    ASSERT_TRUE(load(*w, kWalking, "walker", 0));
+    for (int i = 0; i < 4; ++i)
+        expect_view_matches_spt_render(*w->grid().view(i),
+                                       {kResources + "models/walking_figure.gltf", "--tree",
+                                        kResources + "scenes/figure_walk.spt", "--tree-name", "walk", "--color-by",
+                                        "contacts", "--scene", kWalking, "--object", "walker", "--overlay",
+                                        "spheres,node,grid,axes", "--node", "1"},
+                                       dir, "contacts_vs_render");
+}
