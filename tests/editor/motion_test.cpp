@@ -5,6 +5,8 @@
 #include "editor_support.hpp"
 #include "tree_panel.hpp"
 #include <QAction>
+#include <QApplication>
+#include <QWheelEvent>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
@@ -117,11 +119,6 @@ TEST(MotionUi, LoadingAMotionColoursEveryViewByContactsAndBadInputKeepsTheDocume
     // The soles (the samples most in contact) are under the figure in the top view and a few
     // pixels in the front view: the side and camera views show them large enough to count.
     EXPECT_GE(views_with_heat, 2);
-    // For docs/editor.md.
-    w->findChild<QDockWidget*>("history_dock")->raise();
-    for (QMessageBox* box : w->findChildren<QMessageBox*>()) box->close(); // the bad input's messages
-    QTest::qWait(200);
-    w->screen()->grabWindow(w->winId()).save(QString::fromStdString(editor_output_dir() + "/motion_heat_map.png"));
 
     // Back to levels: the legend goes, the heat colours too.
     w->tree_panel().findChild<QComboBox*>("color_by")->setCurrentIndex(0);
@@ -129,6 +126,26 @@ TEST(MotionUi, LoadingAMotionColoursEveryViewByContactsAndBadInputKeepsTheDocume
         EXPECT_FALSE(w->grid().view(i)->legend()->isVisible());
         EXPECT_EQ(w->grid().view(i)->grabFramebuffer(), level_pictures[size_t(i)]) << "view " << i;
     }
+
+    // For docs/editor.md: the heat map again, the front and side views zoomed 3x about the soles (the
+    // camera view zooms towards its target).
+    w->tree_panel().findChild<QComboBox*>("color_by")->setCurrentIndex(2);
+    Eigen::Vector3d soles = Eigen::Vector3d::Zero();
+    double weight = 0;
+    for (size_t k = 0; k < rec->contact_steps.size(); ++k)
+        if (rec->contact_steps[k] > 0) soles += rec->contact_steps[k] * w->document().samples().position(k), weight += rec->contact_steps[k];
+    soles /= weight;
+    for (editor::ViewWidget* v : {w->grid().view(1), w->grid().view(2)}) {
+        const ViewProjection vp = v->view_projection();
+        const Eigen::Vector4f clip = vp.projection * vp.view * Eigen::Vector4f(float(soles.x()), float(soles.y()), float(soles.z()), 1);
+        const QPointF at((clip.x() / clip.w() + 1) * 0.5 * v->width(), (1 - clip.y() / clip.w()) * 0.5 * v->height());
+        QWheelEvent wheel(at, v->mapToGlobal(at), QPoint(), QPoint(0, 120 * 8), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(v, &wheel);
+    }
+    w->findChild<QDockWidget*>("history_dock")->raise();
+    for (QMessageBox* box : w->findChildren<QMessageBox*>()) box->close(); // the bad input's messages
+    QTest::qWait(300);
+    w->screen()->grabWindow(w->winId()).save(QString::fromStdString(editor_output_dir() + "/motion_heat_map.png"));
 }
 
 TEST(MotionUi, BuildFromMotionWithShiftBIsOneUndoableEditRecordedInTheTree) {
