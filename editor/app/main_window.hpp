@@ -56,6 +56,8 @@ public:
     QUndoStack& undo_stack() { return stack_; }
     /// The views.
     ViewGrid& grid() { return *grid_; }
+    /// What the views draw.
+    const Scene& scene() const { return scene_; }
     /// The dock's tree panel.
     TreePanel& tree_panel() { return *panel_; }
     /// The dock's cost panel.

@@ -66,6 +66,8 @@ private:
     void rebuild_mesh();
     void rebuild_tree();
     void rebuild_spheres();
+    void rebuild_legend();
+    const std::vector<uint32_t>* contact_counts() const; // the motion's, if it is of this document
     void rebuild_current();
     void rebuild_selection();
     void rebuild_pose();

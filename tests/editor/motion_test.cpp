@@ -116,6 +116,21 @@ TEST(MotionUi, LoadingAMotionColoursEveryViewByContactsAndBadInputKeepsTheDocume
         EXPECT_NE(heat, level_pictures[size_t(i)]) << "view " << i << " still coloured by level";
         if (heat_pixels(heat) > before[size_t(i)] + 20) ++views_with_heat;
     }
+    // Every sphere of a sample in contact has a heat colour, the others grey; at a pose of the walk
+    // clip too (the spheres follow the surface, their colours their samples).
+    const auto coloured = [&] {
+        size_t n = 0;
+        for (const render::SphereInstance& sphere : w->scene().data().spheres)
+            if (sphere.color.r != render::heat_zero_color().r || sphere.color.g != render::heat_zero_color().g) ++n;
+        return n;
+    };
+    const size_t in_contact = size_t(std::count_if(rec->contact_steps.begin(), rec->contact_steps.end(), [](uint32_t c) { return c > 0; }));
+    EXPECT_EQ(coloured(), in_contact);
+    ASSERT_TRUE(w->document().animation());
+    w->document().set_pose(0, 0.5);
+    ASSERT_TRUE(w->document().posed());
+    EXPECT_EQ(coloured(), in_contact);
+    w->document().set_pose(-1, 0);
     // The soles (the samples most in contact) are under the figure in the top view and a few
     // pixels in the front view: the side and camera views show them large enough to count.
     EXPECT_GE(views_with_heat, 2);
