@@ -1,11 +1,13 @@
 // spt render INPUT [--tree FILE.spt] [--view V] [--size WxH] [--frame N | --frames A:B]
-//            [--clip NAME --time T] [--backend B] [--overlay LIST] -o OUT.png
+//            [--clip NAME --time T] [--backend B] [--overlay LIST]
+//            [--color-by level|node|contacts --scene SCENE.json --object NAME [--motion-steps N]] -o OUT.png
 #include "commands.hpp"
 #include "number_checks.hpp"
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
+#include "spt/motion.hpp"
 #include "spt/render/offscreen.hpp"
 #include "spt/render/renderer.hpp"
 #include "spt/render/scene_drawing.hpp"
@@ -29,6 +31,8 @@ using namespace spt::render;
 struct RenderArgs {
     std::string input, tree_path, tree_name, view = "camera", size = "512x512", frames, backend = "osmesa";
     std::string output, shading = "smooth", color_by = "level", clip;
+    std::string scene, object; // --color-by contacts: the motion recorded
+    int motion_steps = 0;
     double time = 0;
     bool time_given = false;
     std::vector<std::string> overlays;
@@ -207,7 +211,14 @@ int run_render(const RenderArgs& a) {
     const std::vector<int> frames = parse_frames(a);
     if (frames.size() > 1 && a.output.find("{frame}") == std::string::npos)
         throw Error(ErrorKind::Usage, "-o " + a.output + ": with --frames, the output name needs {frame}");
+    const bool contacts = a.color_by == "contacts";
+    if (contacts && (a.scene.empty() || a.object.empty()))
+        throw Error(ErrorKind::Usage, "--color-by contacts needs --scene SCENE.json and --object NAME: the motion whose "
+                                      "contacts colour the spheres");
+    if (!contacts && (!a.scene.empty() || !a.object.empty() || a.motion_steps > 0))
+        throw Error(ErrorKind::Usage, "--scene, --object and --motion-steps are for --color-by contacts");
     if (is_scene_file(a.input)) {
+        if (contacts) throw Error(ErrorKind::Usage, "--color-by contacts is for a mesh or .spt INPUT, not a scene");
         if (a.view == "quad") throw Error(ErrorKind::Usage, "--view quad is for a mesh or .spt INPUT, not a scene");
         return run_scene_render(a, width, height, frames);
     }
@@ -221,6 +232,8 @@ int run_render(const RenderArgs& a) {
     if (overlays.count("none") && overlays.size() > 1)
         throw Error(ErrorKind::Usage, "--overlay none cannot be combined with other overlays");
     const bool needs_tree = overlays.count("spheres") || overlays.count("bounds") || overlays.count("node");
+    if (contacts && !overlays.count("spheres") && !overlays.count("node"))
+        throw Error(ErrorKind::Usage, "--color-by contacts colours sampling spheres: add spheres (or node) to --overlay");
     if (spt_input && !a.tree_path.empty())
         throw Error(ErrorKind::Usage, a.input + " is already a .spt file; --tree takes the tree of a mesh INPUT");
 
@@ -306,13 +319,30 @@ int run_render(const RenderArgs& a) {
         item.style.opacity = float(opacity);
         frame.meshes.push_back(item);
     }
+    // --color-by contacts: the scene run with this tree in place of the object's model (core's
+    // record_motion), each sample coloured by the steps its sphere was in contact.
+    std::vector<uint32_t> contact_steps;
+    if (contacts && tree) {
+        MotionOptions mo;
+        mo.steps = a.motion_steps;
+        mo.threads = hardware_threads();
+        const MotionRecording rec = record_motion(load_scene(a.scene), a.object,
+                                                  MotionModel{std::make_shared<const SptDocument>(*doc), tree->name(), animated}, mo);
+        contact_steps = rec.contact_steps;
+        timer.step("record motion");
+        std::cout << "contacts: " << a.scene << " object " << a.object << ", " << rec.steps.size() << " steps, "
+                  << rec.steps_in_contact << " in contact" << (heat_scale(contact_steps).log ? " (log scale)" : "") << "\n";
+        for (const HeatLegendRow& row : heat_legend(heat_scale(contact_steps), contact_steps))
+            std::cout << "  " << row.from << (row.to != row.from ? "-" + std::to_string(row.to) : std::string())
+                      << " steps: " << row.samples << " samples\n";
+    }
     if (tree && (show_spheres || show_node)) {
         const CompactTree compact = posed ? posed->model().tree() : CompactTree(*tree, doc->samples);
-        const SphereSetHandle set = renderer->add_spheres(
-            sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level, origin));
+        const ColorBy by = contacts ? ColorBy::Contacts : a.color_by == "node" ? ColorBy::Node : ColorBy::Level;
+        const SphereSetHandle set = renderer->add_spheres(sampling_spheres(compact, *tree, by, origin, &contact_steps));
         if (show_node) {
             for (SphereItem item : highlighted_node(set, renderer->sphere_count(set),
-                                                    sphere_range(compact, *tree, a.node), show_spheres)) {
+                                                    sphere_range(compact, *tree, a.node), show_spheres, contacts)) {
                 item.pose = local_frame(origin);
                 frame.spheres.push_back(item);
             }
@@ -382,8 +412,14 @@ Action add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"smooth", "flat", "none"}));
     c->add_option("--mesh-opacity", a->mesh_opacity, "Mesh opacity 0-1 (default 1; 0.3 with spheres or node)")
         ->check(finite_in(0, 1, "from 0 to 1"));
-    c->add_option("--color-by", a->color_by, "Sampling-sphere colours: level (tree depth) or node")
-        ->check(CLI::IsMember({"level", "node"}));
+    c->add_option("--color-by", a->color_by,
+                  "Sampling-sphere colours: level (tree depth), node, or contacts (steps in contact during the motion "
+                  "of --object in --scene)")
+        ->check(CLI::IsMember({"level", "node", "contacts"}));
+    c->add_option("--scene", a->scene, "With --color-by contacts: the scene (SCENE.json) run with this tree");
+    c->add_option("--object", a->object, "With --color-by contacts: the scene's object whose model the tree replaces");
+    c->add_option("--motion-steps", a->motion_steps, "With --color-by contacts: steps to run (default: the scene's)")
+        ->check(CLI::Range(1, 1 << 24));
     c->add_option("--node", a->node, "Paper id of the node for the bounds and node overlays (default 1, the root)")
         ->check(CLI::Range(uint64_t(1), ~uint64_t(0)));
     c->add_option("--bounds-depth", a->bounds_depth, "Levels below --node whose bounding spheres are drawn (default 1)")

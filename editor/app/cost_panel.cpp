@@ -1,6 +1,7 @@
 // CostPanel: cost runs in the background, their figures as a table and a chart.
 #include "cost_panel.hpp"
 #include "spt/error.hpp"
+#include "spt/motion_tree.hpp"
 #include "spt/plot/chart.hpp"
 #include "spt/pose_file.hpp"
 #include "spt/spt_file.hpp"
@@ -14,6 +15,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QThread>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
@@ -23,11 +25,13 @@ namespace {
 
 // The worker: both trees' models over a copy of the document, the poses, the two runs.
 CostReport measure(SptDocument doc, int tree, QString other, CostOptions options,
-                   std::shared_ptr<std::atomic<bool>> cancel, QPointer<QProgressBar> bar) {
+                   std::shared_ptr<std::atomic<bool>> cancel, QPointer<QProgressBar> bar,
+                   std::shared_ptr<const MotionRecording> motion, QString motion_label) {
     CostReport r;
     r.against = other.isEmpty() ? QString("itself") : other;
     try {
         const std::string edited = doc.trees[size_t(tree)].name();
+        r.tree = QString::fromStdString(edited);
         std::string automatic = "automatic";
         while (doc.tree(automatic)) automatic += "'";
         doc.trees.push_back(build_tree(automatic, doc.samples));
@@ -39,15 +43,29 @@ CostReport measure(SptDocument doc, int tree, QString other, CostOptions options
             mb = std::make_unique<CollisionModel>(other_doc);
         }
         r.poses = cost_poses(ma, mb ? *mb : ma, options);
-        auto report = [bar](double base) {
-            return [bar, base](double share) {
-                QMetaObject::invokeMethod(bar, [bar, v = int(100 * (base + 0.5 * share))] {
+        // With a motion, a third share of the bar is its run.
+        const double part = motion ? 1.0 / 3.0 : 0.5;
+        auto report = [bar, part](double base) {
+            return [bar, base, part](double share) {
+                QMetaObject::invokeMethod(bar, [bar, v = int(100 * (base + part * share))] {
                     if (bar) bar->setValue(v);
                 });
             };
         };
         r.edited = measure_cost(me, mb ? *mb : me, r.poses, options, cancel.get(), report(0));
-        r.automatic = measure_cost(ma, mb ? *mb : ma, r.poses, options, cancel.get(), report(0.5));
+        r.automatic = measure_cost(ma, mb ? *mb : ma, r.poses, options, cancel.get(), report(part));
+        if (motion && !r.edited.cancelled && !r.automatic.cancelled) {
+            // The three trees on the recorded steps, at spt query's default query, taking turns.
+            MotionBuildOptions built;
+            built.build.threads = std::max(1, QThread::idealThreadCount());
+            built.build.cancel = cancel.get();
+            const SamplingTree for_motion = build_motion_tree("motion", doc.samples, *motion, built);
+            r.motion = measure_motion_cost(*motion, {doc.tree(edited), doc.tree(automatic), &for_motion}, QueryOptions{}, 3,
+                                           cancel.get(), report(2 * part));
+            r.motion_label = motion_label;
+        }
+    } catch (const Cancelled&) {
+        r.edited.cancelled = true;
     } catch (const std::exception& e) {
         r.error = QString::fromStdString(e.what());
     }
@@ -100,6 +118,22 @@ CostPanel::CostPanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setMinimumHeight(7 * (table_->fontMetrics().height() + 6) + table_->horizontalHeader()->sizeHint().height() + 4);
     layout->addWidget(table_);
+    // On the loaded motion: the edited, automatic and motion-built trees side by side.
+    motion_label_ = new QLabel("on a motion: none loaded (File > Load motion...)", this);
+    motion_label_->setWordWrap(true);
+    layout->addWidget(motion_label_);
+    motion_table_ = new QTableWidget(3, 3, this);
+    motion_table_->setObjectName("cost_motion_table");
+    motion_table_->setHorizontalHeaderLabels({"edited", "auto", "motion"});
+    motion_table_->horizontalHeaderItem(2)->setToolTip("build_motion_tree over the same samples, for the loaded motion");
+    motion_table_->setVerticalHeaderLabels({"median µs", "node pairs", "sphere tests"});
+    motion_table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    motion_table_->verticalHeader()->setDefaultSectionSize(motion_table_->fontMetrics().height() + 6);
+    motion_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    motion_table_->setFixedHeight(3 * (motion_table_->fontMetrics().height() + 6) +
+                                  motion_table_->horizontalHeader()->sizeHint().height() + 4);
+    motion_table_->horizontalHeader()->setMinimumSectionSize(40);
+    layout->addWidget(motion_table_);
     chart_ = new QLabel(this);
     chart_->setMinimumSize(260, 180);
     layout->addWidget(chart_);
@@ -122,7 +156,8 @@ CostPanel::CostPanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
         CostReport r = watcher_.result();
         if (!r.error.isEmpty()) {
             emit message(r.error);
-        } else if (r.edited.cancelled || r.automatic.cancelled) {
+        } else if (r.edited.cancelled || r.automatic.cancelled ||
+                   std::any_of(r.motion.begin(), r.motion.end(), [](const MotionCost& c) { return c.cancelled; })) {
             emit message("cost run cancelled");
         } else {
             report_ = std::make_unique<CostReport>(std::move(r));
@@ -153,7 +188,7 @@ bool CostPanel::run() {
     cancel_->setEnabled(true);
     emit message("cost run started");
     watcher_.setFuture(QtConcurrent::run(measure, doc_.document(), doc_.tree_index(), other_, o, cancel_flag_,
-                                         QPointer<QProgressBar>(progress_)));
+                                         QPointer<QProgressBar>(progress_), motion_, motion_name_));
     return true;
 }
 
@@ -164,6 +199,13 @@ void CostPanel::cancel() {
 void CostPanel::set_other(const QString& spt_path) {
     other_ = spt_path;
     against_->setText("against: " + (other_.isEmpty() ? QString("itself") : other_));
+}
+
+void CostPanel::set_motion(std::shared_ptr<const MotionRecording> motion, const QString& label) {
+    motion_ = std::move(motion);
+    motion_name_ = motion_ ? label : QString();
+    motion_label_->setText(motion_ ? QString("on the motion %1 (%2 steps), with the tree built for it").arg(label).arg(motion_->steps.size())
+                                   : QString("on a motion: none loaded (File > Load motion...)"));
 }
 
 void CostPanel::set_pose_counts(int random, int near) {
@@ -185,6 +227,16 @@ void CostPanel::show_report() {
             table_->setItem(row, col, item);
         }
         ++col;
+    }
+    motion_table_->clearContents();
+    for (int col = 0; col < int(r.motion.size()) && col < 3; ++col) {
+        const MotionCost& c = r.motion[size_t(col)];
+        const QStringList values = {micro(c.median_ns), count(c.mean_node_pairs), count(c.mean_sphere_tests)};
+        for (int row = 0; row < values.size(); ++row) {
+            auto* item = new QTableWidgetItem(values[row]);
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            motion_table_->setItem(row, col, item);
+        }
     }
     // Time against work: where each tree sits, at random and near-contact poses.
     plot::Chart chart;

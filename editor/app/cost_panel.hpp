@@ -4,6 +4,7 @@
 // cost run (spt/tree_cost.hpp) in the background on demand; the figures are those
 // `spt query` reports for the same poses, which the panel can save as pose files.
 #include "editor_document.hpp"
+#include "spt/motion.hpp"
 #include "spt/tree_cost.hpp"
 #include <QFutureWatcher>
 #include <QWidget>
@@ -25,6 +26,11 @@ struct CostReport {
     CostPoses poses;     ///< B's poses in A's frame, as measured
     QString against;     ///< "itself" or the other object's file
     QString error;       ///< non-empty: the run failed (file and problem)
+    QString tree;        ///< the edited tree's name
+    /// On the loaded motion's recorded steps (measure_motion_cost), when one was loaded: the
+    /// edited, automatic and motion-built (build_motion_tree) trees, in that order; else empty.
+    std::vector<MotionCost> motion;
+    QString motion_label; ///< the motion measured on ("walking.json / walker"), or empty
 };
 
 /// Runs and shows cost runs of an EditorDocument's edited tree.
@@ -42,6 +48,8 @@ public:
     bool running() const { return watcher_.isRunning(); }
     /// Measures against the first tree of this .spt file instead of the object itself; empty: itself.
     void set_other(const QString& spt_path);
+    /// The motion the next runs also measure on (null: none), called `label`.
+    void set_motion(std::shared_ptr<const MotionRecording> motion, const QString& label);
     /// Random and near-contact poses of the next run.
     void set_pose_counts(int random, int near);
     /// The last finished run (null before one).
@@ -65,6 +73,10 @@ private:
     QSpinBox *random_ = nullptr, *near_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QTableWidget* table_ = nullptr;
+    QTableWidget* motion_table_ = nullptr; // the motion's rows: the three trees side by side
+    QLabel* motion_label_ = nullptr;
+    std::shared_ptr<const MotionRecording> motion_;
+    QString motion_name_;
     QFutureWatcher<CostReport> watcher_;
     std::shared_ptr<std::atomic<bool>> cancel_flag_;
     std::unique_ptr<CostReport> report_;

@@ -16,6 +16,8 @@ public:
     void reset(std::shared_ptr<const AnimatedMesh> animated);
     /// The mesh with its clips, or null.
     const AnimatedMesh* animation() const { return animated_.get(); }
+    /// The same, shared (null when the mesh has no clips).
+    const std::shared_ptr<const AnimatedMesh>& shared_animation() const { return animated_; }
     /// Index of the clip shown (into AnimatedMesh::clips), -1 for the bind pose.
     int clip() const { return clip_; }
     /// Seconds into the clip (0 at the bind pose).

@@ -123,6 +123,19 @@ EditOutcome make_built_subtree(EditorDocument& doc, NodeId id, SamplingTree buil
             {}};
 }
 
+EditOutcome make_built_motion_subtree(EditorDocument& doc, NodeId id, SamplingTree built, MotionBuildStep step,
+                                      const QString& motion) {
+    if (!doc.has_tree()) return refused(QString("no document is open"));
+    const uint32_t leaf_size = step.leaf_size;
+    step.node = id;
+    built.add_motion_build(std::move(step));
+    return {std::make_unique<TreeStateCommand>(doc, std::move(built), id,
+                                               QString("Build from motion under node %1 (%2, leaf size %3)")
+                                                   .arg(node_text(id), motion)
+                                                   .arg(leaf_size)),
+            {}};
+}
+
 EditOutcome make_add_tree(EditorDocument& doc, const QString& name) {
     if (const QString bad = check_name(doc, name); !bad.isEmpty()) return refused(bad);
     return {std::make_unique<InsertTreeCommand>(doc, unsplit_tree(name.toStdString(), doc.samples()),

@@ -29,6 +29,11 @@ EditOutcome make_build_subtree(EditorDocument& doc, NodeId id, const BuildOption
 /// The same edit from a tree built elsewhere (in the background) from the edited tree:
 /// `built` is the edited tree with the subtree under `id` built with `options`.
 EditOutcome make_built_subtree(EditorDocument& doc, NodeId id, SamplingTree built, const BuildOptions& options);
+/// A build from motion under active node `id` made elsewhere (in the background, core's
+/// build_motion_subtree): `built` is the edited tree with it made; `step` (its scene, object,
+/// steps and leaf size) is recorded in the tree (SamplingTree::add_motion_build) for replays.
+EditOutcome make_built_motion_subtree(EditorDocument& doc, NodeId id, SamplingTree built, MotionBuildStep step,
+                                      const QString& motion);
 /// Adds a tree whose root holds every sample, named `name` (unique, non-empty).
 EditOutcome make_add_tree(EditorDocument& doc, const QString& name);
 /// Renames tree `index`.

@@ -60,6 +60,8 @@ public:
 
     /// The mesh with its clips, or null when it has none (no timeline).
     const AnimatedMesh* animation() const { return pose_.animation(); }
+    /// The same, shared (what a scene run with the document's tree animates it by).
+    std::shared_ptr<const AnimatedMesh> shared_animation() const { return pose_.shared_animation(); }
     /// The pose the views show: clip index (-1 for the bind pose) and seconds into it.
     const DocumentPose& pose() const { return pose_; }
     /// Shows clip `clip` (-1: the bind pose) at `time` seconds, held within the clip. A view

@@ -1,6 +1,8 @@
-// spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS]: the four-view sampling editor.
+// spt-editor [FILE] [-o OUT.spt] [--mesh MESH] [--autosave SECONDS] [--scene SCENE.json [--object NAME]
+// [--motion-steps N]]: the four-view sampling editor.
 #include "app_start.hpp"
 #include "main_window.hpp"
+#include "motion_session.hpp"
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTimer>
@@ -16,6 +18,9 @@ void describe(QCommandLineParser& parser) {
     parser.addOption({{"o", "output"}, "Where Save (Ctrl+S) writes, without a dialog", "OUT.spt"});
     parser.addOption({"mesh", "The .spt file's mesh, if it is not beside it", "MESH"});
     parser.addOption({"autosave", "Seconds between recovery files for this session (default: the preference, 30; 0: off)", "SECONDS"});
+    parser.addOption({"scene", "Load the motion of an object of this scene once FILE is open (File > Load motion)", "SCENE.json"});
+    parser.addOption({"object", "The scene's object whose model FILE is (default: the one whose model or mesh is FILE's)", "NAME"});
+    parser.addOption({"motion-steps", "Steps of the scene to record (default: the scene's own)", "N"});
 }
 
 } // namespace
@@ -56,6 +61,35 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (!files.isEmpty()) options.file = files.front();
+    // A motion: the scene must be readable and hold the object, before any window.
+    if ((parser.isSet("object") || parser.isSet("motion-steps")) && !parser.isSet("scene")) {
+        std::fprintf(stderr, "spt-editor: --object and --motion-steps need --scene SCENE.json\n");
+        return 2;
+    }
+    if (parser.isSet("scene")) {
+        if (files.isEmpty()) {
+            std::fprintf(stderr, "spt-editor: --scene needs FILE: the model whose tree runs in the scene\n");
+            return 2;
+        }
+        options.scene = parser.value("scene");
+        options.object = parser.value("object");
+        const spt::editor::SceneObjects objects = spt::editor::read_scene_objects(options.scene);
+        if (!objects.error.isEmpty()) {
+            std::fprintf(stderr, "spt-editor: --scene %s\n", qPrintable(objects.error));
+            return 2;
+        }
+        if (!options.object.isEmpty() && !objects.names.contains(options.object)) {
+            std::fprintf(stderr, "spt-editor: --object %s: %s has no object of that name; it has '%s'\n",
+                         qPrintable(options.object), qPrintable(options.scene), qPrintable(objects.names.join("', '")));
+            return 2;
+        }
+        if (parser.isSet("motion-steps")) options.motion_steps = parser.value("motion-steps").toInt(&ok);
+        if (!ok || options.motion_steps < 0 || options.motion_steps > (1 << 24)) {
+            std::fprintf(stderr, "spt-editor: --motion-steps %s: expected a whole number of steps from 0 to 16777216\n",
+                         qPrintable(parser.value("motion-steps")));
+            return 2;
+        }
+    }
     options.output = parser.value("output");
     options.mesh = parser.value("mesh");
 

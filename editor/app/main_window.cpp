@@ -59,6 +59,38 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     cancel_->setObjectName("cancel_open");
     add_busy(build_progress_, build_cancel_, "Cancel build");
     build_cancel_->setObjectName("cancel_build");
+    add_busy(motion_progress_, motion_cancel_, "Cancel motion");
+    motion_cancel_->setObjectName("cancel_motion");
+    motion_progress_->setObjectName("motion_progress");
+    connect(motion_cancel_, &QPushButton::clicked, &motion_, &MotionSession::cancel);
+    connect(&motion_, &MotionSession::progress, this, [this](int done, int total) {
+        motion_progress_->setRange(0, total);
+        motion_progress_->setValue(done);
+    });
+    connect(&motion_, &MotionSession::loaded, this, &MainWindow::motion_loaded);
+    connect(&motion_, &MotionSession::failed, this, [this](const QString& why, bool cancelled) {
+        update_title();
+        motion_progress_->hide();
+        motion_cancel_->hide();
+        // The document stays, and so does the motion loaded before.
+        if (cancelled) show_message(why);
+        else show_error(why);
+    });
+    connect(&motion_, &MotionSession::cleared, this, [this] {
+        scene_.set_motion(nullptr);
+        cost_->set_motion(nullptr, {});
+        update_motion_actions();
+    });
+    connect(cost_, &CostPanel::finished, this, [this] {
+        // The tree box says which motion each tree was last measured on.
+        const CostReport* r = cost_->report();
+        if (!r || r->motion_label.isEmpty() || r->tree.isEmpty()) return;
+        measured_[r->tree] = r->motion_label;
+        panel_->set_measured(measured_);
+    });
+    for (auto signal : {&EditorDocument::treeChanged, &EditorDocument::currentChanged, &EditorDocument::documentReset})
+        connect(&doc_, signal, this, &MainWindow::update_motion_actions);
+    start_motion_pending_ = !start_.scene.isEmpty();
     // Core's builder stops at its next node of 1,024 samples or more; a result that still
     // arrives is dropped.
     connect(build_cancel_, &QPushButton::clicked, this, [this] {
@@ -104,6 +136,7 @@ MainWindow::~MainWindow() {
     // Work still running stops at its next check instead of finishing for nobody.
     if (open_cancel_) *open_cancel_ = true;
     if (build_cancel_flag_) *build_cancel_flag_ = true;
+    motion_.cancel();
     watcher_.waitForFinished();
     build_watcher_.waitForFinished();
     recovery_.clear();
@@ -142,8 +175,7 @@ void MainWindow::build_docks() {
     connect(cost_, &CostPanel::message, this, &MainWindow::show_message);
     connect(panel_, &TreePanel::setRadiusRequested, this, &MainWindow::set_radius);
     connect(panel_, &TreePanel::buildSubtreeRequested, this, &MainWindow::build_subtree);
-    connect(panel_, &TreePanel::colorByNodeChosen, this,
-            [this](bool by_node) { scene_.set_color_by(by_node ? render::ColorBy::Node : render::ColorBy::Level); });
+    connect(panel_, &TreePanel::colorByChosen, this, [this](render::ColorBy by) { scene_.set_color_by(by); });
 }
 
 void MainWindow::build_menus() {
@@ -156,6 +188,7 @@ void MainWindow::build_menus() {
     });
     recent_menu_ = file->addMenu("Open &Recent");
     refresh_recent();
+    file->addAction("Load &motion...", this, &MainWindow::choose_motion)->setObjectName("load_motion");
     file->addAction("&Save", QKeySequence::Save, this, [this] { save(); });
     file->addAction("Save &As...", QKeySequence::SaveAs, this, [this] { save_as(); });
     file->addAction("Re&vert", this, [this] { revert(); });
@@ -178,6 +211,11 @@ void MainWindow::build_menus() {
     QAction* split_action = edit->addAction("&Split by selection", QKeySequence(Qt::Key_S), this, [this] { split(); });
     QAction* merge_action = edit->addAction("&Merge children", QKeySequence(Qt::Key_M), this, [this] { merge(); });
     QAction* build_action = edit->addAction("&Build subtree", QKeySequence(Qt::Key_B), this, [this] { build_subtree(); });
+    QAction* motion_action = build_motion_action_ =
+        edit->addAction("Build from m&otion", QKeySequence("Shift+B"), this, [this] { build_from_motion(); });
+    motion_action->setObjectName("build_from_motion");
+    motion_action->setToolTip("Build under the current node for the loaded motion (File > Load motion), Shift+B");
+    motion_action->setEnabled(false);
     edit->addSeparator();
     edit->addAction("Add tree", this, [this] { add_tree(); });
     edit->addAction("Rename tree...", this, [this] {
@@ -220,6 +258,7 @@ void MainWindow::build_menus() {
     tools->addAction(split_action);
     tools->addAction(merge_action);
     tools->addAction(build_action);
+    tools->addAction(motion_action);
     tools->addAction(visible);
 }
 
@@ -229,7 +268,9 @@ void MainWindow::update_title() {
     QString name = !save_path_.isEmpty() ? save_path_ : source_path_;
     name = name.isEmpty() ? QString("untitled") : QFileInfo(name).fileName();
     // Scripts wait for the title without "(opening)" to know the document is in.
-    setWindowTitle(QString("%1[*] - spt-editor%2").arg(name, loading() ? " (opening)" : ""));
+    // ... and without " (loading motion)" to know the motion of --scene is in.
+    setWindowTitle(QString("%1[*] - spt-editor%2")
+                       .arg(name, loading() ? " (opening)" : motion_.loading() ? " (loading motion)" : ""));
     setWindowModified(modified());
 }
 

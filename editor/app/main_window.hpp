@@ -4,12 +4,14 @@
 // saves, a modified mark in the title, recovery files.
 #include "document_loader.hpp"
 #include "editor_document.hpp"
+#include "motion_session.hpp"
 #include "preferences.hpp"
 #include "recovery.hpp"
 #include "spt/tree_builder.hpp"
 #include "scene.hpp"
 #include "view_grid.hpp"
 #include <QFutureWatcher>
+#include <QMap>
 #include <QMainWindow>
 #include <QTimer>
 #include <QUndoStack>
@@ -35,6 +37,9 @@ struct StartOptions {
     QString mesh;          ///< the .spt file's mesh, if not beside it
     int autosave_seconds = -1; ///< recovery file period, seconds; 0 turns it off; -1: the preference
     QString recovery_dir;  ///< empty: the application data location's "recovery"
+    QString scene;         ///< a scene whose motion is loaded once FILE is open (--scene)
+    QString object;        ///< its object (--object); empty: the one whose model is FILE's mesh
+    int motion_steps = 0;  ///< steps of that motion (--motion-steps); 0: the scene's own
 };
 
 /// The editor window.
@@ -51,6 +56,8 @@ public:
     QUndoStack& undo_stack() { return stack_; }
     /// The views.
     ViewGrid& grid() { return *grid_; }
+    /// What the views draw.
+    const Scene& scene() const { return scene_; }
     /// The dock's tree panel.
     TreePanel& tree_panel() { return *panel_; }
     /// The dock's cost panel.
@@ -105,6 +112,19 @@ public:
     bool building() const { return build_pending_; }
     /// Nodes with at least this many samples are built in the background (tests lower it).
     void set_background_build_samples(size_t samples) { background_build_samples_ = samples; }
+    /// The motion loaded for the document (File > Load motion), if any.
+    MotionSession& motion() { return motion_; }
+    /// Starts loading the motion of `object` in `scene_path` (`steps` steps; 0: the scene's) in the
+    /// background with the edited tree (what File > Load motion does once the object is chosen);
+    /// false if refused (no document, a load running).
+    bool load_motion(const QString& scene_path, const QString& object, int steps = 0);
+    /// Asks for a scene file, then for its object, and loads the motion (File > Load motion).
+    void choose_motion();
+    /// Builds under the current node for the loaded motion (Shift+B), in the background; applied
+    /// as one undo command recording the build in the tree. False if refused.
+    bool build_from_motion();
+    /// The action of Build from motion (enabled with a motion and an active current node).
+    QAction* build_motion_action() const { return build_motion_action_; }
     /// Adds a tree named `name` (a free name if empty).
     bool add_tree(const QString& name = {});
     /// Renames the edited tree.
@@ -164,6 +184,19 @@ private:
     QProgressBar* build_progress_ = nullptr;
     QPushButton* build_cancel_ = nullptr;
     void build_finished();
+    bool start_build(NodeId node, size_t samples, bool from_motion);
+    void update_motion_actions();
+    void motion_loaded();
+    QString motion_scene_for_file() const;
+    MotionSession motion_;
+    bool build_motion_ = false; // the build running is from motion
+    MotionBuildStep build_motion_step_;
+    QString build_motion_label_;
+    bool start_motion_pending_ = false; // --scene: load it once the document is in
+    QMap<QString, QString> measured_;   // tree name: the motion it was last measured on
+    class QAction* build_motion_action_ = nullptr;
+    QProgressBar* motion_progress_ = nullptr;
+    QPushButton* motion_cancel_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     bool cancelled_ = false;

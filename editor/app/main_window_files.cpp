@@ -1,5 +1,6 @@
 // MainWindow's files: background opening, atomic saves, recent files, recovery.
 #include "main_window.hpp"
+#include "tree_panel.hpp"
 #include "spt/error.hpp"
 #include <QFileDialog>
 #include <QFileInfo>
@@ -64,6 +65,26 @@ void MainWindow::loaded(const LoadResult& r) {
     update_title();
     if (!r.warning.isEmpty()) show_error(r.warning);
     else show_message(QString("%1: %2 samples, %3 tree(s)").arg(r.path).arg(r.doc->samples.size()).arg(r.doc->trees.size()));
+    // A motion's counts and poses belong to the document it was recorded with.
+    motion_.clear();
+    measured_.clear();
+    panel_->set_measured(measured_);
+    if (start_motion_pending_) { // --scene: the motion of the command line, once
+        start_motion_pending_ = false;
+        QString object = start_.object;
+        if (object.isEmpty()) {
+            // The object whose model is the document's, known now that the document is in.
+            const SceneObjects objects = read_scene_objects(start_.scene);
+            const int match = matching_object(objects, QString::fromStdString(doc_.document().mesh.name), source_path_);
+            if (match < 0)
+                return show_error(QString("%1: no object's model or mesh is %2 or %3; name one with --object or File > "
+                                          "Load motion ('%4')")
+                                      .arg(start_.scene, QFileInfo(source_path_).fileName(),
+                                           QString::fromStdString(doc_.document().mesh.name), objects.names.join("', '")));
+            object = objects.names[match];
+        }
+        load_motion(start_.scene, object, start_.motion_steps);
+    }
 }
 
 bool MainWindow::save_to(const QString& path) {

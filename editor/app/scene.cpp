@@ -31,6 +31,11 @@ void Scene::set_color_by(render::ColorBy by) {
     rebuild_tree();
 }
 
+void Scene::set_motion(std::shared_ptr<const MotionRecording> motion) {
+    motion_ = std::move(motion);
+    if (color_by_ == render::ColorBy::Contacts) rebuild_tree();
+}
+
 void Scene::rebuild_mesh() {
     data_.mesh = doc_.mesh();
     data_.origin = doc_.samples().origin;
@@ -59,8 +64,15 @@ void Scene::rebuild_tree() {
     }
     rebuild_pose(); // an edit binds the tree to the pose again: the model is new
     rebuild_spheres();
+    rebuild_legend();
     rebuild_current();
     rebuild_selection();
+}
+
+const std::vector<uint32_t>* Scene::contact_counts() const {
+    // The motion's counts are per sample of the document it was recorded with: another
+    // document's (a file opened since) colour nothing.
+    return motion_ && motion_->contact_steps.size() == doc_.samples().size() ? &motion_->contact_steps : nullptr;
 }
 
 void Scene::rebuild_spheres() {
@@ -68,9 +80,20 @@ void Scene::rebuild_spheres() {
     if (doc_.has_tree() && compact_) {
         // At a pose, the posed layout: the same tree and sphere order, the centres moved.
         const CompactTree& drawn = doc_.posed() ? doc_.posed()->model().tree() : *compact_;
-        data_.spheres = render::sampling_spheres(drawn, doc_.tree(), color_by_, data_.origin);
+        data_.spheres = render::sampling_spheres(drawn, doc_.tree(), color_by_, data_.origin, contact_counts());
     }
     ++data_.spheres_revision;
+}
+
+void Scene::rebuild_legend() {
+    // Once a tree, motion or colouring, not every pose the timeline plays.
+    data_.legend.clear();
+    data_.heat = {};
+    if (color_by_ != render::ColorBy::Contacts || !doc_.has_tree()) return;
+    const std::vector<uint32_t>* counts = contact_counts();
+    const std::vector<uint32_t> none = counts ? std::vector<uint32_t>{} : std::vector<uint32_t>(doc_.samples().size(), 0);
+    data_.heat = render::heat_scale(counts ? *counts : none);
+    data_.legend = render::heat_legend(data_.heat, counts ? *counts : none);
 }
 
 void Scene::rebuild_current() {
@@ -113,7 +136,8 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         // nothing is selected, so that a selection change leaves the frame as it was and the
         // renderer recolours its cached frame instead of drawing it again.
         for (render::SphereItem item :
-             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true)) {
+             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true,
+                                      color_by_ == render::ColorBy::Contacts)) {
             item.marked_color = selection_color();
             item.pose = render::local_frame(data_.origin);
             f.spheres.push_back(item);

@@ -6,8 +6,10 @@
 // part carries a revision so a view re-uploads only what changed.
 #include "editor_document.hpp"
 #include "spt/render/frame.hpp"
+#include "spt/motion.hpp"
 #include "spt/render/tree_overlay.hpp"
 #include <QObject>
+#include <memory>
 
 namespace spt::editor {
 
@@ -21,6 +23,9 @@ struct SceneData {
     render::SphereRange highlight;                  ///< the current node's spheres
     std::vector<uint32_t> selected;                 ///< indices into `spheres` of the selected samples
     std::vector<render::WireSphere> wires;          ///< bounding sphere of the current node
+    /// Coloured by contacts: the heat map's legend (a row for 0 steps first) and scale; empty otherwise.
+    std::vector<render::HeatLegendRow> legend;
+    render::HeatScale heat;                         ///< the heat map's scale (with `legend`)
     /// The mesh and `spheres` are relative to it (the document's local origin), drawn with
     /// render::local_frame(origin): far from the origin float keeps their detail only so.
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
@@ -50,6 +55,8 @@ public:
     void set_color_by(render::ColorBy by);
     /// How spheres are coloured.
     render::ColorBy color_by() const { return color_by_; }
+    /// The motion whose contact counts colour the spheres by contacts (null: none, all grey).
+    void set_motion(std::shared_ptr<const MotionRecording> motion);
 
 signals:
     /// Something to draw changed.
@@ -59,12 +66,15 @@ private:
     void rebuild_mesh();
     void rebuild_tree();
     void rebuild_spheres();
+    void rebuild_legend();
+    const std::vector<uint32_t>* contact_counts() const; // the motion's, if it is of this document
     void rebuild_current();
     void rebuild_selection();
     void rebuild_pose();
     EditorDocument& doc_;
     SceneData data_;
     render::ColorBy color_by_ = render::ColorBy::Level;
+    std::shared_ptr<const MotionRecording> motion_;
     std::vector<uint32_t> sphere_of_sample_; // index into data_.spheres of each sample; UINT32_MAX if none
     std::unique_ptr<CompactTree> compact_;
 };

@@ -14,6 +14,7 @@
 #include <QThread>
 #include <QTreeWidgetItemIterator>
 #include <QVBoxLayout>
+#include <filesystem>
 #include <map>
 
 namespace spt::editor {
@@ -34,7 +35,9 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     top->addWidget(trees_, 1);
     auto* color = color_ = new QComboBox;
     color->setObjectName("color_by");
-    color->addItems({"Colour by level", "Colour by node"});
+    color->addItems({"Colour by level", "Colour by node", "Colour by contacts"});
+    color->setItemData(2, "Each sample by how many steps of the loaded motion its sphere was in contact (File > Load motion)",
+                       Qt::ToolTipRole);
     top->addWidget(color);
     layout->addLayout(top);
 
@@ -74,7 +77,9 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
         if (!updating_ && i >= 0) doc_.set_tree_index(i);
     });
     connect(color, qOverload<int>(&QComboBox::currentIndexChanged), this,
-            [this](int i) { emit colorByNodeChosen(i == 1); });
+            [this](int i) {
+                emit colorByChosen(i == 2 ? render::ColorBy::Contacts : i == 1 ? render::ColorBy::Node : render::ColorBy::Level);
+            });
     connect(nodes_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
         if (!updating_ && item) doc_.set_current(item->data(0, kIdRole).toULongLong());
     });
@@ -87,9 +92,30 @@ TreePanel::TreePanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     rebuild();
 }
 
-void TreePanel::show_color_by_node(bool by_node) {
+void TreePanel::show_color_by_node(bool by_node) { show_color_by(by_node ? render::ColorBy::Node : render::ColorBy::Level); }
+
+void TreePanel::show_color_by(render::ColorBy by) {
     const QSignalBlocker block(color_);
-    color_->setCurrentIndex(by_node ? 1 : 0);
+    color_->setCurrentIndex(by == render::ColorBy::Contacts ? 2 : by == render::ColorBy::Node ? 1 : 0);
+}
+
+void TreePanel::set_measured(const QMap<QString, QString>& measured) {
+    measured_ = measured;
+    rebuild();
+}
+
+QString TreePanel::tree_label(const SamplingTree& tree) const {
+    const QString name = QString::fromStdString(tree.name());
+    QStringList motions;
+    for (const MotionBuildStep& b : tree.motion_builds()) {
+        const QString m = QString::fromStdString(std::filesystem::path(b.scene).filename().string()) + " / " +
+                          QString::fromStdString(b.object);
+        if (!motions.contains(m)) motions.push_back(m);
+    }
+    QStringList parts;
+    if (!motions.isEmpty()) parts.push_back("motion: " + motions.join(", "));
+    if (measured_.contains(name)) parts.push_back("measured: " + measured_.value(name));
+    return parts.isEmpty() ? name : QString("%1 (%2)").arg(name, parts.join("; "));
 }
 
 QSize TreePanel::sizeHint() const {
@@ -110,7 +136,7 @@ BuildOptions TreePanel::build_options() const {
 void TreePanel::rebuild() {
     updating_ = true;
     trees_->clear();
-    for (const SamplingTree& t : doc_.document().trees) trees_->addItem(QString::fromStdString(t.name()));
+    for (const SamplingTree& t : doc_.document().trees) trees_->addItem(tree_label(t));
     trees_->setCurrentIndex(doc_.tree_index());
     nodes_->clear();
     if (doc_.has_tree()) {

@@ -1,6 +1,7 @@
 // ViewWidget: the editor's scene in a RenderView, and rectangle selection.
 #include "view_widget.hpp"
 #include <QKeyEvent>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QRubberBand>
 
@@ -10,7 +11,43 @@ ViewWidget::ViewWidget(render::View view, EditorDocument& doc, Scene& scene, con
                        QWidget* parent)
     : RenderView(view, parent), doc_(doc), scene_(scene), options_(options) {
     connect(&scene_, &Scene::changed, this, qOverload<>(&QWidget::update));
+    connect(&scene_, &Scene::changed, this, &ViewWidget::update_legend);
     connect(&doc_, &EditorDocument::documentReset, this, &ViewWidget::frame_all);
+    // The heat map's legend: a Qt label composed over the picture (as the view's name is), so the
+    // framebuffer stays what `spt render` draws.
+    legend_ = new QLabel(this);
+    legend_->setObjectName("heat_legend");
+    legend_->setAttribute(Qt::WA_TransparentForMouseEvents);
+    legend_->setStyleSheet("QLabel { color: #202020; background: rgba(255, 255, 255, 190); padding: 2px 5px; }");
+    legend_->setTextFormat(Qt::RichText);
+    legend_->hide();
+}
+
+void ViewWidget::update_legend() {
+    const SceneData& d = scene_.data();
+    if (d.legend.empty()) {
+        legend_->hide();
+        return;
+    }
+    QString html = QString("<b>steps in contact</b>%1<table cellspacing=0 cellpadding=0>").arg(d.heat.log ? " (log)" : "");
+    for (const render::HeatLegendRow& row : d.legend) {
+        const QColor c = QColor::fromRgbF(row.color.r, row.color.g, row.color.b);
+        const QString range = row.to == row.from ? QString::number(row.from) : QString("%1-%2").arg(row.from).arg(row.to);
+        html += QString("<tr><td><span style='color:%1'>&#9632;</span>&nbsp;</td><td align=right>%2</td>"
+                        "<td>&nbsp;%3 samples</td></tr>")
+                    .arg(c.name(), range)
+                    .arg(row.samples);
+    }
+    if (d.heat.high == 0) html += "<tr><td colspan=3>no motion loaded or no contact</td></tr>";
+    legend_->setText(html + "</table>");
+    legend_->adjustSize();
+    legend_->move(width() - legend_->width() - 4, height() - legend_->height() - 4);
+    legend_->show();
+}
+
+void ViewWidget::resizeEvent(QResizeEvent* event) {
+    RenderView::resizeEvent(event);
+    if (legend_) legend_->move(width() - legend_->width() - 4, height() - legend_->height() - 4);
 }
 
 ViewProjection ViewWidget::view_projection() const {

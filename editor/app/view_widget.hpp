@@ -9,6 +9,8 @@
 
 class QRubberBand;
 
+class QLabel;
+
 namespace spt::editor {
 
 /// Settings the views share, owned by the main window.
@@ -38,8 +40,15 @@ protected:
     void left_move(const QPoint& p) override;
     void left_release(const QPoint& p) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+public:
+    /// The heat map's legend (shown while the spheres are coloured by contacts; tests read it).
+    QLabel* legend() const { return legend_; }
 
 private:
+    void update_legend();
+    QLabel* legend_ = nullptr;
     EditorDocument& doc_;
     Scene& scene_;
     const ViewOptions& options_;

@@ -64,11 +64,91 @@ Color node_color(NodeId id) {
 
 Color highlight_color() { return {1.0f, 0.78f, 0.05f, 1}; }
 
+Color heat_zero_color() { return {0.62f, 0.62f, 0.62f, 1}; }
+
+HeatScale heat_scale(const std::vector<uint32_t>& counts) {
+    HeatScale s;
+    for (uint32_t c : counts) {
+        if (c == 0) continue;
+        s.low = s.low == 0 ? c : std::min(s.low, c);
+        s.high = std::max(s.high, c);
+    }
+    s.log = s.low > 0 && double(s.high) / double(s.low) > kHeatLogRatio;
+    return s;
+}
+
+namespace {
+
+// Where `count` (low <= count <= high) sits on the scale, 0 to 1.
+double heat_position(const HeatScale& s, double count) {
+    if (s.high <= s.low) return 1;
+    if (s.log) return std::log(count / double(s.low)) / std::log(double(s.high) / double(s.low));
+    return (count - double(s.low)) / double(s.high - s.low);
+}
+
+// The count at position t of the scale (inverse of heat_position).
+double heat_count_at(const HeatScale& s, double t) {
+    if (s.log) return double(s.low) * std::pow(double(s.high) / double(s.low), t);
+    return double(s.low) + t * double(s.high - s.low);
+}
+
+// Viridis (matplotlib's perceptually uniform map) at t in [0, 1], from nine of its stops.
+Color viridis(double t) {
+    static const float stops[9][3] = {{0.267f, 0.005f, 0.329f}, {0.279f, 0.175f, 0.483f}, {0.230f, 0.322f, 0.546f},
+                                      {0.173f, 0.449f, 0.558f}, {0.128f, 0.567f, 0.551f}, {0.153f, 0.683f, 0.498f},
+                                      {0.361f, 0.786f, 0.388f}, {0.668f, 0.862f, 0.196f}, {0.993f, 0.906f, 0.144f}};
+    const double x = std::clamp(t, 0.0, 1.0) * 8.0;
+    const int i = std::min(int(x), 7);
+    const float f = float(x - i);
+    return {stops[i][0] + f * (stops[i + 1][0] - stops[i][0]), stops[i][1] + f * (stops[i + 1][1] - stops[i][1]),
+            stops[i][2] + f * (stops[i + 1][2] - stops[i][2]), 1};
+}
+
+} // namespace
+
+Color heat_color(const HeatScale& scale, uint32_t count) {
+    if (count == 0 || scale.high == 0) return heat_zero_color();
+    const double c = std::clamp(double(count), double(scale.low), double(scale.high));
+    return viridis(heat_position(scale, c));
+}
+
+std::vector<HeatLegendRow> heat_legend(const HeatScale& scale, const std::vector<uint32_t>& counts, int rows) {
+    std::vector<HeatLegendRow> out;
+    HeatLegendRow zero;
+    zero.color = heat_zero_color();
+    out.push_back(zero);
+    if (scale.high > 0) {
+        // Row bounds evenly spaced on the scale, rounded to whole counts, each row at least one count wide.
+        uint32_t from = scale.low;
+        const int n = std::max(rows, 1);
+        for (int r = 1; r <= n && from <= scale.high; ++r) {
+            const uint32_t to = r == n ? scale.high
+                                       : std::clamp(uint32_t(std::floor(heat_count_at(scale, double(r) / n))), from,
+                                                    scale.high);
+            HeatLegendRow row;
+            row.from = from, row.to = to;
+            row.color = heat_color(scale, uint32_t(std::lround(heat_count_at(
+                                              scale, 0.5 * (heat_position(scale, from) + heat_position(scale, to))))));
+            out.push_back(row);
+            from = to + 1;
+        }
+    }
+    for (uint32_t c : counts)
+        for (HeatLegendRow& row : out)
+            if (c >= row.from && c <= row.to) {
+                ++row.samples;
+                break;
+            }
+    return out;
+}
+
 std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const SamplingTree& tree, ColorBy by,
-                                             const Eigen::Vector3d& frame_origin) {
+                                             const Eigen::Vector3d& frame_origin, const std::vector<uint32_t>* counts) {
     const auto nodes = tree.nodes();
     std::vector<SphereInstance> out(compact.sphere_count());
     const Eigen::Vector3d origin = compact.origin() - frame_origin;
+    const HeatScale scale = by == ColorBy::Contacts && counts ? heat_scale(*counts) : HeatScale{};
+    const uint32_t* sample = compact.sample_index();
     for (const CompactNode& c : compact.nodes()) {
         if (!c.is_active()) continue;
         const NodeId id = c.tree_node < nodes.size() ? nodes[c.tree_node]->id : root_id();
@@ -76,7 +156,12 @@ std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const S
         for (uint32_t k = c.first; k < c.first + c.count; ++k) {
             out[k].sphere.center = (origin + compact.sphere_center(c, k).cast<double>()).cast<float>();
             out[k].sphere.radius = c.ss_radius;
-            out[k].color = color;
+            if (by != ColorBy::Contacts) {
+                out[k].color = color;
+            } else {
+                const uint32_t s = sample[k];
+                out[k].color = heat_color(scale, counts && s < counts->size() ? (*counts)[s] : 0);
+            }
         }
     }
     return out;
@@ -115,7 +200,8 @@ std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const Sampli
     return {w};
 }
 
-std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all) {
+std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all,
+                                         bool own_colors) {
     // The spheres before and after the node's range, dimmed, then the range highlighted: each
     // sphere drawn once (llvmpipe's cost is per sphere), the range last as a second item over
     // all of them would be.
@@ -132,7 +218,8 @@ std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size,
     if (show_all && end < set_size) dimmed(end, set_size);
     if (end > first) {
         SphereItem item;
-        item.spheres = set, item.first = first, item.count = end - first, item.color = highlight_color();
+        item.spheres = set, item.first = first, item.count = end - first;
+        if (!own_colors) item.color = highlight_color();
         items.push_back(item);
     }
     return items;

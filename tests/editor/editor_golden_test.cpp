@@ -65,24 +65,9 @@ TEST(EditorGolden, EachViewMatchesSptRenderOfTheSameViewAndSize) {
     ASSERT_TRUE(w) << error;
     const QString saved = QString::fromStdString(dir.file("split.spt"));
     ASSERT_TRUE(w->save_to(saved));
-    for (int i = 0; i < 4; ++i) {
-        editor::ViewWidget* v = w->grid().view(i);
-        const render::Image view = to_image(v->grabFramebuffer());
-        const QString png = QString::fromStdString(dir.file(std::string("render_") + render::view_name(v->view()) + ".png"));
-        QProcess spt;
-        spt.start(QString(SPT_BINARY_DIR) + "/cli/spt",
-                  {"render", QString::fromStdString(dir.file("torus.obj")), "--tree", saved, "--tree-name", "authored",
-                   "--view", render::view_name(v->view()), "--size",
-                   QString("%1x%2").arg(view.width).arg(view.height), "--overlay", "spheres,node,grid,axes", "--node",
-                   "3", "-o", png});
-        ASSERT_TRUE(spt.waitForFinished(120000));
-        ASSERT_EQ(spt.exitCode(), 0) << spt.readAllStandardError().toStdString();
-        // A window shows colour only: the off-screen image keeps the alpha blending left in its
-        // framebuffer, the widget's grab is opaque. Compare what is seen.
-        render::Image expected = render::read_png(png.toStdString());
-        for (size_t k = 3; k < expected.rgba.size(); k += 4) expected.rgba[k] = 255;
-        const render::CompareResult r = render::compare_images(view, expected);
-        EXPECT_TRUE(r.passed) << render::view_name(v->view()) << ": " << r.summary();
-        if (!r.passed) render::write_png(r.diff, editor_output_dir() + "/vs_render_" + render::view_name(v->view()) + ".diff.png");
-    }
+    for (int i = 0; i < 4; ++i)
+        expect_view_matches_spt_render(*w->grid().view(i),
+                                       {QString::fromStdString(dir.file("torus.obj")), "--tree", saved, "--tree-name",
+                                        "authored", "--overlay", "spheres,node,grid,axes", "--node", "3"},
+                                       dir, "vs_render");
 }

@@ -1,6 +1,9 @@
 // Editor test helpers and the one QApplication of the binary.
 #include "editor_support.hpp"
 #include "spt/convert.hpp"
+#include "qt_image.hpp"
+#include "spt/render/image.hpp"
+#include <QProcess>
 #include <QApplication>
 #include <QStandardPaths>
 #include <QTest>
@@ -95,6 +98,27 @@ std::unique_ptr<editor::MainWindow> open_editor(const TempDir& dir, const QStrin
         return nullptr;
     }
     return w;
+}
+
+void expect_view_matches_spt_render(editor::ViewWidget& v, const QStringList& input_args, const TempDir& dir,
+                                    const std::string& name) {
+    const render::Image view = to_image(v.grabFramebuffer());
+    const std::string view_name = render::view_name(v.view());
+    const QString png = QString::fromStdString(dir.file(name + "_" + view_name + ".png"));
+    QProcess spt;
+    spt.start(QString(SPT_BINARY_DIR) + "/cli/spt",
+              QStringList{"render"} + input_args +
+                  QStringList{"--view", QString::fromStdString(view_name), "--size",
+                              QString("%1x%2").arg(view.width).arg(view.height), "-o", png});
+    ASSERT_TRUE(spt.waitForFinished(120000));
+    ASSERT_EQ(spt.exitCode(), 0) << spt.readAllStandardError().toStdString();
+    // A window shows colour only: the off-screen image keeps the alpha blending left in its
+    // framebuffer, the widget's grab is opaque. Compare what is seen.
+    render::Image expected = render::read_png(png.toStdString());
+    for (size_t k = 3; k < expected.rgba.size(); k += 4) expected.rgba[k] = 255;
+    const render::CompareResult r = render::compare_images(view, expected);
+    EXPECT_TRUE(r.passed) << view_name << ": " << r.summary();
+    if (!r.passed) render::write_png(r.diff, editor_output_dir() + "/" + name + "_" + view_name + ".diff.png");
 }
 
 std::string editor_output_dir() {

@@ -30,6 +30,12 @@ bool wait_drawn(editor::MainWindow& window);
 /// (with the reason in `error`) if it did not get there.
 std::unique_ptr<editor::MainWindow> open_editor(const TempDir& dir, const QString& file, std::string* error);
 
+/// Expects view `view`'s framebuffer to equal `spt render INPUT_ARGS --view V --size WxH -o PNG`
+/// of the same view and size (the golden rules), the PNG written into `dir`; a difference is
+/// written to editor_output_dir()/NAME_V.diff.png.
+void expect_view_matches_spt_render(editor::ViewWidget& view, const QStringList& input_args, const TempDir& dir,
+                                    const std::string& name);
+
 /// Where the tests write pictures (docs/editor.md uses them): BUILD/test-output/editor.
 std::string editor_output_dir();
 

@@ -107,6 +107,54 @@ TEST_F(TreeFixture, bounding_sphere_of_the_layout_is_the_trees_at_the_bind_pose_
     EXPECT_TRUE(bounding_sphere(compact, tree, NodeId(1) << 40, red).empty());
 }
 
+bool same_color(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a; }
+
+TEST_F(TreeFixture, contacts_colour_each_sphere_by_its_samples_count) {
+    std::vector<uint32_t> counts(doc.samples.size(), 0);
+    for (size_t i = 0; i < counts.size(); i += 3) counts[i] = uint32_t(1 + i % 7);
+    const HeatScale scale = heat_scale(counts);
+    EXPECT_EQ(scale.low, 1u);
+    EXPECT_EQ(scale.high, 7u);
+    EXPECT_FALSE(scale.log);
+    const auto spheres = sampling_spheres(compact, tree, ColorBy::Contacts, Eigen::Vector3d::Zero(), &counts);
+    ASSERT_EQ(spheres.size(), compact.sphere_count());
+    const uint32_t* sample = compact.sample_index();
+    for (size_t k = 0; k < spheres.size(); ++k)
+        EXPECT_TRUE(same_color(spheres[k].color, heat_color(scale, counts[sample[k]]))) << k;
+    EXPECT_TRUE(same_color(heat_color(scale, 0), heat_zero_color()));
+    // The ramp runs from dark to light: the largest count is brighter than the smallest.
+    const Color lo = heat_color(scale, 1), hi = heat_color(scale, 7);
+    EXPECT_GT(hi.r + hi.g + hi.b, lo.r + lo.g + lo.b + 1.0f);
+    // No counts: every sphere grey.
+    for (const SphereInstance& s : sampling_spheres(compact, tree, ColorBy::Contacts))
+        EXPECT_TRUE(same_color(s.color, heat_zero_color()));
+}
+
+TEST(overlay, heat_scale_is_logarithmic_beyond_a_ratio_of_twenty_and_its_legend_counts_every_sample) {
+    std::vector<uint32_t> counts = {0, 0, 0, 1, 1, 2, 5, 10, 40, 100, 100};
+    const HeatScale scale = heat_scale(counts);
+    EXPECT_TRUE(scale.log);
+    // On a log scale 10 sits half way between 1 and 100; on a linear one it would be near the bottom.
+    const Color mid = heat_color(scale, 10), lin_mid = heat_color(HeatScale{1, 100, false}, 50);
+    EXPECT_NEAR(mid.g, lin_mid.g, 0.02f);
+    EXPECT_FALSE(heat_scale({0, 3, 60}).log);
+    EXPECT_TRUE(heat_scale({0, 3, 61}).log);
+    const auto legend = heat_legend(scale, counts);
+    ASSERT_GE(legend.size(), 3u);
+    EXPECT_EQ(legend.front().from, 0u);
+    EXPECT_EQ(legend.front().to, 0u);
+    EXPECT_EQ(legend.front().samples, 3u);
+    size_t total = 0;
+    for (size_t i = 0; i < legend.size(); ++i) {
+        total += legend[i].samples;
+        if (i > 0) EXPECT_EQ(legend[i].from, legend[i - 1].to + 1);
+    }
+    EXPECT_EQ(total, counts.size());
+    EXPECT_EQ(legend.back().to, 100u);
+    // All zero: one row.
+    EXPECT_EQ(heat_legend(heat_scale({0, 0}), {0, 0}).size(), 1u);
+}
+
 TEST(overlay, node_colours_are_stable_and_distinct) {
     EXPECT_EQ(node_color(5).r, node_color(5).r);
     int same = 0;

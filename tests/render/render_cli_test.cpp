@@ -274,4 +274,42 @@ TEST_F(RenderCli, clip_options_refuse_what_they_cannot_pose) {
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
+// --color-by contacts: the scene's motion recorded with this tree colours its spheres; the legend
+// goes to stdout. Wrong use is a usage error (1), a scene or object that is not there bad input (2).
+TEST_F(RenderCli, color_by_contacts_runs_the_motion_and_refuses_wrong_use) {
+    const std::string torus = std::string(SPT_SOURCE_DIR) + "/resources/meshes/torus.obj";
+    const std::string fig8 = std::string(SPT_SOURCE_DIR) + "/resources/scenes/fig8.json";
+    const std::string base = "render '" + torus + "' --overlay spheres --size 64x64 --color-by contacts ";
+    const CliRun ok = spt(base + "--scene '" + fig8 + "' --object torus --motion-steps 40 -o heat.png");
+    ASSERT_EQ(ok.code, 0) << ok.err;
+    EXPECT_NE(ok.out.find("object torus, 40 steps"), std::string::npos) << ok.out;
+    EXPECT_NE(ok.out.find("0 steps: "), std::string::npos) << ok.out;
+    EXPECT_TRUE(fs::exists(dir / "heat.png"));
+
+    const CliRun no_scene = spt(base + "-o x.png");
+    EXPECT_EQ(no_scene.code, 1);
+    EXPECT_NE(no_scene.err.find("--color-by contacts needs --scene"), std::string::npos) << no_scene.err;
+    const CliRun no_object = spt(base + "--scene '" + fig8 + "' -o x.png");
+    EXPECT_EQ(no_object.code, 1);
+    const CliRun scene_alone = spt("render '" + torus + "' --scene '" + fig8 + "' --object torus -o x.png");
+    EXPECT_EQ(scene_alone.code, 1);
+    EXPECT_NE(scene_alone.err.find("are for --color-by contacts"), std::string::npos) << scene_alone.err;
+    const CliRun unknown = spt("render '" + torus + "' --color-by heat -o x.png");
+    EXPECT_EQ(unknown.code, 1);
+    const CliRun no_spheres = spt("render '" + torus + "' --color-by contacts --scene '" + fig8 + "' --object torus -o x.png");
+    EXPECT_EQ(no_spheres.code, 1);
+
+    const CliRun missing = spt(base + "--scene no_such_scene.json --object torus -o x.png");
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_NE(missing.err.find("no_such_scene.json"), std::string::npos) << missing.err;
+    const CliRun no_such = spt(base + "--scene '" + fig8 + "' --object cube -o x.png");
+    EXPECT_EQ(no_such.code, 2);
+    EXPECT_NE(no_such.err.find("no object named 'cube'"), std::string::npos) << no_such.err;
+    // The object 'part' is another mesh than the torus this tree was made from.
+    const CliRun other = spt(base + "--scene '" + fig8 + "' --object part -o x.png");
+    EXPECT_EQ(other.code, 2);
+    EXPECT_NE(other.err.find("fig8.json"), std::string::npos) << other.err;
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
 } // namespace

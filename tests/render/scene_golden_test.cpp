@@ -48,6 +48,21 @@ spt::render::Image render_clip(double time, const std::string& args) {
     return image;
 }
 
+// The walking figure's sampling spheres coloured by the steps each was in contact during walking.json
+// (`spt render MODEL --color-by contacts --scene SCENE --object NAME`): the soles bright, the rest grey.
+TEST(golden, contacts_walking_heat_map) {
+    const std::string out = std::string(SPT_BINARY_DIR) + "/test-tmp/contacts-golden-" + std::to_string(::getpid()) + ".png";
+    std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+    const std::string res = std::string(SPT_SOURCE_DIR) + "/resources/";
+    const auto r = spt::test::run_command(
+        spt::test::spt_binary() + " render " + q(res + "models/walking_figure.gltf") + " --tree " +
+        q(res + "scenes/figure_walk.spt") + " --tree-name walk --color-by contacts --scene " +
+        q(res + "scenes/walking.json") + " --object walker --view side --overlay spheres,grid --size 256x256 -o " + q(out));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_GOLDEN(spt::render::read_png(out), "contacts_walking");
+    std::filesystem::remove(out);
+}
+
 TEST(golden, skinned_figure_walk_spheres) {
     EXPECT_GOLDEN(render_clip(0.125, "--view side --overlay spheres,grid"), "skinned_walk_0125");
 }

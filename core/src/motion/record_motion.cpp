@@ -87,6 +87,17 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
     if (!model.document) throw Error(ErrorKind::BadInput, "record_motion: no document given");
     if (options.steps < 0 || options.threads < 1 || options.reach_steps < 0 || !(options.reach_fraction >= 0))
         throw Error(ErrorKind::Usage, "record_motion: steps, reach_steps and reach_fraction must be >= 0, threads >= 1");
+    // A document of another mesh would run, and record another object's motion: refused. The
+    // scene's own model of the object carries the diagonal of the mesh it was made from.
+    if (const CollisionModel* own = scene.objects[index].model.get()) {
+        const double mine = model.document->mesh.diagonal, theirs = own->diagonal();
+        if (mine > 0 && theirs > 0 && std::abs(mine - theirs) > 1e-6 * std::max(mine, theirs)) {
+            std::ostringstream why;
+            why << scene.file << ": object '" << object << "': the document was not made from its model "
+                << scene.objects[index].model_path << " (mesh diagonal " << mine << ", the model's " << theirs << ")";
+            throw Error(ErrorKind::BadInput, why.str());
+        }
+    }
     auto run = std::make_shared<Scene>(scene);
     SceneObject& o = run->objects[index];
     // A rigid object's triangles only where the scene tests triangles: their tree is most of a large
