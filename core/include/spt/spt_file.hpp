@@ -31,9 +31,10 @@ struct SptDocument {
 
 /// Newest format version this build reads and writes. encode_spt writes the oldest version
 /// that holds the document (1 when the local origin is zero and no tree has a recipe, 2 with
-/// a local origin, 3 with authoring recipes, 4 when a recipe step was made at a clip's pose),
+/// a local origin, 3 with authoring recipes, 4 when a recipe step was made at a clip's pose, 5 when a
+/// recipe has a lasso, brush, linked, invert, grow or shrink stroke),
 /// so an old file saved again without edits stays byte-identical.
-constexpr uint32_t kSptVersion = 4;
+constexpr uint32_t kSptVersion = 5;
 
 /// The format version encode_spt writes for `doc`.
 uint32_t spt_version_for(const SptDocument& doc);

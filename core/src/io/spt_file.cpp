@@ -4,6 +4,7 @@
 #include "io/recipe_codec.hpp"
 #include "base/parallel.hpp"
 #include "sampling/encoding.hpp"
+#include <algorithm>
 #include <zlib.h>
 #include <array>
 #include <cerrno>
@@ -57,10 +58,7 @@ std::string SptDocument::validate() const {
 
 uint32_t spt_version_for(const SptDocument& doc) {
     uint32_t version = doc.samples.origin.isZero(0) ? 1 : 2;
-    for (const auto& t : doc.trees) {
-        if (detail::has_poses(t.recipe())) return 4;
-        if (!t.recipe().empty()) version = 3;
-    }
+    for (const auto& t : doc.trees) version = std::max(version, detail::recipe_version(t.recipe()));
     return version;
 }
 
@@ -239,10 +237,7 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         doc.trees.push_back(std::move(tree));
     }
     // Each document has one encoding: the oldest version that holds it.
-    if (version == 3 && spt_version_for(doc) != 3)
-        r.fail(8, "a version 3 file without recipe steps (written as version 1 or 2)");
-    if (version == 4 && spt_version_for(doc) != 4)
-        r.fail(8, "a version 4 file without a recipe step made at a clip's pose (written as version 3 or older)");
+    if (version >= 3 && spt_version_for(doc) != version) r.fail(8, detail::recipe_version_mismatch(version));
     if (r.remaining() != 0) r.fail(r.offset(), std::to_string(r.remaining()) + " bytes of unexpected trailing data");
     return doc;
 }
