@@ -16,6 +16,10 @@ Scene::Scene(EditorDocument& doc, QObject* parent) : QObject(parent), doc_(doc) 
         rebuild_selection();
     });
     connect(&doc_, &EditorDocument::selectionChanged, this, &Scene::rebuild_selection);
+    connect(&doc_, &EditorDocument::visibilityChanged, this, [this] {
+        rebuild_shown();
+        emit changed();
+    });
     // Another pose moves the mesh and the spheres; the layout, the highlight and the selection stay.
     connect(&doc_, &EditorDocument::poseChanged, this, [this] {
         rebuild_pose();
@@ -59,6 +63,7 @@ void Scene::rebuild_tree() {
     }
     rebuild_pose(); // an edit binds the tree to the pose again: the model is new
     rebuild_spheres();
+    rebuild_shown();
     rebuild_current();
     rebuild_selection();
 }
@@ -71,6 +76,14 @@ void Scene::rebuild_spheres() {
         data_.spheres = render::sampling_spheres(drawn, doc_.tree(), color_by_, data_.origin);
     }
     ++data_.spheres_revision;
+}
+
+void Scene::rebuild_shown() {
+    // Hidden nodes (a view state): what is left of the spheres, as ranges of the one uploaded set.
+    data_.hiding = doc_.has_tree() && compact_ && !doc_.hidden().empty();
+    data_.shown = data_.hiding ? render::shown_ranges(*compact_, doc_.tree(), doc_.hidden(), uint32_t(data_.spheres.size()))
+                               : std::vector<render::SphereRange>{};
+    ++data_.revision;
 }
 
 void Scene::rebuild_current() {
@@ -118,6 +131,7 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
             item.pose = render::local_frame(data_.origin);
             f.spheres.push_back(item);
         }
+        if (data_.hiding) f.spheres = render::clip_to_ranges(f.spheres, data_.shown);
     }
     f.wire_spheres = data_.wires;
     return f;

@@ -21,6 +21,8 @@ struct SceneData {
     render::SphereRange highlight;                  ///< the current node's spheres
     std::vector<uint32_t> selected;                 ///< indices into `spheres` of the selected samples
     std::vector<render::WireSphere> wires;          ///< bounding sphere of the current node
+    bool hiding = false;                            ///< some node is hidden: only `shown` is drawn
+    std::vector<render::SphereRange> shown;         ///< with `hiding`, the ranges of `spheres` drawn
     /// The mesh and `spheres` are relative to it (the document's local origin), drawn with
     /// render::local_frame(origin): far from the origin float keeps their detail only so.
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
@@ -62,6 +64,7 @@ private:
     void rebuild_current();
     void rebuild_selection();
     void rebuild_pose();
+    void rebuild_shown();
     EditorDocument& doc_;
     SceneData data_;
     render::ColorBy color_by_ = render::ColorBy::Level;

@@ -103,6 +103,39 @@ SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, N
     return {s.first, s.end_sphere - s.first};
 }
 
+std::vector<SphereRange> shown_ranges(const CompactTree& compact, const SamplingTree& tree,
+                                      const std::vector<NodeId>& hidden, uint32_t set_size) {
+    std::vector<SphereRange> cut;
+    for (NodeId id : hidden) {
+        const SphereRange r = sphere_range(compact, tree, id);
+        if (r.count > 0) cut.push_back(r);
+    }
+    std::sort(cut.begin(), cut.end(), [](const SphereRange& a, const SphereRange& b) { return a.first < b.first; });
+    std::vector<SphereRange> shown;
+    uint32_t from = 0;
+    for (const SphereRange& r : cut) { // subtrees nest or are disjoint: a nested one starts before `from` ends
+        if (r.first > from) shown.push_back({from, std::min(r.first, set_size) - from});
+        from = std::max(from, std::min(r.first + r.count, set_size));
+    }
+    if (from < set_size) shown.push_back({from, set_size - from});
+    return shown;
+}
+
+std::vector<SphereItem> clip_to_ranges(const std::vector<SphereItem>& items, const std::vector<SphereRange>& shown) {
+    std::vector<SphereItem> out;
+    for (const SphereItem& item : items) {
+        const uint64_t first = item.first, end = first + item.count; // count may be UINT32_MAX: all
+        for (const SphereRange& r : shown) {
+            const uint64_t a = std::max<uint64_t>(first, r.first), b = std::min<uint64_t>(end, uint64_t(r.first) + r.count);
+            if (a >= b) continue;
+            SphereItem part = item;
+            part.first = uint32_t(a), part.count = uint32_t(b - a);
+            out.push_back(part);
+        }
+    }
+    return out;
+}
+
 std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const SamplingTree& tree, NodeId id,
                                         const Color& color) {
     const int64_t i = compact_index(compact, tree, id);

@@ -30,6 +30,10 @@ bool wait_drawn(editor::MainWindow& window);
 /// (with the reason in `error`) if it did not get there.
 std::unique_ptr<editor::MainWindow> open_editor(const TempDir& dir, const QString& file, std::string* error);
 
+/// A view's projection as a test derives it from the camera and the widget's size (not from the
+/// view's own view_projection(), which is what is being tested).
+ViewProjection reference_projection(const editor::ViewWidget& v);
+
 /// Where the tests write pictures (docs/editor.md uses them): BUILD/test-output/editor.
 std::string editor_output_dir();
 

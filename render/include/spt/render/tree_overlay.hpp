@@ -38,6 +38,14 @@ struct SphereRange {
 /// no such node.
 SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id);
 
+/// The ranges of sampling_spheres() (`set_size` spheres) left shown when the subtrees of the nodes
+/// `hidden` are hidden: the complement of their ranges, in order, disjoint; ids the tree lacks hide nothing.
+std::vector<SphereRange> shown_ranges(const CompactTree& compact, const SamplingTree& tree,
+                                      const std::vector<NodeId>& hidden, uint32_t set_size);
+
+/// `items` cut to the sphere ranges `shown` (in order, disjoint): each item's part inside them.
+std::vector<SphereItem> clip_to_ranges(const std::vector<SphereItem>& items, const std::vector<SphereRange>& shown);
+
 /// How much the spheres of nodes that are not highlighted are faded (SphereItem::fade).
 constexpr float kDimmedFade = 0.7f;
 
