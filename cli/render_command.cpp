@@ -28,7 +28,7 @@ using namespace spt::render;
 
 struct RenderArgs {
     std::string input, tree_path, tree_name, view = "camera", size = "512x512", frames, backend = "osmesa";
-    std::string output, shading = "smooth", color_by = "level", clip;
+    std::string output, shading = "smooth", color_by = "node", clip;
     double time = 0;
     bool time_given = false;
     std::vector<std::string> overlays;
@@ -312,7 +312,8 @@ int run_render(const RenderArgs& a) {
             sampling_spheres(compact, *tree, a.color_by == "node" ? ColorBy::Node : ColorBy::Level, origin));
         if (show_node) {
             for (SphereItem item : highlighted_node(set, renderer->sphere_count(set),
-                                                    sphere_range(compact, *tree, a.node), show_spheres)) {
+                                                    sphere_range(compact, *tree, a.node), show_spheres,
+                                                    is_inner_node(*tree, a.node))) {
                 item.pose = local_frame(origin);
                 frame.spheres.push_back(item);
             }
@@ -382,7 +383,7 @@ Action add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"smooth", "flat", "none"}));
     c->add_option("--mesh-opacity", a->mesh_opacity, "Mesh opacity 0-1 (default 1; 0.3 with spheres or node)")
         ->check(finite_in(0, 1, "from 0 to 1"));
-    c->add_option("--color-by", a->color_by, "Sampling-sphere colours: level (tree depth) or node")
+    c->add_option("--color-by", a->color_by, "Sampling-sphere colours: node (default; the two children of a split in opposite hues) or level (tree depth)")
         ->check(CLI::IsMember({"level", "node"}));
     c->add_option("--node", a->node, "Paper id of the node for the bounds and node overlays (default 1, the root)")
         ->check(CLI::Range(uint64_t(1), ~uint64_t(0)));

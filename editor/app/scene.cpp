@@ -126,7 +126,8 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         // nothing is selected, so that a selection change leaves the frame as it was and the
         // renderer recolours its cached frame instead of drawing it again.
         for (render::SphereItem item :
-             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true)) {
+             render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true,
+                                      doc_.has_tree() && render::is_inner_node(doc_.tree(), doc_.current()))) {
             item.marked_color = selection_color();
             item.pose = render::local_frame(data_.origin);
             f.spheres.push_back(item);

@@ -48,7 +48,7 @@ public:
     /// The frame every view draws (what `spt render --overlay spheres,node,grid,axes --node ID` draws, plus the
     /// selection as marks on `spheres`); handles are the view's own uploads.
     render::Frame frame(render::MeshHandle mesh, render::SphereSetHandle spheres) const;
-    /// Colours spheres by level (default) or by node.
+    /// Colours spheres by node (default: a split's two children in opposite hues) or by level.
     void set_color_by(render::ColorBy by);
     /// How spheres are coloured.
     render::ColorBy color_by() const { return color_by_; }
@@ -67,7 +67,7 @@ private:
     void rebuild_shown();
     EditorDocument& doc_;
     SceneData data_;
-    render::ColorBy color_by_ = render::ColorBy::Level;
+    render::ColorBy color_by_ = render::ColorBy::Node;
     std::vector<uint32_t> sphere_of_sample_; // index into data_.spheres of each sample; UINT32_MAX if none
     std::unique_ptr<CompactTree> compact_;
 };

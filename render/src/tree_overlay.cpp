@@ -52,13 +52,20 @@ Color level_color(int depth) {
 }
 
 Color node_color(NodeId id) {
-    // splitmix64 finaliser: neighbouring ids get unrelated hues.
-    uint64_t z = id + 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    z ^= z >> 31;
-    const float hue = float(z & 0xffffff) / float(0x1000000);
-    const float sat = 0.45f + 0.35f * float((z >> 24) & 0xff) / 255.0f;
+    // splitmix64 finaliser: neighbouring ids get unrelated values.
+    auto mix = [](uint64_t z) {
+        z += 0x9e3779b97f4a7c15ull;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    };
+    // The two children of a split contrast at a glance: the left child (2i) takes a hue from its
+    // parent's id, the right child (2i + 1) the opposite hue; cousins get unrelated hues.
+    const uint64_t family = mix(id > root_id() ? parent_of(id) : id);
+    float hue = float(family & 0xffffff) / float(0x1000000);
+    if (id > root_id() && (id & 1)) hue += 0.5f;
+    const uint64_t own = mix(id);
+    const float sat = 0.55f + 0.3f * float((own >> 24) & 0xff) / 255.0f;
     return hsv(hue, sat, 0.92f);
 }
 
@@ -148,7 +155,13 @@ std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const Sampli
     return {w};
 }
 
-std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all) {
+bool is_inner_node(const SamplingTree& tree, NodeId id) {
+    const TreeNode* n = tree.find(id);
+    return n && !n->active;
+}
+
+std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all,
+                                         bool own_colours) {
     // The spheres before and after the node's range, dimmed, then the range highlighted: each
     // sphere drawn once (llvmpipe's cost is per sphere), the range last as a second item over
     // all of them would be.
@@ -165,7 +178,8 @@ std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size,
     if (show_all && end < set_size) dimmed(end, set_size);
     if (end > first) {
         SphereItem item;
-        item.spheres = set, item.first = first, item.count = end - first, item.color = highlight_color();
+        item.spheres = set, item.first = first, item.count = end - first;
+        if (!own_colours) item.color = highlight_color();
         items.push_back(item);
     }
     return items;

@@ -12,12 +12,13 @@ namespace spt::render {
 /// How sampling spheres are coloured.
 enum class ColorBy {
     Level, ///< by the depth of the sphere's active node (a fixed palette, cycled)
-    Node,  ///< by a hash of the active node's paper id
+    Node,  ///< by the active node's paper id: siblings in opposite hues (the default everywhere)
 };
 
 /// Colour of tree depth `depth` (root 0) in the level palette.
 Color level_color(int depth);
-/// Stable colour of a node id (hashed hue).
+/// Stable colour of a node id: the left child of a split (2i) takes a hue hashed from its parent's
+/// id, the right child (2i + 1) the opposite hue, so the two halves of every split contrast.
 Color node_color(NodeId id);
 /// Colour used for the highlighted node (opaque).
 Color highlight_color();
@@ -51,9 +52,15 @@ constexpr float kDimmedFade = 0.7f;
 
 /// The sphere items of set `set` (sampling_spheres()) with node range `node` highlighted:
 /// with `show_all`, every sphere dimmed first (unless the node holds them all), then the
-/// node's spheres in the highlight colour; without, the node's spheres alone. What the
-/// editor's views and `spt render --overlay node` draw.
-std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all);
+/// node's spheres in the highlight colour; without, the node's spheres alone. With `own_colours`
+/// (an inner node: its leaves' colours tell its children apart) the node's spheres keep their
+/// colours, undimmed, instead of the highlight colour. What the editor's views and `spt render
+/// --overlay node` draw.
+std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all,
+                                         bool own_colours = false);
+
+/// True when node `id` of `tree` is an inner node (split): highlighted_node's `own_colours`.
+bool is_inner_node(const SamplingTree& tree, NodeId id);
 
 /// Bounding spheres of node `id` and of its descendants down to `levels` levels
 /// below it (0: the node alone), moved from the tree's local frame into the object frame
