@@ -189,6 +189,11 @@ TEST(SelectionToolsUi, InvertGrowAndShrinkFromTheKeyboardEqualCore) {
     const SampleAdjacency adj(*d.mesh(), d.samples());
     editor::ViewWidget* v = w.grid().view(1);
     QTest::keyClick(v, Qt::Key_C);
+    const double radius = w.view_options().brush_radius;
+    QTest::keyClick(v, Qt::Key_BracketRight); // ] and [ scale the brush by 1.25
+    EXPECT_DOUBLE_EQ(w.view_options().brush_radius, radius * 1.25);
+    QTest::keyClick(v, Qt::Key_BracketLeft);
+    EXPECT_DOUBLE_EQ(w.view_options().brush_radius, radius);
     w.set_brush_radius(8);
     QPoint at;
     for (int x = 1; x < v->width(); x += 3) { // the first point left of the centre with a sample near

@@ -1,6 +1,7 @@
 // Lasso, brush, linked, invert, grow and shrink in core against answers computed from positions
 // and the mesh alone; their recipe strokes through .spt version 5 and replayed on a changed mesh.
 #include "mesh/shapes.hpp"
+#include "base/parallel.hpp"
 #include "spt/error.hpp"
 #include "spt/recipe.hpp"
 #include "spt/selection.hpp"
@@ -451,4 +452,45 @@ TEST(SelectionTools, EveryNewStrokeKindReplaysOnAChangedMesh) {
     SptDocument again = old.doc;
     again.trees.front() = same;
     EXPECT_EQ(encode_spt(again), encode_spt(old.doc));
+}
+
+TEST(SelectionTools, ThreadCountChangesNothingForLassoAndBrush) {
+    // Lasso and brush filter their samples in the rectangle's chunks on the machine's threads: on
+    // a mesh of several chunks the answer is the same, bit for bit, on one, two and three threads,
+    // through and visible only, and the through lasso equals the even-odd rule sample by sample.
+    const TriangleMesh torus = make_torus(2.4, 1.0, 400, 300); // 120,000 vertices
+    const SampleSet s = test::vertex_samples(torus);
+    const SamplingTree t("t", uint32_t(s.size()));
+    const ViewProjection v = tools_view();
+    const std::vector<Eigen::Vector2f> poly{{30.5f, 40.2f}, {370.1f, 60.7f}, {200.3f, 380.9f}, {190.2f, 150.4f}};
+    RecipeStroke shapes[2] = {lasso(poly), brush({{40, 200}, {200, 260}, {360, 120}}, 35.5f)};
+    for (RecipeStroke& stroke : shapes) {
+        std::vector<uint32_t> through[3], visible[3];
+        for (int n = 1; n <= 3; ++n) {
+            const detail::PinnedThreads pin(n);
+            stroke.visible_only = false;
+            through[n - 1] = stroke_hits(s, t, 1, stroke, &torus);
+            stroke.visible_only = true;
+            visible[n - 1] = stroke_hits(s, t, 1, stroke, &torus);
+        }
+        ASSERT_GT(through[0].size(), 10000u);
+        ASSERT_GT(through[0].size(), visible[0].size() + 1000);
+        for (int n = 1; n < 3; ++n) {
+            EXPECT_EQ(through[n], through[0]);
+            EXPECT_EQ(visible[n], visible[0]);
+        }
+        if (stroke.kind != StrokeKind::Lasso) continue;
+        std::vector<uint32_t> expected;
+        for (uint32_t i = 0; i < s.size(); ++i) {
+            const Eigen::Vector3f w = project_to_window(v, s.position(i));
+            bool in = false;
+            for (size_t a = 0, b = poly.size() - 1; a < poly.size(); b = a++)
+                if ((poly[a].y() > w.y()) != (poly[b].y() > w.y()) &&
+                    double(w.x()) < double(poly[b].x() - poly[a].x()) * double(w.y() - poly[a].y()) /
+                                            double(poly[b].y() - poly[a].y()) + double(poly[a].x()))
+                    in = !in;
+            if (in) expected.push_back(i);
+        }
+        EXPECT_EQ(through[0], expected);
+    }
 }
