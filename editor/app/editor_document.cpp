@@ -52,6 +52,9 @@ void EditorDocument::set_current(NodeId id) {
 void EditorDocument::set_selection(std::vector<uint32_t> selection) {
     selection_ = std::move(selection);
     forget_strokes();
+    // A selection made in code has no strokes: strokes added to it (add, subtract, invert, grow,
+    // shrink) would replay on nothing, so none is recorded until a stroke replaces the selection.
+    strokes_unrecorded_ = !selection_.empty();
     emit selectionChanged();
 }
 

@@ -232,6 +232,15 @@ TEST(SelectionToolsUi, InvertGrowAndShrinkFromTheKeyboardEqualCore) {
     *std::find_if(again.trees.begin(), again.trees.end(), [](const SamplingTree& x) { return x.name() == "authored"; }) =
         replayed;
     EXPECT_EQ(encode_spt(again), encode_spt(file));
+    // A selection made in code and inverted replays on nothing: the split records no step for it.
+    const std::vector<uint32_t> node = samples_below(d.tree(), d.current());
+    ASSERT_GT(node.size(), 2u);
+    w.document().set_selection({node.front()});
+    QTest::keyClick(v, Qt::Key_I, Qt::ControlModifier);
+    ASSERT_EQ(d.selection().size(), node.size() - 1);
+    QTest::keyClick(v, Qt::Key_S);
+    ASSERT_EQ(w.undo_stack().count(), 2) << w.last_message().toStdString();
+    EXPECT_EQ(d.tree().recipe().size(), 1u);
 }
 
 TEST(SelectionToolsUi, HideIsolateAndShowAllChangeWhatIsDrawnNotTheDocument) {

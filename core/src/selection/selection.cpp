@@ -269,7 +269,9 @@ int64_t nearest_sample(const SamplePoints& samples, const SamplingTree& tree, No
     int64_t best = -1;
     double best_d2 = INFINITY;
     for (uint32_t s : samples_below(tree, id)) {
-        if (s >= samples.points.size()) break;
+        if (s >= samples.points.size())
+            throw Error(ErrorKind::Usage, "selection: " + std::to_string(samples.points.size()) +
+                                              " sample points for a tree over sample " + std::to_string(s));
         const double d2 = (samples.origin + samples.points[s].cast<double>() - p).squaredNorm();
         if (d2 < best_d2) best = s, best_d2 = d2;
     }
