@@ -374,9 +374,9 @@ TEST(SelectionTools, ABadVersion5StrokeIsRefusedNamingTheFileAndTheProblem) {
     // rectangle. Strokes are located through a lasso's four vertices written as floats.
     const float first_x = 250;
     size_t at = 0;
-    for (size_t k = 0; k + 4 <= good.size(); ++k)
-        if (std::memcmp(good.data() + k, &first_x, 4) == 0 && k >= 8 &&
-            *reinterpret_cast<const uint32_t*>(good.data() + k - 4) == 4u) {
+    const uint32_t four_vertices = 4;
+    for (size_t k = 8; k + 4 <= good.size(); ++k)
+        if (std::memcmp(good.data() + k, &first_x, 4) == 0 && std::memcmp(good.data() + k - 4, &four_vertices, 4) == 0) {
             at = k;
             break;
         }
