@@ -30,7 +30,7 @@ using namespace spt::render;
 
 struct RenderArgs {
     std::string input, tree_path, tree_name, view = "camera", size = "512x512", frames, backend = "osmesa";
-    std::string output, shading = "smooth", color_by = "level", clip;
+    std::string output, shading = "smooth", color_by = "node", clip;
     std::string scene, object; // --color-by contacts: the motion recorded
     int motion_steps = 0;
     double time = 0;
@@ -342,7 +342,8 @@ int run_render(const RenderArgs& a) {
         const SphereSetHandle set = renderer->add_spheres(sampling_spheres(compact, *tree, by, origin, &contact_steps));
         if (show_node) {
             for (SphereItem item : highlighted_node(set, renderer->sphere_count(set),
-                                                    sphere_range(compact, *tree, a.node), show_spheres, contacts)) {
+                                                    sphere_range(compact, *tree, a.node), show_spheres,
+                                                    contacts || is_inner_node(*tree, a.node))) {
                 item.pose = local_frame(origin);
                 frame.spheres.push_back(item);
             }
@@ -413,8 +414,8 @@ Action add_render_command(CLI::App& app) {
     c->add_option("--mesh-opacity", a->mesh_opacity, "Mesh opacity 0-1 (default 1; 0.3 with spheres or node)")
         ->check(finite_in(0, 1, "from 0 to 1"));
     c->add_option("--color-by", a->color_by,
-                  "Sampling-sphere colours: level (tree depth), node, or contacts (steps in contact during the motion "
-                  "of --object in --scene)")
+                  "Sampling-sphere colours: node (default; the two children of a split in opposite hues), level (tree "
+                  "depth), or contacts (steps in contact during the motion of --object in --scene)")
         ->check(CLI::IsMember({"level", "node", "contacts"}));
     c->add_option("--scene", a->scene, "With --color-by contacts: the scene (SCENE.json) run with this tree");
     c->add_option("--object", a->object, "With --color-by contacts: the scene's object whose model the tree replaces");

@@ -57,6 +57,25 @@ public:
     /// Applies a rectangle drawn in a view to the samples where the pose shown puts them: through,
     /// or visible only when the mesh is known. Returns the number of samples the rectangle hit.
     size_t select_rect(const ViewProjection& view, const PixelRect& rect, SelectionMode mode, bool visible_only);
+    /// Applies a stroke of any kind (core's apply_stroke) to the selection and records it for the
+    /// next split: a rectangle, lasso or brush drawn in a view, a linked pick, invert, grow or
+    /// shrink. Visible only is dropped without a mesh; linked, grow and shrink are refused without
+    /// one (empty `why`: done). Returns the stroke's own hits (for an operation, the selection's size).
+    size_t apply(RecipeStroke stroke, QString* why = nullptr);
+    /// Select linked: the mesh part of the sample of the current node nearest window point
+    /// `window` (GL window pixels of `view`, at most 12 physical pixels away; visible only when
+    /// asked and the mesh is known), combined in `mode`. Returns the hits; `why` says why nothing was picked.
+    size_t select_linked(const ViewProjection& view, const Eigen::Vector2f& window, SelectionMode mode,
+                         bool visible_only, QString* why = nullptr);
+
+    /// Nodes hidden in the views (a view state, not an edit: each hides its subtree).
+    const std::vector<NodeId>& hidden() const { return hidden_; }
+    /// Hides node `id`'s subtree (H).
+    void hide(NodeId id);
+    /// Hides everything but node `id`'s subtree (Shift+H): the sibling of `id` and of each of its ancestors.
+    void isolate(NodeId id);
+    /// Shows every node again (Alt+H).
+    void show_all();
 
     /// The mesh with its clips, or null when it has none (no timeline).
     const AnimatedMesh* animation() const { return pose_.animation(); }
@@ -93,6 +112,8 @@ signals:
     void poseChanged();
     /// Core could not pose the mesh (why); the views show the bind pose instead.
     void poseRefused(const QString& why);
+    /// Nodes were hidden or shown.
+    void visibilityChanged();
 
 private:
     SptDocument doc_;
@@ -104,6 +125,9 @@ private:
     RecipePose strokes_pose_;
     bool strokes_unrecorded_ = false; // strokes at two poses: none recorded until one replaces
     DocumentPose pose_;
+    std::vector<NodeId> hidden_;
+    std::unique_ptr<SampleAdjacency> adjacency_; // made at the first linked, grow or shrink
+    SamplePoints points() const;                 // the samples where the pose shown puts them
     void forget_strokes();
     void tree_edited(); // the edited tree changed: its pose is bound again, then announced
     void update_pose(bool tree_changed);

@@ -5,6 +5,7 @@
 #include "timeline_bar.hpp"
 #include "tree_panel.hpp"
 #include <QAction>
+#include <QActionGroup>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -39,7 +40,10 @@ MainWindow::MainWindow(const StartOptions& options, QWidget* parent)
     column->addWidget(grid_, 1);
     column->addWidget(timeline_);
     setCentralWidget(centre);
-    for (int i = 0; i < 4; ++i) connect(grid_->view(i), &ViewWidget::message, this, &MainWindow::show_message);
+    for (int i = 0; i < 4; ++i) {
+        connect(grid_->view(i), &ViewWidget::message, this, &MainWindow::show_message);
+        connect(grid_->view(i), &ViewWidget::hovered, this, [this](ViewWidget* v) { hover_view_ = v; });
+    }
     connect(&doc_, &EditorDocument::poseRefused, this, [this](const QString& why) { show_message("not posed: " + why); });
     build_docks();
     build_menus();
@@ -230,6 +234,8 @@ void MainWindow::build_menus() {
     edit->addSeparator();
     edit->addAction("&Preferences...", QKeySequence("Ctrl+,"), this, &MainWindow::show_preferences);
 
+    build_select_menu();
+
     QMenu* view = menuBar()->addMenu("&View");
     QAction* visible = visible_action_ = view->addAction("&Visible-only selection");
     visible->setCheckable(true);
@@ -252,6 +258,10 @@ void MainWindow::build_menus() {
         if (!v) v = qobject_cast<ViewWidget*>(focusWidget());
         grid_->toggle_maximised(v);
     });
+    view->addSeparator();
+    view->addAction("&Hide node", QKeySequence(Qt::Key_H), this, &MainWindow::hide_current);
+    view->addAction("&Isolate node", QKeySequence("Shift+H"), this, &MainWindow::isolate_current);
+    view->addAction("&Show all nodes", QKeySequence("Alt+H"), this, &MainWindow::show_all_nodes);
 
     QToolBar* tools = addToolBar("Edit");
     tools->setObjectName("edit_toolbar");
@@ -260,6 +270,86 @@ void MainWindow::build_menus() {
     tools->addAction(build_action);
     tools->addAction(motion_action);
     tools->addAction(visible);
+    tools->addSeparator();
+    for (QAction* a : tool_group_->actions()) tools->addAction(a);
+}
+
+void MainWindow::build_select_menu() {
+    QMenu* select = menuBar()->addMenu("Se&lect");
+    tool_group_ = new QActionGroup(this);
+    auto add_tool = [&](const QString& text, const QKeySequence& key, SelectTool tool, const char* name) {
+        QAction* a = select->addAction(text, key, this, [this, tool] { set_select_tool(tool); });
+        a->setCheckable(true);
+        a->setChecked(tool == options_.tool);
+        a->setObjectName(name);
+        tool_group_->addAction(a);
+    };
+    add_tool("&Rectangle", QKeySequence(Qt::Key_R), SelectTool::Rectangle, "tool_rectangle");
+    add_tool("&Lasso", QKeySequence(Qt::Key_L), SelectTool::Lasso, "tool_lasso");
+    add_tool("&Circle brush", QKeySequence(Qt::Key_C), SelectTool::Brush, "tool_brush");
+    select->addAction("Brush smaller", QKeySequence(Qt::Key_BracketLeft), this,
+                      [this] { set_brush_radius(options_.brush_radius / 1.25); });
+    select->addAction("Brush larger", QKeySequence(Qt::Key_BracketRight), this,
+                      [this] { set_brush_radius(options_.brush_radius * 1.25); });
+    select->addSeparator();
+    select->addAction("Select li&nked under the cursor", QKeySequence("Ctrl+L"), this,
+                      [this] { select_linked(SelectionMode::Add); });
+    select->addAction("Deselect linked under the cursor", QKeySequence("Ctrl+Shift+L"), this,
+                      [this] { select_linked(SelectionMode::Subtract); });
+    select->addAction("&Invert", QKeySequence("Ctrl+I"), this, &MainWindow::invert_selection);
+    QAction* grow = select->addAction("&Grow", this, &MainWindow::grow_selection);
+    grow->setShortcuts({QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_Plus)), QKeySequence("Ctrl++")});
+    QAction* shrink = select->addAction("S&hrink", this, &MainWindow::shrink_selection);
+    shrink->setShortcuts({QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_Minus)), QKeySequence("Ctrl+-")});
+}
+
+void MainWindow::set_select_tool(SelectTool tool) {
+    options_.tool = tool;
+    const char* names[] = {"tool_rectangle", "tool_lasso", "tool_brush"};
+    for (QAction* a : tool_group_->actions()) a->setChecked(a->objectName() == names[int(tool)]);
+    show_message(tool == SelectTool::Rectangle ? "select: rectangle"
+                 : tool == SelectTool::Lasso   ? "select: lasso"
+                                               : QString("select: circle brush, radius %1 pixels").arg(options_.brush_radius, 0, 'f', 1));
+}
+
+void MainWindow::set_brush_radius(double radius) {
+    options_.brush_radius = std::clamp(radius, 2.0, 500.0);
+    show_message(QString("brush radius %1 pixels").arg(options_.brush_radius, 0, 'f', 1));
+}
+
+void MainWindow::select_linked(SelectionMode mode) {
+    ViewWidget* v = hover_view_ ? hover_view_ : qobject_cast<ViewWidget*>(focusWidget());
+    if (!v) return show_message("select linked: point at a view first");
+    v->select_linked(mode);
+}
+
+void MainWindow::apply_operation(StrokeKind kind, const QString& what) {
+    if (!doc_.has_tree()) return show_message("no document is open");
+    RecipeStroke op;
+    op.kind = kind;
+    QString why;
+    doc_.apply(op, &why);
+    if (!why.isEmpty()) return show_message(what + ": " + why);
+    show_message(QString("%1: %2 selected in node %3").arg(what).arg(doc_.selection().size()).arg(qulonglong(doc_.current())));
+}
+
+void MainWindow::invert_selection() { apply_operation(StrokeKind::Invert, "invert"); }
+void MainWindow::grow_selection() { apply_operation(StrokeKind::Grow, "grow"); }
+void MainWindow::shrink_selection() { apply_operation(StrokeKind::Shrink, "shrink"); }
+
+void MainWindow::hide_current() {
+    doc_.hide(doc_.current());
+    show_message(QString("node %1 hidden (Alt+H shows all)").arg(qulonglong(doc_.current())));
+}
+
+void MainWindow::isolate_current() {
+    doc_.isolate(doc_.current());
+    show_message(QString("only node %1 shown (Alt+H shows all)").arg(qulonglong(doc_.current())));
+}
+
+void MainWindow::show_all_nodes() {
+    doc_.show_all();
+    show_message("every node shown");
 }
 
 bool MainWindow::modified() const { return unsaved_new_ || !stack_.isClean(); }

@@ -98,6 +98,25 @@ public:
     /// Opens the preferences dialog (Edit > Preferences); accepting it applies them.
     void show_preferences();
 
+    /// Chooses what a left drag draws (R rectangle, L lasso, C brush).
+    void set_select_tool(SelectTool tool);
+    /// Sets the brush radius, logical pixels (held within 2 to 500; [ and ] scale it by 1.25).
+    void set_brush_radius(double radius);
+    /// Select linked under the cursor in the view it was last over (Ctrl+L adds, Ctrl+Shift+L subtracts).
+    void select_linked(SelectionMode mode);
+    /// Inverts the selection within the current node (Ctrl+I).
+    void invert_selection();
+    /// Grows the selection by one ring of mesh neighbours (Ctrl+NumPad+).
+    void grow_selection();
+    /// Shrinks the selection by one ring (Ctrl+NumPad-).
+    void shrink_selection();
+    /// Hides the current node's spheres in every view (H), a view state, not an edit.
+    void hide_current();
+    /// Shows only the current node's spheres (Shift+H).
+    void isolate_current();
+    /// Shows every node (Alt+H).
+    void show_all_nodes();
+
     /// Splits the current node by the selection (key S).
     bool split();
     /// Merges the current node's children.
@@ -141,6 +160,10 @@ protected:
 
 private:
     void build_menus();
+    void build_select_menu();
+    void apply_operation(StrokeKind kind, const QString& what);
+    ViewWidget* hover_view_ = nullptr; // the view the mouse was last over
+    class QActionGroup* tool_group_ = nullptr;
     void build_docks();
     void loaded(const LoadResult& result);
     void show_error(const QString& text);

@@ -18,7 +18,7 @@ Preferences load_preferences() {
     const int seconds = s.value("preferences/autosave_seconds", p.autosave_seconds).toInt(&ok);
     p.autosave_seconds = ok && seconds >= 0 ? std::min(seconds, 86400) : 30;
     p.swap_modifiers = s.value("preferences/swap_modifiers", false).toBool();
-    p.color_by_node = s.value("preferences/color_by_node", false).toBool();
+    p.color_by_node = s.value("preferences/color_by_node", true).toBool();
     p.visible_only = s.value("preferences/visible_only", false).toBool();
     return p;
 }

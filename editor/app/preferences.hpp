@@ -12,7 +12,7 @@ namespace spt::editor {
 struct Preferences {
     int autosave_seconds = 30;   ///< recovery file period, seconds; 0 turns it off
     bool swap_modifiers = false; ///< Ctrl adds and Shift subtracts (MeshLab's habit)
-    bool color_by_node = false;  ///< sampling spheres coloured by node instead of by level
+    bool color_by_node = true;   ///< sampling spheres coloured by node (siblings contrast), else by level
     bool visible_only = false;   ///< rectangle selection starts visible-only (key X toggles)
 };
 

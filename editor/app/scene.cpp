@@ -16,6 +16,10 @@ Scene::Scene(EditorDocument& doc, QObject* parent) : QObject(parent), doc_(doc) 
         rebuild_selection();
     });
     connect(&doc_, &EditorDocument::selectionChanged, this, &Scene::rebuild_selection);
+    connect(&doc_, &EditorDocument::visibilityChanged, this, [this] {
+        rebuild_shown();
+        emit changed();
+    });
     // Another pose moves the mesh and the spheres; the layout, the highlight and the selection stay.
     connect(&doc_, &EditorDocument::poseChanged, this, [this] {
         rebuild_pose();
@@ -65,6 +69,7 @@ void Scene::rebuild_tree() {
     rebuild_pose(); // an edit binds the tree to the pose again: the model is new
     rebuild_spheres();
     rebuild_legend();
+    rebuild_shown();
     rebuild_current();
     rebuild_selection();
 }
@@ -94,6 +99,14 @@ void Scene::rebuild_legend() {
     const std::vector<uint32_t> none = counts ? std::vector<uint32_t>{} : std::vector<uint32_t>(doc_.samples().size(), 0);
     data_.heat = render::heat_scale(counts ? *counts : none);
     data_.legend = render::heat_legend(data_.heat, counts ? *counts : none);
+}
+
+void Scene::rebuild_shown() {
+    // Hidden nodes (a view state): what is left of the spheres, as ranges of the one uploaded set.
+    data_.hiding = doc_.has_tree() && compact_ && !doc_.hidden().empty();
+    data_.shown = data_.hiding ? render::shown_ranges(*compact_, doc_.tree(), doc_.hidden(), uint32_t(data_.spheres.size()))
+                               : std::vector<render::SphereRange>{};
+    ++data_.revision;
 }
 
 void Scene::rebuild_current() {
@@ -137,11 +150,13 @@ render::Frame Scene::frame(render::MeshHandle mesh, render::SphereSetHandle sphe
         // renderer recolours its cached frame instead of drawing it again.
         for (render::SphereItem item :
              render::highlighted_node(spheres, uint32_t(data_.spheres.size()), data_.highlight, true,
-                                      color_by_ == render::ColorBy::Contacts)) {
+                                      color_by_ == render::ColorBy::Contacts ||
+                                          (doc_.has_tree() && render::is_inner_node(doc_.tree(), doc_.current())))) {
             item.marked_color = selection_color();
             item.pose = render::local_frame(data_.origin);
             f.spheres.push_back(item);
         }
+        if (data_.hiding) f.spheres = render::clip_to_ranges(f.spheres, data_.shown);
     }
     f.wire_spheres = data_.wires;
     return f;

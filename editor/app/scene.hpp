@@ -26,6 +26,8 @@ struct SceneData {
     /// Coloured by contacts: the heat map's legend (a row for 0 steps first) and scale; empty otherwise.
     std::vector<render::HeatLegendRow> legend;
     render::HeatScale heat;                         ///< the heat map's scale (with `legend`)
+    bool hiding = false;                            ///< some node is hidden: only `shown` is drawn
+    std::vector<render::SphereRange> shown;         ///< with `hiding`, the ranges of `spheres` drawn
     /// The mesh and `spheres` are relative to it (the document's local origin), drawn with
     /// render::local_frame(origin): far from the origin float keeps their detail only so.
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
@@ -51,7 +53,7 @@ public:
     /// The frame every view draws (what `spt render --overlay spheres,node,grid,axes --node ID` draws, plus the
     /// selection as marks on `spheres`); handles are the view's own uploads.
     render::Frame frame(render::MeshHandle mesh, render::SphereSetHandle spheres) const;
-    /// Colours spheres by level (default) or by node.
+    /// Colours spheres by node (default: a split's two children in opposite hues) or by level.
     void set_color_by(render::ColorBy by);
     /// How spheres are coloured.
     render::ColorBy color_by() const { return color_by_; }
@@ -71,9 +73,10 @@ private:
     void rebuild_current();
     void rebuild_selection();
     void rebuild_pose();
+    void rebuild_shown();
     EditorDocument& doc_;
     SceneData data_;
-    render::ColorBy color_by_ = render::ColorBy::Level;
+    render::ColorBy color_by_ = render::ColorBy::Node;
     std::shared_ptr<const MotionRecording> motion_;
     std::vector<uint32_t> sphere_of_sample_; // index into data_.spheres of each sample; UINT32_MAX if none
     std::unique_ptr<CompactTree> compact_;

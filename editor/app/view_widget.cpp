@@ -1,15 +1,90 @@
-// ViewWidget: the editor's scene in a RenderView, and rectangle selection.
+// ViewWidget: the editor's scene in a RenderView, and rectangle, lasso and brush selection.
 #include "view_widget.hpp"
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMouseEvent>
-#include <QRubberBand>
+#include <QPainter>
+#include <QPainterPath>
+#include <cmath>
 
 namespace spt::editor {
+
+/// The outline of the stroke being drawn, a child widget composed over the view's picture (as
+/// the view's title is): the framebuffer stays what `spt render` draws, and nothing shows when
+/// nothing is drawn. Not antialiased, so its outline colour is exact (tests find it).
+class StrokeOverlay : public QWidget {
+public:
+    explicit StrokeOverlay(QWidget* parent) : QWidget(parent) {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+        setFocusPolicy(Qt::NoFocus);
+    }
+    /// Shows `tool`'s outline along `path` (logical pixels); `radius` for the brush; `active`:
+    /// being dragged (else only the brush's circle at the cursor, or nothing).
+    void show_stroke(SelectTool tool, const std::vector<QPointF>& path, double radius, bool active) {
+        tool_ = tool, path_ = path, radius_ = radius, active_ = active;
+        setVisible(active || (tool == SelectTool::Brush && !path.empty()));
+        update();
+    }
+    void clear() {
+        path_.clear();
+        active_ = false;
+        hide();
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        if (path_.empty()) return;
+        QPainter p(this);
+        const QColor outline = stroke_outline_color();
+        QColor fill = outline;
+        fill.setAlpha(60);
+        const QPen pen(outline, 1.5);
+        switch (tool_) {
+        case SelectTool::Rectangle:
+            if (path_.size() < 2) return;
+            p.setPen(pen);
+            p.setBrush(fill);
+            p.drawRect(QRectF(path_.front(), path_.back()).normalized());
+            break;
+        case SelectTool::Lasso: {
+            QPolygonF poly;
+            for (const QPointF& q : path_) poly << q;
+            p.setPen(pen);
+            p.setBrush(fill);
+            p.drawPolygon(poly); // closed from the last point to the first, as the lasso selects
+            break;
+        }
+        case SelectTool::Brush: {
+            if (active_) { // the band it has swept
+                QPainterPath swept(path_.front());
+                for (const QPointF& q : path_) swept.lineTo(q);
+                p.setPen(QPen(fill, 2 * radius_, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+                p.drawPath(swept);
+            }
+            p.setPen(pen);
+            p.setBrush(Qt::NoBrush);
+            p.drawEllipse(path_.back(), radius_, radius_);
+            break;
+        }
+        }
+    }
+
+private:
+    SelectTool tool_ = SelectTool::Rectangle;
+    std::vector<QPointF> path_;
+    double radius_ = 0;
+    bool active_ = false;
+};
+
+QColor stroke_outline_color() { return QColor(255, 128, 0); }
 
 ViewWidget::ViewWidget(render::View view, EditorDocument& doc, Scene& scene, const ViewOptions& options,
                        QWidget* parent)
     : RenderView(view, parent), doc_(doc), scene_(scene), options_(options) {
+    setMouseTracking(true); // the hover point: select linked picks there, the brush shows its circle there
+    overlay_ = new StrokeOverlay(this);
+    overlay_->hide();
     connect(&scene_, &Scene::changed, this, qOverload<>(&QWidget::update));
     connect(&scene_, &Scene::changed, this, &ViewWidget::update_legend);
     connect(&doc_, &EditorDocument::documentReset, this, &ViewWidget::frame_all);
@@ -45,11 +120,6 @@ void ViewWidget::update_legend() {
     legend_->show();
 }
 
-void ViewWidget::resizeEvent(QResizeEvent* event) {
-    RenderView::resizeEvent(event);
-    if (legend_) legend_->move(width() - legend_->width() - 4, height() - legend_->height() - 4);
-}
-
 ViewProjection ViewWidget::view_projection() const {
     const QSize fb = framebuffer_size();
     ViewProjection v;
@@ -59,6 +129,11 @@ ViewProjection ViewWidget::view_projection() const {
     v.width = fb.width();
     v.height = fb.height();
     return v;
+}
+
+Eigen::Vector2f ViewWidget::window_point(const QPointF& p) const {
+    const double dpr = devicePixelRatioF();
+    return {float(p.x() * dpr), float(framebuffer_size().height()) - float(p.y() * dpr)};
 }
 
 void ViewWidget::frame_selection() {
@@ -107,45 +182,113 @@ render::Frame ViewWidget::frame() const { return scene_.frame(mesh_, spheres_); 
 
 bool ViewWidget::left_press(QMouseEvent* event) {
     press_ = event->position().toPoint();
-    // The mode is fixed now: mouse moves carry no modifiers reliably.
+    // The mode and the tool are fixed now: mouse moves carry no modifiers reliably.
     const Qt::KeyboardModifiers m = event->modifiers();
     const Qt::KeyboardModifier add = options_.swap_modifiers ? Qt::ControlModifier : Qt::ShiftModifier;
     const Qt::KeyboardModifier sub = options_.swap_modifiers ? Qt::ShiftModifier : Qt::ControlModifier;
     mode_ = (m & add) ? SelectionMode::Add : (m & sub) ? SelectionMode::Subtract : SelectionMode::Replace;
+    tool_ = options_.tool;
     selecting_ = true;
-    if (!band_) band_ = new QRubberBand(QRubberBand::Rectangle, this);
-    band_->setGeometry(QRect(press_, QSize()));
-    band_->show();
+    path_ = {event->position()};
+    overlay_->show_stroke(tool_, path_, options_.brush_radius, true);
     return true;
 }
 
 void ViewWidget::left_move(const QPoint& p) {
-    if (selecting_) band_->setGeometry(QRect(press_, p).normalized());
+    if (!selecting_) return;
+    switch (tool_) {
+    case SelectTool::Rectangle: path_ = {path_.front(), QPointF(p)}; break;
+    case SelectTool::Lasso:
+    case SelectTool::Brush:
+        // A point a pixel or more from the last: a slow drag does not pile up points.
+        if (QLineF(path_.back(), QPointF(p)).length() >= 1.0) path_.push_back(QPointF(p));
+        break;
+    }
+    overlay_->show_stroke(tool_, path_, options_.brush_radius, true);
+}
+
+void ViewWidget::end_stroke() {
+    selecting_ = false;
+    path_.clear();
+    overlay_->clear();
 }
 
 void ViewWidget::left_release(const QPoint& end) {
     if (!selecting_) return; // cancelled with Esc
-    selecting_ = false;
-    band_->hide();
+    left_move(end);
+    std::vector<QPointF> path = std::move(path_);
+    const SelectTool tool = tool_;
+    end_stroke();
     if (!doc_.has_tree()) return;
-    // Logical pixels from the top left to GL window pixels from the bottom left.
-    const double dpr = devicePixelRatioF();
-    const float h = float(framebuffer_size().height());
-    const PixelRect rect{float(press_.x() * dpr), h - float(press_.y() * dpr), float(end.x() * dpr),
-                         h - float(end.y() * dpr)};
     const bool visible = options_.visible_only && doc_.mesh();
-    const size_t hits = doc_.select_rect(view_projection(), rect, mode_, visible);
-    emit message(QString("%1 samples in the rectangle (%2); %3 selected in node %4")
+    RecipeStroke stroke{view_projection(), {}, mode_, visible};
+    QString shape;
+    switch (tool) {
+    case SelectTool::Rectangle: {
+        const Eigen::Vector2f a = window_point(QPointF(press_)), b = window_point(QPointF(end));
+        stroke.rect = {a.x(), a.y(), b.x(), b.y()};
+        shape = "rectangle";
+        break;
+    }
+    case SelectTool::Lasso:
+        stroke.kind = StrokeKind::Lasso;
+        for (const QPointF& q : path) stroke.points.push_back(window_point(q));
+        shape = "lasso";
+        if (stroke.points.size() < 3) {
+            emit message("a lasso needs three points or more: drag around the samples");
+            return;
+        }
+        break;
+    case SelectTool::Brush:
+        stroke.kind = StrokeKind::Brush;
+        for (const QPointF& q : path) stroke.points.push_back(window_point(q));
+        stroke.radius = float(options_.brush_radius * devicePixelRatioF());
+        shape = "brush";
+        break;
+    }
+    const size_t hits = doc_.apply(std::move(stroke));
+    emit message(QString("%1 samples in the %2 (%3); %4 selected in node %5")
                      .arg(hits)
-                     .arg(visible ? "visible only" : "through")
+                     .arg(shape, visible ? "visible only" : "through")
                      .arg(doc_.selection().size())
                      .arg(qulonglong(doc_.current())));
 }
 
+void ViewWidget::select_linked(SelectionMode mode) {
+    QString why;
+    const bool visible = options_.visible_only && doc_.mesh();
+    const size_t hits = doc_.select_linked(view_projection(), window_point(QPointF(hover_)), mode, visible, &why);
+    if (!why.isEmpty()) return emit message("select linked: " + why);
+    emit message(QString("%1 linked samples; %2 selected in node %3")
+                     .arg(hits)
+                     .arg(doc_.selection().size())
+                     .arg(qulonglong(doc_.current())));
+}
+
+void ViewWidget::mouseMoveEvent(QMouseEvent* event) {
+    hover_ = event->position().toPoint();
+    emit hovered(this);
+    if (!selecting_ && options_.tool == SelectTool::Brush) // the brush's circle follows the cursor
+        overlay_->show_stroke(SelectTool::Brush, {event->position()}, options_.brush_radius, false);
+    else if (!selecting_)
+        overlay_->clear();
+    RenderView::mouseMoveEvent(event);
+}
+
+void ViewWidget::leaveEvent(QEvent* event) {
+    if (!selecting_) overlay_->clear();
+    RenderView::leaveEvent(event);
+}
+
+void ViewWidget::resizeEvent(QResizeEvent* event) {
+    overlay_->setGeometry(rect());
+    RenderView::resizeEvent(event);
+    if (legend_) legend_->move(width() - legend_->width() - 4, height() - legend_->height() - 4);
+}
+
 void ViewWidget::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Escape && selecting_) {
-        selecting_ = false;
-        band_->hide();
+        end_stroke();
         emit message("selection cancelled");
         return;
     }

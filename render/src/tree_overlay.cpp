@@ -52,13 +52,20 @@ Color level_color(int depth) {
 }
 
 Color node_color(NodeId id) {
-    // splitmix64 finaliser: neighbouring ids get unrelated hues.
-    uint64_t z = id + 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    z ^= z >> 31;
-    const float hue = float(z & 0xffffff) / float(0x1000000);
-    const float sat = 0.45f + 0.35f * float((z >> 24) & 0xff) / 255.0f;
+    // splitmix64 finaliser: neighbouring ids get unrelated values.
+    auto mix = [](uint64_t z) {
+        z += 0x9e3779b97f4a7c15ull;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    };
+    // The two children of a split contrast at a glance: the left child (2i) takes a hue from its
+    // parent's id, the right child (2i + 1) the opposite hue; cousins get unrelated hues.
+    const uint64_t family = mix(id > root_id() ? parent_of(id) : id);
+    float hue = float(family & 0xffffff) / float(0x1000000);
+    if (id > root_id() && (id & 1)) hue += 0.5f;
+    const uint64_t own = mix(id);
+    const float sat = 0.55f + 0.3f * float((own >> 24) & 0xff) / 255.0f;
     return hsv(hue, sat, 0.92f);
 }
 
@@ -188,6 +195,39 @@ SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, N
     return {s.first, s.end_sphere - s.first};
 }
 
+std::vector<SphereRange> shown_ranges(const CompactTree& compact, const SamplingTree& tree,
+                                      const std::vector<NodeId>& hidden, uint32_t set_size) {
+    std::vector<SphereRange> cut;
+    for (NodeId id : hidden) {
+        const SphereRange r = sphere_range(compact, tree, id);
+        if (r.count > 0) cut.push_back(r);
+    }
+    std::sort(cut.begin(), cut.end(), [](const SphereRange& a, const SphereRange& b) { return a.first < b.first; });
+    std::vector<SphereRange> shown;
+    uint32_t from = 0;
+    for (const SphereRange& r : cut) { // subtrees nest or are disjoint: a nested one starts before `from` ends
+        if (r.first > from) shown.push_back({from, std::min(r.first, set_size) - from});
+        from = std::max(from, std::min(r.first + r.count, set_size));
+    }
+    if (from < set_size) shown.push_back({from, set_size - from});
+    return shown;
+}
+
+std::vector<SphereItem> clip_to_ranges(const std::vector<SphereItem>& items, const std::vector<SphereRange>& shown) {
+    std::vector<SphereItem> out;
+    for (const SphereItem& item : items) {
+        const uint64_t first = item.first, end = first + item.count; // count may be UINT32_MAX: all
+        for (const SphereRange& r : shown) {
+            const uint64_t a = std::max<uint64_t>(first, r.first), b = std::min<uint64_t>(end, uint64_t(r.first) + r.count);
+            if (a >= b) continue;
+            SphereItem part = item;
+            part.first = uint32_t(a), part.count = uint32_t(b - a);
+            out.push_back(part);
+        }
+    }
+    return out;
+}
+
 std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const SamplingTree& tree, NodeId id,
                                         const Color& color) {
     const int64_t i = compact_index(compact, tree, id);
@@ -198,6 +238,11 @@ std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const Sampli
     w.sphere.radius = n.bv_radius;
     w.color = color;
     return {w};
+}
+
+bool is_inner_node(const SamplingTree& tree, NodeId id) {
+    const TreeNode* n = tree.find(id);
+    return n && !n->active;
 }
 
 std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all,

@@ -8,8 +8,10 @@
 #include "spt/deforming_model.hpp"
 #include "spt/recipe.hpp"
 #include "spt/selection.hpp"
+#include "spt_reseal.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
+#include <fstream>
 
 using namespace spt;
 using namespace spt::test;
@@ -84,4 +86,48 @@ TEST(ConvertCli, ARecipeWithoutPosesReplaysAsBefore) {
     const SptDocument doc = load_spt(out.file("new.spt"));
     EXPECT_EQ(doc.tree("authored")->find(2)->samples, authored.find(2)->samples);
     EXPECT_EQ(spt_version_for(doc), 3u);
+}
+
+TEST(ConvertCli, ARecipeWithGrowAndInvertStrokesReplaysFromVersion5) {
+    TempDir out("recipe-v5");
+    const auto mesh = std::make_shared<AnimatedMesh>(import_animated_mesh(anim_data("bending_bar.gltf")));
+    SptDocument doc = make_document(mesh->imported.mesh);
+    SamplingTree tree = unsplit_tree("authored", doc.samples);
+    RecipeStroke band = above_the_bar();
+    band.rect = bar_band(-1, 0);
+    RecipeStroke grow, invert;
+    grow.kind = StrokeKind::Grow, invert.kind = StrokeKind::Invert;
+    const RecipeStep step{1, {band, grow, invert}};
+    const SampleAdjacency adjacency(mesh->imported.mesh, doc.samples);
+    ASSERT_TRUE(tree.split(1, select_strokes(doc.samples, tree, step, &mesh->imported.mesh, &adjacency), doc.samples));
+    tree.add_recipe_step(step);
+    doc.trees = {tree};
+    save_spt(doc, out.file("old.spt"));
+    const auto r = run_command(spt_binary() + " convert " + q(anim_data("bending_bar.glb")) + " --recipe " +
+                               q(out.file("old.spt")) + " -o " + q(out.file("new.spt")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("tree 'authored': 1 of 1 splits replayed"), std::string::npos) << r.output;
+    const SptDocument back = load_spt(out.file("new.spt"));
+    const SamplingTree* t = back.tree("authored");
+    ASSERT_NE(t, nullptr);
+    ASSERT_NE(t->find(2), nullptr);
+    EXPECT_EQ(t->find(2)->samples, tree.find(2)->samples);
+    EXPECT_EQ(spt_version_for(back), 5u);
+    // A damaged stroke kind: exit 2 naming the file and the byte.
+    std::vector<uint8_t> bytes = encode_spt(doc);
+    // The file ends with the invert stroke (156 bytes, no shape) and the step's pose (empty clip
+    // name, time: 4 + 8 bytes); the stroke's kind byte follows its matrices (128 bytes) and 3 flags.
+    const size_t invert_kind = bytes.size() - 12 - 156 + 128 + 3;
+    ASSERT_EQ(bytes[invert_kind], uint8_t(StrokeKind::Invert));
+    bytes[invert_kind] = 42;
+    reseal(bytes);
+    {
+        std::ofstream f(out.file("bad.spt"), std::ios::binary);
+        f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    }
+    const auto bad = run_command(spt_binary() + " convert " + q(anim_data("bending_bar.glb")) + " --recipe " +
+                                 q(out.file("bad.spt")) + " -o " + q(out.file("new2.spt")));
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("bad.spt: byte "), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("recipe stroke flags 0 0 0 42 are not valid"), std::string::npos) << bad.output;
 }

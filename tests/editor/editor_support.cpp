@@ -61,6 +61,19 @@ EditorFiles write_editor_files(const TempDir& dir) {
     return f;
 }
 
+ViewProjection reference_projection(const editor::ViewWidget& v) {
+    const double dpr = v.devicePixelRatioF();
+    const int w = qRound(v.width() * dpr), h = qRound(v.height() * dpr);
+    const render::Camera& c = v.camera();
+    ViewProjection p;
+    p.view = c.view_matrix();
+    p.projection = c.projection_matrix(float(w) / float(h));
+    p.perspective = c.perspective();
+    p.width = w;
+    p.height = h;
+    return p;
+}
+
 editor::StartOptions test_start(const TempDir& dir) {
     editor::StartOptions o;
     o.autosave_seconds = 0;

@@ -36,6 +36,10 @@ std::unique_ptr<editor::MainWindow> open_editor(const TempDir& dir, const QStrin
 void expect_view_matches_spt_render(editor::ViewWidget& view, const QStringList& input_args, const TempDir& dir,
                                     const std::string& name);
 
+/// A view's projection as a test derives it from the camera and the widget's size (not from the
+/// view's own view_projection(), which is what is being tested).
+ViewProjection reference_projection(const editor::ViewWidget& v);
+
 /// Where the tests write pictures (docs/editor.md uses them): BUILD/test-output/editor.
 std::string editor_output_dir();
 

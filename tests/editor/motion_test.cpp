@@ -70,6 +70,9 @@ TEST(MotionUi, LoadingAMotionColoursEveryViewByContactsAndBadInputKeepsTheDocume
     const auto w = open_figure(dir, &error);
     ASSERT_TRUE(w) << error;
     const std::vector<uint8_t> bytes = w->document().encode();
+    // Coloured by level (colour by node, the default, has hues the heat map's count would take for heat).
+    w->tree_panel().findChild<QComboBox*>("color_by")->setCurrentIndex(0);
+    QCoreApplication::processEvents();
     std::vector<int> before;
     std::vector<QImage> level_pictures;
     for (int i = 0; i < 4; ++i) {

@@ -12,20 +12,6 @@ using namespace spt::test;
 
 namespace {
 
-// The view's projection as the test derives it from the camera and the widget's size.
-ViewProjection reference_projection(const editor::ViewWidget& v) {
-    const double dpr = v.devicePixelRatioF();
-    const int w = qRound(v.width() * dpr), h = qRound(v.height() * dpr);
-    const render::Camera& c = v.camera();
-    ViewProjection p;
-    p.view = c.view_matrix();
-    p.projection = c.projection_matrix(float(w) / float(h));
-    p.perspective = c.perspective();
-    p.width = w;
-    p.height = h;
-    return p;
-}
-
 struct Stroke {
     QPoint from, to;
     SelectionMode mode;

@@ -160,8 +160,31 @@ TEST(overlay, node_colours_are_stable_and_distinct) {
     int same = 0;
     for (NodeId id = 2; id < 64; ++id) same += node_color(id).r == node_color(id + 1).r && node_color(id).g == node_color(id + 1).g;
     EXPECT_EQ(same, 0);
+    // The two children of every split in opposite hues: far apart in colour.
+    for (NodeId id = 1; id < 64; ++id) {
+        const Color a = node_color(2 * id), b = node_color(2 * id + 1);
+        const float d = std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+        EXPECT_GT(d, 0.5f) << "children of node " << id << " look alike";
+    }
     EXPECT_EQ(level_color(0).r, level_color(10).r);
     EXPECT_NE(level_color(0).r, level_color(1).r);
+}
+
+TEST(overlay, an_inner_node_keeps_its_childrens_colours_and_hidden_ranges_are_cut) {
+    const SphereSetHandle set{7};
+    // An active node: one flat highlight colour; an inner one: its spheres' own colours, undimmed.
+    const auto leaf = highlighted_node(set, 100, {40, 20}, true);
+    ASSERT_EQ(leaf.size(), 3u);
+    EXPECT_TRUE(leaf.back().color.has_value());
+    const auto inner = highlighted_node(set, 100, {40, 20}, true, true);
+    ASSERT_EQ(inner.size(), 3u);
+    EXPECT_FALSE(inner.back().color.has_value());
+    EXPECT_EQ(inner.back().fade, 0.0f);
+    // Items cut to the shown ranges: the dimmed [0, 40) and [60, 100) and the node [40, 60) less [30, 50).
+    const auto cut = clip_to_ranges(leaf, {{0, 30}, {50, 50}});
+    std::vector<std::pair<uint32_t, uint32_t>> ranges;
+    for (const SphereItem& i : cut) ranges.emplace_back(i.first, i.count);
+    EXPECT_EQ(ranges, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 30}, {60, 40}, {50, 10}}));
 }
 
 TEST(overlay, sphere_pairs_by_brute_force) {

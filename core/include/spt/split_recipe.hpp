@@ -38,12 +38,37 @@ enum class SelectionMode {
     Subtract, ///< removed from the selection
 };
 
-/// One rectangle of a selection: where it was drawn and how it combined.
+/// What a stroke of a selection is: a region drawn in a view (rectangle, lasso, brush), a pick
+/// (linked), or an operation on the selection so far (invert, grow, shrink). Stored as one byte
+/// (.spt version 5 for any kind but Rect); the values never change meaning.
+enum class StrokeKind : uint8_t {
+    Rect = 0,   ///< the rectangle `rect`
+    Lasso = 1,  ///< the polygon `points` (even-odd inside)
+    Brush = 2,  ///< a circle of `radius` pixels moved along the path `points`
+    Linked = 3, ///< the mesh-connected part holding the sample nearest `pick`
+    Invert = 4, ///< the node's samples not selected
+    Grow = 5,   ///< the selection and its neighbours (one ring of mesh adjacency)
+    Shrink = 6, ///< the selection less the samples with an unselected neighbour
+};
+/// The largest StrokeKind value.
+constexpr uint8_t kLastStrokeKind = 6;
+
+/// One stroke of a selection: where it was drawn and how it combined.
 struct RecipeStroke {
     ViewProjection view;          ///< the view's matrices and framebuffer size, pixels
-    PixelRect rect;               ///< the rectangle, GL window pixels of that framebuffer
+    PixelRect rect;               ///< the rectangle (kind Rect), GL window pixels of that framebuffer
     SelectionMode mode = SelectionMode::Replace; ///< how it combined with the selection before it
     bool visible_only = false;    ///< depth-tested against the mesh (spt/selection.hpp)
+    StrokeKind kind = StrokeKind::Rect; ///< what the stroke is (rectangle unless given)
+    std::vector<Eigen::Vector2f> points = {}; ///< Lasso: polygon vertices; Brush: path; GL window pixels
+    float radius = 0;             ///< Brush: circle radius, GL window pixels
+    Eigen::Vector3d pick = Eigen::Vector3d::Zero(); ///< Linked: object-frame point (the picked sample's)
+    /// True for the kinds that change the selection without a view (invert, grow, shrink).
+    bool is_operation() const { return kind == StrokeKind::Invert || kind == StrokeKind::Grow || kind == StrokeKind::Shrink; }
+    /// True for the kinds that read mesh adjacency (linked, grow, shrink).
+    bool needs_adjacency() const {
+        return kind == StrokeKind::Linked || kind == StrokeKind::Grow || kind == StrokeKind::Shrink;
+    }
 };
 
 /// The pose of an animated mesh the strokes were drawn at (docs/deforming.md): the samples

@@ -31,9 +31,9 @@ struct SptDocument {
 
 /// Newest format version this build reads and writes. encode_spt writes the oldest version
 /// that holds the document (1 when the local origin is zero and no tree has a recipe, 2 with
-/// a local origin, 3 with authoring recipes, 4 when a recipe step was made at a clip's pose, 6 when
-/// a tree records a build from motion; version 5 is not written by this build),
-/// so an old file saved again without edits stays byte-identical.
+/// a local origin, 3 with authoring recipes, 4 when a recipe step was made at a clip's pose, 5 when a
+/// recipe has a lasso, brush, linked, invert, grow or shrink stroke, 6 when a tree records a build
+/// from motion), so an old file saved again without edits stays byte-identical.
 constexpr uint32_t kSptVersion = 6;
 
 /// The format version encode_spt writes for `doc`.

@@ -5,6 +5,7 @@
 #include "io/motion_codec.hpp"
 #include "base/parallel.hpp"
 #include "sampling/encoding.hpp"
+#include <algorithm>
 #include <zlib.h>
 #include <array>
 #include <cerrno>
@@ -58,11 +59,9 @@ std::string SptDocument::validate() const {
 
 uint32_t spt_version_for(const SptDocument& doc) {
     uint32_t version = doc.samples.origin.isZero(0) ? 1 : 2;
-    for (const auto& t : doc.trees)
-        if (!t.motion_builds().empty()) return detail::kMotionBuildsVersion;
     for (const auto& t : doc.trees) {
-        if (detail::has_poses(t.recipe())) return 4;
-        if (!t.recipe().empty()) version = 3;
+        version = std::max(version, detail::recipe_version(t.recipe()));
+        if (!t.motion_builds().empty()) version = std::max(version, detail::kMotionBuildsVersion);
     }
     return version;
 }
@@ -139,7 +138,7 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
     std::memcpy(&body_crc, bytes.data() + 24, 4);
     std::memcpy(&header_crc, bytes.data() + 28, 4);
     if (crc(bytes.data(), 28) != header_crc) r.fail(28, "header checksum mismatch (corrupt header)");
-    if (version < 1 || version > kSptVersion || version == 5)
+    if (version < 1 || version > kSptVersion)
         r.fail(8, "format version " + std::to_string(version) + " is not supported (this build reads versions 1 to " +
                       std::to_string(kSptVersion) + ")");
     if (flags != 0) r.fail(12, "unknown flags " + std::to_string(flags));
@@ -244,12 +243,10 @@ SptDocument decode_spt(const std::vector<uint8_t>& bytes, const std::string& pat
         doc.trees.push_back(std::move(tree));
     }
     // Each document has one encoding: the oldest version that holds it.
-    if (version == 3 && spt_version_for(doc) != 3)
-        r.fail(8, "a version 3 file without recipe steps (written as version 1 or 2)");
-    if (version == 4 && spt_version_for(doc) != 4)
-        r.fail(8, "a version 4 file without a recipe step made at a clip's pose (written as version 3 or older)");
-    if (version == detail::kMotionBuildsVersion && spt_version_for(doc) != version)
-        r.fail(8, "a version 6 file without a build from motion (written as version 4 or older)");
+    if (version >= 3 && spt_version_for(doc) != version)
+        r.fail(8, version == detail::kMotionBuildsVersion
+                      ? "a version 6 file without a build from motion (written as version 5 or older)"
+                      : detail::recipe_version_mismatch(version));
     if (r.remaining() != 0) r.fail(r.offset(), std::to_string(r.remaining()) + " bytes of unexpected trailing data");
     return doc;
 }

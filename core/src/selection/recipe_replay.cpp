@@ -4,6 +4,7 @@
 #include "selection/step_poses.hpp"
 #include "spt/selection.hpp"
 #include "spt/spt_file.hpp"
+#include <optional>
 
 namespace spt {
 namespace {
@@ -14,6 +15,11 @@ SamplingTree replay(const SamplingTree& authored, const SampleSet& samples, deta
     ReplayReport& out = report ? *report : local;
     SamplingTree tree = unsplit_tree(authored.name(), samples);
     const auto& steps = authored.recipe();
+    // Linked, grow and shrink read the mesh's adjacency: made once, only for a recipe that has them.
+    std::optional<SampleAdjacency> adjacency;
+    for (const RecipeStep& step : steps)
+        for (const RecipeStroke& s : step.strokes)
+            if (s.needs_adjacency() && !adjacency) adjacency.emplace(poses.bind_mesh(), samples);
     for (size_t k = 0; k < steps.size(); ++k) {
         const RecipeStep& step = steps[k];
         const std::string which = "step " + std::to_string(k + 1) + " (split of node " + std::to_string(step.node) + ")";
@@ -24,7 +30,7 @@ SamplingTree replay(const SamplingTree& authored, const SampleSet& samples, deta
         }
         const detail::PosedSamples at = poses.at(step.pose, "tree '" + authored.name() + "' " + which);
         // The tree's geometry stays the bind pose's: only where the strokes find the samples moves.
-        const EditResult r = tree.split(step.node, select_strokes(at.points, tree, step, at.mesh), samples);
+        const EditResult r = tree.split(step.node, select_strokes(at.points, tree, step, at.mesh, adjacency ? &*adjacency : nullptr), samples);
         if (!r) {
             out.skipped.push_back(which + ": " + r.reason);
             continue;

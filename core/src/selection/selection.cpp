@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
+#include <string>
 
 namespace spt {
 
@@ -154,21 +156,173 @@ std::vector<uint32_t> visible_samples_in_rect(const SamplePoints& samples, const
 
 float visible_tolerance(const TriangleMesh& mesh) { return float(0.005 * mesh.diagonal()); }
 
+namespace {
+
+void check_window_points(const std::vector<Eigen::Vector2f>& points, const char* what) {
+    for (size_t k = 0; k < points.size(); ++k)
+        if (!points[k].allFinite())
+            throw Error(ErrorKind::Usage, std::string("selection: ") + what + " point " + std::to_string(k) +
+                                              " is not finite");
+}
+
+PixelRect bounds_of(const std::vector<Eigen::Vector2f>& points, float grow) {
+    PixelRect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (const Eigen::Vector2f& p : points) {
+        r.x0 = std::min(r.x0, p.x()), r.y0 = std::min(r.y0, p.y());
+        r.x1 = std::max(r.x1, p.x()), r.y1 = std::max(r.y1, p.y());
+    }
+    if (points.empty()) return {};
+    return {r.x0 - grow, r.y0 - grow, r.x1 + grow, r.y1 + grow};
+}
+
+// The samples below `id` inside `box` for which `inside(window x, y)` holds, visible only with a
+// depth map: the rectangle's test with another shape inside the box.
+template <class Inside>
+std::vector<uint32_t> samples_in_shape(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
+                                       const ViewProjection& view, const PixelRect& window, const DepthMap* depth,
+                                       float tolerance, const Inside& inside) {
+    const Box box(window);
+    const detail::WindowMap map(view);
+    if (!depth)
+        return kept_samples(samples, tree, id, map, [&](const Eigen::Vector3f& w) {
+            return selectable(view, w) & box.contains(w) && inside(w.x(), w.y());
+        });
+    const FarthestAround farthest(*depth, box);
+    return kept_samples(samples, tree, id, map, [&](const Eigen::Vector3f& w) {
+        return selectable(view, w) & box.contains(w) && inside(w.x(), w.y()) &&
+               w.z() <= farthest.at(w.x(), w.y()) + tolerance;
+    });
+}
+
+// Squared distance from (x, y) to the segment a-b, in double so long segments keep their pixels.
+double segment_d2(double x, double y, const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+    const double ax = a.x(), ay = a.y(), dx = double(b.x()) - ax, dy = double(b.y()) - ay;
+    const double len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((x - ax) * dx + (y - ay) * dy) / len2 : 0;
+    t = std::clamp(t, 0.0, 1.0);
+    const double ex = ax + t * dx - x, ey = ay + t * dy - y;
+    return ex * ex + ey * ey;
+}
+
+} // namespace
+
+std::vector<uint32_t> samples_in_polygon(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
+                                         const ViewProjection& view, const std::vector<Eigen::Vector2f>& polygon,
+                                         const DepthMap* depth, float tolerance) {
+    check_window_points(polygon, "lasso");
+    if (polygon.size() < 3) return {};
+    const size_t n = polygon.size();
+    // Even-odd: a horizontal ray to the right crosses the edges an odd number of times.
+    return samples_in_shape(samples, tree, id, view, bounds_of(polygon, 0), depth, tolerance, [&](float x, float y) {
+        bool in = false;
+        for (size_t i = 0, j = n - 1; i < n; j = i++) {
+            const Eigen::Vector2f &a = polygon[i], &b = polygon[j];
+            if ((a.y() > y) != (b.y() > y)) {
+                const double cross = double(b.x() - a.x()) * double(y - a.y()) / double(b.y() - a.y()) + double(a.x());
+                if (double(x) < cross) in = !in;
+            }
+        }
+        return in;
+    });
+}
+
+std::vector<uint32_t> samples_in_brush(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
+                                       const ViewProjection& view, const std::vector<Eigen::Vector2f>& path,
+                                       float radius, const DepthMap* depth, float tolerance) {
+    check_window_points(path, "brush path");
+    if (!std::isfinite(radius) || radius < 0)
+        throw Error(ErrorKind::Usage, "selection: brush radius " + std::to_string(radius) + " is not a finite size >= 0");
+    if (path.empty()) return {};
+    const double r2 = double(radius) * double(radius);
+    return samples_in_shape(samples, tree, id, view, bounds_of(path, radius), depth, tolerance, [&](float x, float y) {
+        if (path.size() == 1) return segment_d2(x, y, path[0], path[0]) <= r2;
+        for (size_t k = 1; k < path.size(); ++k)
+            if (segment_d2(x, y, path[k - 1], path[k]) <= r2) return true;
+        return false;
+    });
+}
+
+PixelRect stroke_window(const RecipeStroke& stroke) {
+    switch (stroke.kind) {
+    case StrokeKind::Lasso: return bounds_of(stroke.points, 0);
+    case StrokeKind::Brush: return bounds_of(stroke.points, stroke.radius);
+    default: return stroke.rect;
+    }
+}
+
+int64_t pick_sample(const SamplePoints& samples, const SamplingTree& tree, NodeId id, const ViewProjection& view,
+                    const Eigen::Vector2f& window, float max_pixels, const DepthMap* depth, float tolerance) {
+    const std::vector<Eigen::Vector2f> circle{window};
+    const std::vector<uint32_t> near = samples_in_brush(samples, tree, id, view, circle, max_pixels, depth, tolerance);
+    const detail::WindowMap map(view);
+    int64_t best = -1;
+    double best_d2 = INFINITY, best_z = INFINITY;
+    for (uint32_t s : near) { // sorted: the first of equals is the lowest index
+        const Eigen::Vector3f w = map(samples.origin + samples.points[s].cast<double>());
+        const double dx = double(w.x()) - window.x(), dy = double(w.y()) - window.y(), d2 = dx * dx + dy * dy;
+        if (d2 < best_d2 || (d2 == best_d2 && double(w.z()) < best_z)) best = s, best_d2 = d2, best_z = w.z();
+    }
+    return best;
+}
+
+int64_t nearest_sample(const SamplePoints& samples, const SamplingTree& tree, NodeId id, const Eigen::Vector3d& p) {
+    int64_t best = -1;
+    double best_d2 = INFINITY;
+    for (uint32_t s : samples_below(tree, id)) {
+        if (s >= samples.points.size())
+            throw Error(ErrorKind::Usage, "selection: " + std::to_string(samples.points.size()) +
+                                              " sample points for a tree over sample " + std::to_string(s));
+        const double d2 = (samples.origin + samples.points[s].cast<double>() - p).squaredNorm();
+        if (d2 < best_d2) best = s, best_d2 = d2;
+    }
+    return best;
+}
+
+std::vector<uint32_t> stroke_hits(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
+                                  const RecipeStroke& stroke, const TriangleMesh* mesh,
+                                  const SampleAdjacency* adjacency) {
+    std::optional<DepthMap> depth;
+    float tolerance = 0;
+    if (stroke.visible_only && mesh && !stroke.is_operation() && stroke.kind != StrokeKind::Linked) {
+        depth = render_depth(*mesh, stroke.view, stroke_window(stroke));
+        tolerance = visible_tolerance(*mesh);
+    }
+    const DepthMap* d = depth ? &*depth : nullptr;
+    switch (stroke.kind) {
+    case StrokeKind::Rect:
+        return d ? visible_samples_in_rect(samples, tree, id, stroke.view, stroke.rect, *d, tolerance)
+                 : samples_in_rect(samples, tree, id, stroke.view, stroke.rect);
+    case StrokeKind::Lasso: return samples_in_polygon(samples, tree, id, stroke.view, stroke.points, d, tolerance);
+    case StrokeKind::Brush:
+        return samples_in_brush(samples, tree, id, stroke.view, stroke.points, stroke.radius, d, tolerance);
+    case StrokeKind::Linked: {
+        if (!adjacency) throw Error(ErrorKind::Usage, "selection: select linked needs the mesh's adjacency");
+        const int64_t seed = nearest_sample(samples, tree, id, stroke.pick);
+        if (seed < 0) return {};
+        return linked_samples(*adjacency, tree, id, uint32_t(seed));
+    }
+    default: return {};
+    }
+}
+
 std::vector<uint32_t> apply_stroke(const SamplePoints& samples, const SamplingTree& tree, NodeId id,
                                    const std::vector<uint32_t>& current, const RecipeStroke& stroke,
-                                   const TriangleMesh* mesh) {
-    const std::vector<uint32_t> hits =
-        stroke.visible_only && mesh
-            ? visible_samples_in_rect(samples, tree, id, stroke.view, stroke.rect, render_depth(*mesh, stroke.view, stroke.rect),
-                                      visible_tolerance(*mesh))
-            : samples_in_rect(samples, tree, id, stroke.view, stroke.rect);
-    return combine_selection(current, hits, stroke.mode);
+                                   const TriangleMesh* mesh, const SampleAdjacency* adjacency) {
+    if (stroke.needs_adjacency() && !adjacency)
+        throw Error(ErrorKind::Usage, "selection: linked, grow and shrink need the mesh's adjacency");
+    switch (stroke.kind) {
+    case StrokeKind::Invert: return invert_selection(tree, id, current);
+    case StrokeKind::Grow: return grow_selection(*adjacency, tree, id, current);
+    case StrokeKind::Shrink: return shrink_selection(*adjacency, tree, id, current);
+    default: return combine_selection(current, stroke_hits(samples, tree, id, stroke, mesh, adjacency), stroke.mode);
+    }
 }
 
 std::vector<uint32_t> select_strokes(const SamplePoints& samples, const SamplingTree& tree, const RecipeStep& step,
-                                     const TriangleMesh* mesh) {
+                                     const TriangleMesh* mesh, const SampleAdjacency* adjacency) {
     std::vector<uint32_t> selection;
-    for (const RecipeStroke& s : step.strokes) selection = apply_stroke(samples, tree, step.node, selection, s, mesh);
+    for (const RecipeStroke& s : step.strokes)
+        selection = apply_stroke(samples, tree, step.node, selection, s, mesh, adjacency);
     return selection;
 }
 

@@ -29,6 +29,8 @@ public:
     /// The samples and the mesh at `pose`, valid until the next call; `which` names the step in
     /// the Error(BadInput) for a clip the mesh lacks.
     PosedSamples at(const RecipePose& pose, const std::string& which);
+    /// The mesh at the bind pose (its topology is every pose's).
+    const TriangleMesh& bind_mesh() const { return mesh_; }
 
 private:
     const SampleSet& samples_;

@@ -12,7 +12,7 @@ namespace spt::render {
 /// How sampling spheres are coloured.
 enum class ColorBy {
     Level, ///< by the depth of the sphere's active node (a fixed palette, cycled)
-    Node,  ///< by a hash of the active node's paper id
+    Node,  ///< by the active node's paper id: siblings in opposite hues (the default everywhere)
     /// by a count per sample (a heat map: MotionRecording::contact_steps, how many steps of a recorded
     /// motion each sample's sphere was in contact), through heat_scale and heat_color
     Contacts,
@@ -49,7 +49,8 @@ std::vector<HeatLegendRow> heat_legend(const HeatScale& scale, const std::vector
 
 /// Colour of tree depth `depth` (root 0) in the level palette.
 Color level_color(int depth);
-/// Stable colour of a node id (hashed hue).
+/// Stable colour of a node id: the left child of a split (2i) takes a hue hashed from its parent's
+/// id, the right child (2i + 1) the opposite hue, so the two halves of every split contrast.
 Color node_color(NodeId id);
 /// Colour used for the highlighted node (opaque).
 Color highlight_color();
@@ -73,16 +74,28 @@ struct SphereRange {
 /// no such node.
 SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id);
 
+/// The ranges of sampling_spheres() (`set_size` spheres) left shown when the subtrees of the nodes
+/// `hidden` are hidden: the complement of their ranges, in order, disjoint; ids the tree lacks hide nothing.
+std::vector<SphereRange> shown_ranges(const CompactTree& compact, const SamplingTree& tree,
+                                      const std::vector<NodeId>& hidden, uint32_t set_size);
+
+/// `items` cut to the sphere ranges `shown` (in order, disjoint): each item's part inside them.
+std::vector<SphereItem> clip_to_ranges(const std::vector<SphereItem>& items, const std::vector<SphereRange>& shown);
+
 /// How much the spheres of nodes that are not highlighted are faded (SphereItem::fade).
 constexpr float kDimmedFade = 0.7f;
 
 /// The sphere items of set `set` (sampling_spheres()) with node range `node` highlighted:
 /// with `show_all`, every sphere dimmed first (unless the node holds them all), then the
-/// node's spheres in the highlight colour; without, the node's spheres alone. What the
-/// editor's views and `spt render --overlay node` draw. With `own_colors` (a heat map, whose
-/// colours are the information) the node's spheres keep their own colours, the rest dimmed.
+/// node's spheres in the highlight colour; without, the node's spheres alone. With `own_colors`
+/// (a heat map, whose colours are the information, or an inner node: its leaves' colours tell its
+/// children apart) the node's spheres keep their own colours, undimmed, the rest dimmed. What the
+/// editor's views and `spt render --overlay node` draw.
 std::vector<SphereItem> highlighted_node(SphereSetHandle set, uint32_t set_size, SphereRange node, bool show_all,
                                          bool own_colors = false);
+
+/// True when node `id` of `tree` is an inner node (split): highlighted_node's `own_colors`.
+bool is_inner_node(const SamplingTree& tree, NodeId id);
 
 /// Bounding spheres of node `id` and of its descendants down to `levels` levels
 /// below it (0: the node alone), moved from the tree's local frame into the object frame
