@@ -4,6 +4,7 @@
 #include "spt/error.hpp"
 #include "spt/motion_tree.hpp"
 #include "spt/spt_file.hpp"
+#include "spt_reseal.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
 
@@ -131,4 +132,49 @@ TEST(MotionTree, AMergeDropsTheBuildsUnderTheMergedNode) {
     tree.add_motion_build({1, "walking.json", "walker", 100, 8, 0});
     ASSERT_TRUE(tree.merge(1, w.doc->samples));
     EXPECT_TRUE(tree.motion_builds().empty());
+}
+
+TEST(MotionTree, AFileWithStrokesOfVersion5AndABuildFromMotionIsVersion6AndKeepsBoth) {
+    const Walk& w = walk();
+    SptDocument doc = *w.doc;
+    SamplingTree tree = unsplit_tree("edited", doc.samples);
+    // A split whose recipe step is an invert stroke (a version 5 kind), then a build from motion
+    // under its right child.
+    std::vector<uint32_t> upper;
+    for (uint32_t i = 0; i < doc.samples.size(); ++i)
+        if (doc.samples.position(i).y() > 1) upper.push_back(i);
+    ASSERT_TRUE(tree.split(1, upper, doc.samples));
+    RecipeStroke invert;
+    invert.kind = StrokeKind::Invert;
+    tree.add_recipe_step(RecipeStep{1, {invert}});
+    ASSERT_TRUE(build_motion_subtree(tree, 3, doc.samples, w.rec));
+    tree.add_motion_build({3, "walking.json", "walker", 100, 8, 0});
+    doc.trees = {tree};
+    EXPECT_EQ(spt_version_for(doc), 6u);
+    const std::vector<uint8_t> bytes = encode_spt(doc);
+    const SptDocument back = decode_spt(bytes, "both.spt");
+    const SamplingTree& t = back.trees.front();
+    ASSERT_EQ(t.recipe().size(), 1u);
+    EXPECT_EQ(t.recipe()[0].strokes.at(0).kind, StrokeKind::Invert);
+    ASSERT_EQ(t.motion_builds().size(), 1u);
+    EXPECT_EQ(t.motion_builds()[0].after_steps, 1u);
+    EXPECT_EQ(encode_spt(back), bytes);
+    // A document without a build from motion labelled version 6 (and a zero build count appended to
+    // each tree, as version 6 would read it) is refused: one encoding a document.
+    SptDocument plain = *w.doc;
+    SamplingTree stepped = unsplit_tree("edited", plain.samples);
+    ASSERT_TRUE(stepped.split(1, upper, plain.samples));
+    stepped.add_recipe_step(RecipeStep{1, {invert}});
+    plain.trees = {stepped};
+    ASSERT_EQ(spt_version_for(plain), 5u);
+    std::vector<uint8_t> relabelled = encode_spt(plain);
+    relabelled[8] = 6;
+    relabelled.insert(relabelled.end(), 4, 0);
+    test::reseal(relabelled);
+    try {
+        decode_spt(relabelled, "relabelled.spt");
+        FAIL() << "accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("version 6 file without a build from motion"), std::string::npos) << e.what();
+    }
 }
