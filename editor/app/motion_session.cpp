@@ -4,9 +4,6 @@
 #include "spt/scene.hpp"
 #include <QFile>
 #include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QPointer>
 #include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
@@ -14,18 +11,21 @@
 namespace spt::editor {
 
 SceneObjects read_scene_objects(const QString& path) {
+    // Core's parser (no models loaded): the same checks and messages as the run the motion makes.
     SceneObjects out;
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) return out.error = path + ": cannot open the scene: " + file.errorString(), out;
-    QJsonParseError parse{};
-    const QJsonDocument json = QJsonDocument::fromJson(file.read(64 << 20), &parse);
-    if (parse.error != QJsonParseError::NoError)
-        return out.error = QString("%1: not a scene file: %2 at byte %3").arg(path, parse.errorString()).arg(parse.offset), out;
-    for (const QJsonValue& v : json.object().value("objects").toArray()) {
-        const QJsonObject o = v.toObject();
-        out.names.push_back(o.value("name").toString());
-        out.models.push_back(QFileInfo(o.value("model").toString()).fileName() + " " +
-                             QFileInfo(o.value("mesh").toString()).fileName());
+    const QByteArray text = file.read(64 << 20);
+    try {
+        const Scene scene = parse_scene(text.toStdString(), path.toStdString(),
+                                        QFileInfo(path).absolutePath().toStdString());
+        for (const SceneObject& o : scene.objects) {
+            out.names.push_back(QString::fromStdString(o.name));
+            out.models.push_back(QFileInfo(QString::fromStdString(o.model_path)).fileName() + " " +
+                                 QFileInfo(QString::fromStdString(o.mesh_path)).fileName());
+        }
+    } catch (const Error& e) {
+        return out.error = QString::fromStdString(e.what()), out;
     }
     if (out.names.isEmpty()) out.error = path + ": the scene has no objects";
     return out;

@@ -19,7 +19,8 @@ struct SceneObjects {
     QStringList models; ///< each object's "model" and "mesh" file names (basenames), space-separated
     QString error;      ///< non-empty: the file could not be read (names the file)
 };
-/// Reads the object list of scene file `path` (names only: load_scene loads the scene itself).
+/// Reads the object list of scene file `path` with core's parse_scene (models not loaded: load_scene
+/// loads them when the motion runs); a bad scene gives core's message.
 SceneObjects read_scene_objects(const QString& path);
 /// The object of `objects` whose model or mesh file is the document's (`mesh_name`, the file the
 /// samples were taken from, or `document_file`, the opened .spt); -1 if none.

@@ -139,7 +139,7 @@ MotionRecording record_motion(const Scene& scene, const std::string& object, con
         explicit Marks(size_t n) : stamp(n, 0), counts(n, 0), gap(n, std::numeric_limits<float>::infinity()) {}
     };
     // Step k's samples against its partners (models as `objects` hold them now); its reach into `reach`.
-    auto mark_step = [&](Marks& m, const std::vector<SceneObject>& objects, int k, MotionStep& st, MotionReach* reach) {
+    auto mark_step = [&](Marks& m, const std::vector<SceneObject>& objects, int k, const MotionStep& st, MotionReach* reach) {
         const CollisionModel& mine = *objects[index].model;
         for (const MotionPartner& p : st.partners) {
             const CollisionModel& theirs = *objects[p.object].model;
