@@ -126,7 +126,7 @@ CostPanel::CostPanel(EditorDocument& doc, QWidget* parent) : QWidget(parent), do
     motion_table_->setObjectName("cost_motion_table");
     motion_table_->setHorizontalHeaderLabels({"edited", "auto", "motion"});
     motion_table_->horizontalHeaderItem(2)->setToolTip("build_motion_tree over the same samples, for the loaded motion");
-    motion_table_->setVerticalHeaderLabels({"median µs", "node pairs", "sphere tests"});
+    motion_table_->setVerticalHeaderLabels({"median µs a step", "node pairs a query", "sphere tests a query"});
     motion_table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     motion_table_->verticalHeader()->setDefaultSectionSize(motion_table_->fontMetrics().height() + 6);
     motion_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
