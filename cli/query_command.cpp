@@ -5,6 +5,7 @@
 #include "spt/convert.hpp"
 #include "spt/error.hpp"
 #include "spt/query.hpp"
+#include "spt/query_batch.hpp"
 #include "spt/response.hpp"
 #include <algorithm>
 #include <chrono>
@@ -22,6 +23,7 @@ namespace {
 struct QueryArgs {
     std::string a, b, poses, output, level = "spheres", mode = "any", mesh_a, mesh_b, tree, backtrack = "exact";
     int repeat = 5;
+    int threads = 1; // poses at once; 1 keeps each pose's ns what one thread alone takes
     bool culling = false, surfaces = false;
     double cull_angle = 60;
 };
@@ -71,17 +73,20 @@ int run_query(const QueryArgs& args) {
     deepest.mode = QueryMode::Deepest;
     if (deepest.level == QueryLevel::Exact) deepest.level = QueryLevel::Spheres; // depth is the sphere model's
     const BacktrackRule rule = args.backtrack == "paper" ? BacktrackRule::Paper : BacktrackRule::Exact;
-    std::vector<int64_t> times(size_t(std::max(1, args.repeat)));
+    // Every pose in one batch (core's query_batch: the same answers on any --threads); the
+    // depth and backtrack of the colliding ones after it.
+    std::vector<Pose> b_in_a;
+    b_in_a.reserve(poses.size());
+    for (const PoseLine& pl : poses) b_in_a.push_back(pl.pose);
+    BatchOptions batch;
+    batch.threads = args.threads;
+    batch.repeat = std::max(1, args.repeat);
+    std::vector<int64_t> times;
+    const std::vector<QueryResult> results = query_batch(a->model, b->model, b_in_a, o, batch, &times);
     for (size_t i = 0; i < poses.size(); ++i) {
         const PoseLine& pl = poses[i];
-        QueryResult r;
-        for (auto& ns : times) {
-            const auto t0 = std::chrono::steady_clock::now();
-            r = collide_relative(a->model, b->model, pl.pose, o, scratch);
-            ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
-        }
-        std::nth_element(times.begin(), times.begin() + long(times.size() / 2), times.end());
-        const int64_t median = times[times.size() / 2];
+        const QueryResult& r = results[i];
+        const int64_t median = times[i];
         double depth = 0, back = 0;
         if (r.collide) {
             const QueryResult d = collide_relative(a->model, b->model, pl.pose, deepest, scratch);
@@ -111,6 +116,9 @@ Action add_query_command(CLI::App& app) {
     c->add_option("--level", a->level, "bounds | spheres | exact")->check(CLI::IsMember({"bounds", "spheres", "exact"}));
     c->add_option("--mode", a->mode, "any | all | deepest")->check(CLI::IsMember({"any", "all", "deepest"}));
     c->add_option("--repeat", a->repeat, "Repeats per pose; ns is their median")->check(CLI::Range(1, 1000000));
+    c->add_option("--threads", a->threads,
+                  "Poses queried at once (default 1, so that ns is one thread's time; the answers are the same for any count)")
+        ->check(CLI::Range(1, 1024));
     c->add_option("-o,--output", a->output, "CSV file (default: stdout)");
     c->add_option("--mesh-a", a->mesh_a, "Mesh of A when A is a .spt file (for --level exact)");
     c->add_option("--mesh-b", a->mesh_b, "Mesh of B when B is a .spt file (for --level exact)");

@@ -63,6 +63,31 @@ TEST_F(CliQuery, OutputHasExactlyTheSpecifiedHeaderAndOneRowPerPose) {
     EXPECT_FALSE(std::getline(lines, extra) && !extra.empty());
 }
 
+TEST_F(CliQuery, ThreadsChangeNothingButTheTimes) {
+    // 300 poses along a line through the copy: some collide, some not; --threads 3 runs them as one
+    // batch on three threads (query_batch) and writes the same rows but for the ns column.
+    std::string text;
+    for (int i = 0; i < 300; ++i) text += std::to_string(-3.0 + 0.02 * i) + " 0.1 0 0.9238795 0 0.3826834 0 1 0 0\n";
+    const auto poses = write("line.txt", text);
+    const Outcome one = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --repeat 1");
+    const Outcome three = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --repeat 1 --threads 3");
+    ASSERT_EQ(one.code, 0) << one.err;
+    ASSERT_EQ(three.code, 0) << three.err;
+    auto without_ns = [](const std::string& csv) {
+        std::istringstream lines(csv);
+        std::vector<std::string> rows;
+        for (std::string row; std::getline(lines, row);) rows.push_back(row.substr(0, row.rfind(',')));
+        return rows;
+    };
+    const std::vector<std::string> a = without_ns(one.out), b = without_ns(three.out);
+    ASSERT_EQ(a.size(), 301u);
+    EXPECT_EQ(a, b);
+    size_t collide = 0;
+    for (size_t i = 1; i < a.size(); ++i) collide += a[i].find(",1,") != std::string::npos;
+    EXPECT_GT(collide, 10u);
+    EXPECT_LT(collide, 290u);
+}
+
 TEST_F(CliQuery, BadPoseLineIsExitTwoNamingTheLine) {
     const auto poses = write("bad.txt", "# first\n0 0 0 1 0 0 0\n0 0 zero 1 0 0 0\n");
     const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string());

@@ -17,6 +17,7 @@
 #include "spt/pose.hpp"
 #include "spt/pose_file.hpp"
 #include "spt/query.hpp"
+#include "spt/query_batch.hpp"
 #include "spt/query_scratch.hpp"
 #include "spt/recipe.hpp"
 #include "spt/response.hpp"
