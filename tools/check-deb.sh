@@ -21,12 +21,14 @@ rm -f "$BUILD"/spt_*.deb
 (cd "$BUILD" && cpack -G DEB > "$work/cpack.log") || { cat "$work/cpack.log"; exit 1; }
 [[ -f $deb ]] || { echo "check-deb: cpack made no $deb" >&2; ls "$BUILD"/*.deb >&2 || true; exit 1; }
 echo "check-deb: $(basename "$deb"): $(dpkg-deb -f "$deb" Depends)"
-# Everything the issue lists is in the package.
+# Everything the issue lists is in the package. The listing is read whole first: grep -q stops at
+# its first match, and under pipefail the listing's SIGPIPE would fail the check.
+dpkg-deb -c "$deb" | awk '{ print $6 }' > "$work/contents.txt"
 for f in ./usr/bin/spt ./usr/bin/spt-editor ./usr/bin/spt-viewer ./usr/include/spt/spt.hpp \
          ./usr/lib/cmake/spt/sptConfig.cmake ./usr/share/applications/spt-editor.desktop \
          ./usr/share/applications/spt-viewer.desktop ./usr/share/icons/hicolor/scalable/apps/spt-editor.svg \
          ./usr/share/doc/spt/README.md; do
-  dpkg-deb -c "$deb" | awk '{ print $6 }' | grep -qx "$f" || { echo "check-deb: $f is not in the package" >&2; exit 1; }
+  grep -qx "$f" "$work/contents.txt" || { echo "check-deb: $f is not in the package" >&2; exit 1; }
 done
 apt-get install -y -q "$deb" > "$work/apt.log" 2>&1 || { cat "$work/apt.log"; exit 1; }
 got=$(cd / && spt --version)
