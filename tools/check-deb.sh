@@ -40,7 +40,8 @@ grep -q "spt_DIR:PATH=/usr/lib/cmake/spt" "$work/build/CMakeCache.txt" ||
   { echo "check-deb: the examples did not find the installed package" >&2; grep spt_DIR "$work/build/CMakeCache.txt" >&2; exit 1; }
 cmake --build "$work/build" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 "$work/build/convert_and_print" "$SRC/resources/meshes/figure.obj" "$work/figure.spt" > /dev/null
-"$work/build/query_two_trees" "$work/figure.spt" "$work/figure.spt" 0.05 0 0 1 0 0 0 1 0 0 | grep -q "any: collide" ||
+"$work/build/query_two_trees" "$work/figure.spt" "$work/figure.spt" 0.05 0 0 1 0 0 0 1 0 0 > "$work/query.txt"
+grep -q "any: collide" "$work/query.txt" ||
   { echo "check-deb: the example's query did not find the overlap" >&2; exit 1; }
 desktop-file-validate /usr/share/applications/spt-editor.desktop /usr/share/applications/spt-viewer.desktop
 echo "check-deb: installed $(basename "$deb"), spt --version and an outside find_package(spt) project work"
