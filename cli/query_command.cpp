@@ -3,11 +3,13 @@
 #include "number_checks.hpp"
 #include "spt/pose_file.hpp"
 #include "spt/convert.hpp"
+#include "spt/distance.hpp"
 #include "spt/error.hpp"
 #include "spt/query.hpp"
 #include "spt/query_batch.hpp"
 #include "spt/response.hpp"
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cerrno>
 #include <cmath>
@@ -26,7 +28,35 @@ struct QueryArgs {
     int threads = 1; // poses at once; 1 keeps each pose's ns what one thread alone takes
     bool culling = false, surfaces = false;
     double cull_angle = 60;
+    double max_distance = std::numeric_limits<double>::infinity(); // --mode distance
 };
+
+// --mode distance: pose,collide,distance,ax,ay,az,bx,by,bz,node_pairs,sphere_tests,ns (points in A's
+// frame; a distance beyond --max-distance is `inf` with empty points).
+void write_distances(std::FILE* out, const CollisionModel& a, const CollisionModel& b, const std::vector<PoseLine>& poses,
+                     const DistanceOptions& d, int repeat, const std::string& pose_file) {
+    std::fprintf(out, "pose,collide,distance,ax,ay,az,bx,by,bz,node_pairs,sphere_tests,ns\n");
+    QueryScratch scratch;
+    std::vector<int64_t> runs(static_cast<size_t>(std::max(1, repeat)));
+    for (size_t i = 0; i < poses.size(); ++i) {
+        DistanceResult r;
+        for (int64_t& ns : runs) {
+            const auto t0 = std::chrono::steady_clock::now();
+            r = distance_relative(a, b, poses[i].pose, d, scratch);
+            ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+        }
+        std::nth_element(runs.begin(), runs.begin() + long(runs.size() / 2), runs.end());
+        if (!r.beyond && !std::isfinite(r.distance))
+            throw Error(ErrorKind::BadInput, pose_file + ":" + std::to_string(poses[i].line) + ": the query gave a non-finite distance");
+        if (r.beyond)
+            std::fprintf(out, "%zu,0,inf,,,,,,,", i);
+        else
+            std::fprintf(out, "%zu,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,", i, r.collide ? 1 : 0, r.distance, r.point_a.x(),
+                         r.point_a.y(), r.point_a.z(), r.point_b.x(), r.point_b.y(), r.point_b.z());
+        std::fprintf(out, "%llu,%llu,%lld\n", (unsigned long long)r.counters.node_pairs,
+                     (unsigned long long)r.counters.sphere_tests, (long long)runs[runs.size() / 2]);
+    }
+}
 
 // A document and, when one is known, its mesh; the model is built over both.
 struct Loaded {
@@ -49,6 +79,8 @@ std::unique_ptr<Loaded> load(const std::string& path, const std::string& mesh_pa
 }
 
 int run_query(const QueryArgs& args) {
+    if (std::isfinite(args.max_distance) && args.mode != "distance")
+        throw Error(ErrorKind::Usage, "--max-distance goes with --mode distance");
     QueryOptions o;
     o.level = args.level == "bounds" ? QueryLevel::Bounds : args.level == "exact" ? QueryLevel::Exact : QueryLevel::Spheres;
     o.mode = args.mode == "all" ? QueryMode::All : args.mode == "deepest" ? QueryMode::Deepest : QueryMode::Any;
@@ -66,6 +98,14 @@ int run_query(const QueryArgs& args) {
     if (!args.output.empty()) {
         out = std::fopen(args.output.c_str(), "w");
         if (!out) throw Error(ErrorKind::CannotWrite, args.output + ": cannot open for writing: " + std::strerror(errno));
+    }
+    if (args.mode == "distance") {
+        DistanceOptions d;
+        d.level = o.level;
+        d.max_distance = args.max_distance;
+        write_distances(out, a->model, b->model, poses, d, args.repeat, args.poses);
+        if (out != stdout && std::fclose(out) != 0) throw Error(ErrorKind::CannotWrite, args.output + ": write failed");
+        return 0;
     }
     std::fprintf(out, "pose,collide,depth,backtrack,node_pairs,sphere_tests,ns\n");
     QueryScratch scratch;
@@ -114,7 +154,10 @@ Action add_query_command(CLI::App& app) {
     c->add_option("b", a->b, "Object B: .spt file or mesh")->required();
     c->add_option("--poses", a->poses, "Poses of B in A's frame: 'tx ty tz qw qx qy qz [dx dy dz]' a line")->required();
     c->add_option("--level", a->level, "bounds | spheres | exact")->check(CLI::IsMember({"bounds", "spheres", "exact"}));
-    c->add_option("--mode", a->mode, "any | all | deepest")->check(CLI::IsMember({"any", "all", "deepest"}));
+    c->add_option("--mode", a->mode, "any | all | deepest | distance (the gap, or minus the deepest overlap, and its points)")
+        ->check(CLI::IsMember({"any", "all", "deepest", "distance"}));
+    c->add_option("--max-distance", a->max_distance, "With --mode distance: gaps beyond this are written as inf")
+        ->check(finite_in(std::numeric_limits<double>::min(), std::numeric_limits<double>::max(), "greater than 0"));
     c->add_option("--repeat", a->repeat, "Repeats per pose; ns is their median")->check(CLI::Range(1, 1000000));
     c->add_option("--threads", a->threads,
                   "Poses queried at once (default 1, so that ns is one thread's time; the answers are the same for any count)")

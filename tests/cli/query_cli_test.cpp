@@ -88,6 +88,26 @@ TEST_F(CliQuery, ThreadsChangeNothingButTheTimes) {
     EXPECT_LT(collide, 290u);
 }
 
+TEST_F(CliQuery, DistanceModeWritesTheGapAndItsPointsAndInfBeyondTheMaximum) {
+    const auto poses = write("apart.txt", "5 0 0 1 0 0 0\n0.2 0 0 1 0 0 0\n40 0 0 1 0 0 0\n");
+    const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() +
+                          " --mode distance --max-distance 10 --repeat 1");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string header, apart, overlapping, far;
+    std::getline(lines, header), std::getline(lines, apart), std::getline(lines, overlapping), std::getline(lines, far);
+    EXPECT_EQ(header, "pose,collide,distance,ax,ay,az,bx,by,bz,node_pairs,sphere_tests,ns");
+    EXPECT_EQ(apart.rfind("0,0,", 0), 0u) << apart;
+    const double gap = std::stod(apart.substr(4, apart.find(',', 4) - 4));
+    EXPECT_GT(gap, 0);
+    EXPECT_LT(gap, 5);
+    EXPECT_EQ(overlapping.rfind("1,1,-", 0), 0u) << overlapping; // overlapping copies: minus the depth
+    EXPECT_EQ(far.rfind("2,0,inf,,,,,,,", 0), 0u) << far;        // beyond --max-distance
+    EXPECT_EQ(run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --max-distance 1").code, 1)
+        << "--max-distance without --mode distance";
+    EXPECT_EQ(run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --mode distance --max-distance -1").code, 1);
+}
+
 TEST_F(CliQuery, BadPoseLineIsExitTwoNamingTheLine) {
     const auto poses = write("bad.txt", "# first\n0 0 0 1 0 0 0\n0 0 zero 1 0 0 0\n");
     const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string());

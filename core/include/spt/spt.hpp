@@ -9,6 +9,7 @@
 #include "spt/compact_tree.hpp"
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
+#include "spt/distance.hpp"
 #include "spt/error.hpp"
 #include "spt/mesh.hpp"
 #include "spt/motion.hpp"

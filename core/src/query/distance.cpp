@@ -1,0 +1,128 @@
+// Distance between two sampling-sphere models: best-first branch and bound over node pairs,
+// ordered by the gap their bounding spheres leave; overlapping models answer the deepest overlap.
+#include "spt/distance.hpp"
+#include "query/pending_pose.hpp"
+#include "spt/error.hpp"
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+namespace spt {
+namespace {
+
+struct NodePairGap {
+    double gap;     // lower bound of any gap below the pair, model units
+    uint32_t a, b;  // CompactTree node indices
+    bool operator>(const NodePairGap& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
+};
+
+// B's local point in A's local frame (both relative to their models' origins), in double.
+struct FrameBToA {
+    Eigen::Matrix3d r;
+    Eigen::Vector3d t;
+    FrameBToA(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a)
+        : r(b_in_a.rotation.toRotationMatrix()), t(b_in_a.apply(b.origin()) - a.origin()) {}
+    Eigen::Vector3d operator()(const Eigen::Vector3f& p) const { return r * p.cast<double>() + t; }
+};
+
+Eigen::Vector3d centre(const CompactNode& n) { return {n.center[0], n.center[1], n.center[2]}; }
+
+} // namespace
+
+DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                                 const DistanceOptions& options, QueryScratch& scratch) {
+    if (options.level == QueryLevel::Exact)
+        throw Error(ErrorKind::Usage, "distance: level 'exact' is not there yet; use 'spheres' or 'bounds'");
+    if (!(options.max_distance > 0) || !(options.relative_error >= 0 && options.relative_error < 1))
+        throw Error(ErrorKind::Usage, "distance: max_distance must be > 0 and relative_error in [0, 1)");
+    DistanceResult res;
+    // Overlapping: the deepest overlap, as mode deepest finds it.
+    QueryOptions deepest;
+    deepest.level = options.level;
+    deepest.mode = QueryMode::Deepest;
+    deepest.solids = false;
+    const QueryResult hit = collide_relative(a, b, b_in_a, deepest, scratch);
+    res.counters = hit.counters;
+    if (hit.collide) {
+        const Contact& c = hit.deepest;
+        res.collide = true;
+        res.distance = -c.depth;
+        res.point_a = c.point + 0.5 * c.depth * c.normal;
+        res.point_b = c.point - 0.5 * c.depth * c.normal;
+        return res;
+    }
+    detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
+    const CompactTree& ta = a.tree();
+    const CompactTree& tb = b.tree();
+    if (ta.nodes().empty() || tb.nodes().empty()) {
+        res.beyond = true;
+        return res;
+    }
+    const bool bounds = options.level == QueryLevel::Bounds;
+    const std::vector<float>& reach_a = a.bounds_reach();
+    const std::vector<float>& reach_b = b.bounds_reach();
+    auto radius_a = [&](uint32_t i) { return double(bounds ? reach_a[i] : ta.nodes()[i].bv_radius); };
+    auto radius_b = [&](uint32_t i) { return double(bounds ? reach_b[i] : tb.nodes()[i].bv_radius); };
+    const FrameBToA to_a(a, b, b_in_a);
+    std::vector<Eigen::Vector3d> b_centre(tb.nodes().size());
+    std::vector<uint8_t> b_moved(tb.nodes().size(), 0);
+    auto centre_b = [&](uint32_t j) -> const Eigen::Vector3d& {
+        if (!b_moved[j]) b_centre[j] = to_a(Eigen::Vector3f(tb.nodes()[j].center[0], tb.nodes()[j].center[1], tb.nodes()[j].center[2])), b_moved[j] = 1;
+        return b_centre[j];
+    };
+    auto lower_bound = [&](uint32_t i, uint32_t j) {
+        return (centre(ta.nodes()[i]) - centre_b(j)).norm() - radius_a(i) - radius_b(j);
+    };
+    double best = options.max_distance;
+    const double keep = 1 - options.relative_error;
+    Eigen::Vector3d best_a, best_b; // nearest sphere centres, A's local frame
+    double best_ra = 0, best_rb = 0;
+    bool found = false;
+    std::priority_queue<NodePairGap, std::vector<NodePairGap>, std::greater<NodePairGap>> open;
+    if (const double g = lower_bound(0, 0); g < best) open.push({g, 0, 0});
+    auto children = [](const CompactTree& t, uint32_t i) { return std::array<uint32_t, 2>{i + 1, t.nodes()[i].first}; };
+    while (!open.empty()) {
+        const NodePairGap top = open.top();
+        open.pop();
+        if (!(top.gap < best * keep) && !(top.gap < 0)) break;
+        ++res.counters.node_pairs;
+        const CompactNode& na = ta.nodes()[top.a];
+        const CompactNode& nb = tb.nodes()[top.b];
+        if (na.is_active() && nb.is_active()) {
+            if (bounds) { // the leaf bounding spheres are the model
+                const double g = (centre(na) - centre_b(top.b)).norm() - na.bv_radius - nb.bv_radius;
+                ++res.counters.bound_tests;
+                if (g < best) best = g, best_a = centre(na), best_b = centre_b(top.b), best_ra = na.bv_radius, best_rb = nb.bv_radius, found = true;
+                continue;
+            }
+            for (uint32_t k = na.first; k < na.first + na.count; ++k) {
+                const Eigen::Vector3d ca = ta.sphere_center(na, k).cast<double>();
+                for (uint32_t l = nb.first; l < nb.first + nb.count; ++l) {
+                    ++res.counters.sphere_tests;
+                    const Eigen::Vector3d cb = to_a(tb.sphere_center(nb, l));
+                    const double g = (ca - cb).norm() - na.ss_radius - nb.ss_radius;
+                    if (g < best) best = g, best_a = ca, best_b = cb, best_ra = na.ss_radius, best_rb = nb.ss_radius, found = true;
+                }
+            }
+            continue;
+        }
+        // Descend the larger (a leaf never): both children of that side.
+        const bool side_a = nb.is_active() || (!na.is_active() && radius_a(top.a) >= radius_b(top.b));
+        for (uint32_t c : side_a ? children(ta, top.a) : children(tb, top.b)) {
+            const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
+            ++res.counters.bound_tests;
+            if (const double g = lower_bound(i, j); g < best * keep || g < 0) open.push({g, i, j});
+        }
+    }
+    if (!found) {
+        res.beyond = true;
+        return res;
+    }
+    res.distance = std::max(best, 0.0); // spheres that do not overlap are at least touching apart
+    const Eigen::Vector3d u = (best_b - best_a).normalized();
+    res.point_a = best_a + best_ra * u + a.origin();
+    res.point_b = best_b - best_rb * u + a.origin();
+    return res;
+}
+
+} // namespace spt

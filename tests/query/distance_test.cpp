@@ -1,0 +1,134 @@
+// distance_relative against every sphere pair: the smallest gap, its points, max_distance and the
+// relative error allowance; overlapping models give the deepest overlap, negated.
+#include "query_fixtures.hpp"
+#include "spt/distance.hpp"
+#include "spt/error.hpp"
+#include <gtest/gtest.h>
+#include <random>
+
+using namespace spt;
+using namespace spt::test;
+
+namespace {
+
+struct Nearest {
+    double gap = std::numeric_limits<double>::infinity();
+};
+
+// The smallest gap between any sampling sphere of A and any of B at b_in_a (brute force).
+Nearest every_pair(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a) {
+    Nearest n;
+    const CompactTree& ta = a.tree();
+    const CompactTree& tb = b.tree();
+    for (const CompactNode& na : ta.nodes()) {
+        if (!na.is_active()) continue;
+        for (uint32_t k = na.first; k < na.first + na.count; ++k) {
+            const Eigen::Vector3d ca = ta.sphere_center(na, k).cast<double>() + a.origin();
+            for (const CompactNode& nb : tb.nodes()) {
+                if (!nb.is_active()) continue;
+                for (uint32_t l = nb.first; l < nb.first + nb.count; ++l) {
+                    const Eigen::Vector3d cb = b_in_a.apply(tb.sphere_center(nb, l).cast<double>() + b.origin());
+                    n.gap = std::min(n.gap, (ca - cb).norm() - na.ss_radius - nb.ss_radius);
+                }
+            }
+        }
+    }
+    return n;
+}
+
+std::vector<Pose> apart_poses(int count) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-4, 4);
+    std::vector<Pose> poses;
+    while (int(poses.size()) < count) {
+        const double x = u(rng), y = u(rng), z = u(rng);
+        poses.push_back(Pose::from(Eigen::Vector3d(x, y, z), random_rotation(rng)));
+    }
+    return poses;
+}
+
+} // namespace
+
+TEST(Distance, IsTheSmallestGapOfAnySpherePairWithItsPoints) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    int apart = 0, overlapping = 0;
+    for (const Pose& p : apart_poses(60)) {
+        const DistanceResult d = distance_relative(t.model, t.model, p, DistanceOptions{}, scratch);
+        const Nearest n = every_pair(t.model, t.model, p);
+        if (n.gap < 0) {
+            ++overlapping;
+            EXPECT_TRUE(d.collide);
+            EXPECT_LE(d.distance, 0);
+            continue;
+        }
+        ++apart;
+        ASSERT_FALSE(d.collide);
+        ASSERT_FALSE(d.beyond);
+        EXPECT_NEAR(d.distance, n.gap, 1e-6) << "pose " << p.translation.transpose();
+        // The points are on the spheres and as far apart as the gap.
+        EXPECT_NEAR((d.point_b - d.point_a).norm(), d.distance, 1e-5);
+        EXPECT_LT(d.counters.sphere_tests, uint64_t(t.model.tree().sphere_count()) * t.model.tree().sphere_count() / 10)
+            << "the bounds prune";
+    }
+    EXPECT_GT(apart, 20);
+    EXPECT_GT(overlapping, 2);
+}
+
+TEST(Distance, OverlappingModelsAnswerTheDeepestOverlapNegated) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    const Pose p = Pose::from(Eigen::Vector3d(0.3, 0, 0), Eigen::Quaterniond::Identity());
+    const DistanceResult d = distance_relative(t.model, t.model, p, DistanceOptions{}, scratch);
+    QueryOptions deepest;
+    deepest.mode = QueryMode::Deepest;
+    deepest.solids = false;
+    const QueryResult q = collide_relative(t.model, t.model, p, deepest, scratch);
+    ASSERT_TRUE(q.collide);
+    EXPECT_TRUE(d.collide);
+    EXPECT_DOUBLE_EQ(d.distance, -q.deepest.depth);
+    EXPECT_NEAR((d.point_a - d.point_b).norm(), q.deepest.depth, 1e-9);
+}
+
+TEST(Distance, MaxDistanceAnswersBeyondAndRelativeErrorStaysWithinItsAllowance) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    int beyond = 0, within = 0;
+    for (const Pose& p : apart_poses(60)) {
+        const Nearest n = every_pair(t.model, t.model, p);
+        if (n.gap <= 0) continue;
+        DistanceOptions capped;
+        capped.max_distance = 0.5;
+        const DistanceResult c = distance_relative(t.model, t.model, p, capped, scratch);
+        if (n.gap >= 0.5) {
+            EXPECT_TRUE(c.beyond) << n.gap;
+            EXPECT_TRUE(std::isinf(c.distance));
+            ++beyond;
+        } else {
+            EXPECT_FALSE(c.beyond);
+            EXPECT_NEAR(c.distance, n.gap, 1e-6);
+            ++within;
+        }
+        DistanceOptions rough;
+        rough.relative_error = 0.1;
+        const DistanceResult r = distance_relative(t.model, t.model, p, rough, scratch);
+        EXPECT_GE(r.distance, n.gap - 1e-6);
+        EXPECT_LE(r.distance * 0.9, n.gap + 1e-6);
+    }
+    EXPECT_GT(beyond, 5);
+    EXPECT_GT(within, 2);
+}
+
+TEST(Distance, ExactLevelAndBadOptionsAreUsageErrors) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    DistanceOptions exact;
+    exact.level = QueryLevel::Exact;
+    EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, exact, scratch), Error);
+    DistanceOptions bad;
+    bad.max_distance = 0;
+    EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, bad, scratch), Error);
+    bad = DistanceOptions{};
+    bad.relative_error = std::nan("");
+    EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, bad, scratch), Error);
+}
