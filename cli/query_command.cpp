@@ -34,18 +34,14 @@ struct QueryArgs {
 // --mode distance: pose,collide,distance,ax,ay,az,bx,by,bz,node_pairs,sphere_tests,ns (points in A's
 // frame; a distance beyond --max-distance is `inf` with empty points).
 void write_distances(std::FILE* out, const CollisionModel& a, const CollisionModel& b, const std::vector<PoseLine>& poses,
-                     const DistanceOptions& d, int repeat, const std::string& pose_file) {
+                     const DistanceOptions& d, const BatchOptions& batch, const std::string& pose_file) {
     std::fprintf(out, "pose,collide,distance,ax,ay,az,bx,by,bz,node_pairs,sphere_tests,ns\n");
-    QueryScratch scratch;
-    std::vector<int64_t> runs(static_cast<size_t>(std::max(1, repeat)));
+    std::vector<Pose> b_in_a;
+    for (const PoseLine& pl : poses) b_in_a.push_back(pl.pose);
+    std::vector<int64_t> times;
+    const std::vector<DistanceResult> results = distance_batch(a, b, b_in_a, d, batch, &times);
     for (size_t i = 0; i < poses.size(); ++i) {
-        DistanceResult r;
-        for (int64_t& ns : runs) {
-            const auto t0 = std::chrono::steady_clock::now();
-            r = distance_relative(a, b, poses[i].pose, d, scratch);
-            ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
-        }
-        std::nth_element(runs.begin(), runs.begin() + long(runs.size() / 2), runs.end());
+        const DistanceResult& r = results[i];
         if (!r.beyond && !std::isfinite(r.distance))
             throw Error(ErrorKind::BadInput, pose_file + ":" + std::to_string(poses[i].line) + ": the query gave a non-finite distance");
         if (r.beyond)
@@ -54,7 +50,7 @@ void write_distances(std::FILE* out, const CollisionModel& a, const CollisionMod
             std::fprintf(out, "%zu,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,", i, r.collide ? 1 : 0, r.distance, r.point_a.x(),
                          r.point_a.y(), r.point_a.z(), r.point_b.x(), r.point_b.y(), r.point_b.z());
         std::fprintf(out, "%llu,%llu,%lld\n", (unsigned long long)r.counters.node_pairs,
-                     (unsigned long long)r.counters.sphere_tests, (long long)runs[runs.size() / 2]);
+                     (unsigned long long)r.counters.sphere_tests, (long long)times[i]);
     }
 }
 
@@ -103,7 +99,10 @@ int run_query(const QueryArgs& args) {
         DistanceOptions d;
         d.level = o.level;
         d.max_distance = args.max_distance;
-        write_distances(out, a->model, b->model, poses, d, args.repeat, args.poses);
+        BatchOptions batch;
+        batch.threads = args.threads;
+        batch.repeat = std::max(1, args.repeat);
+        write_distances(out, a->model, b->model, poses, d, batch, args.poses);
         if (out != stdout && std::fclose(out) != 0) throw Error(ErrorKind::CannotWrite, args.output + ": write failed");
         return 0;
     }

@@ -83,3 +83,21 @@ TEST(QueryBatch, AnEmptyBatchIsEmptyAndBadOptionsAreRefused) {
     exact.level = QueryLevel::Exact;
     EXPECT_THROW(query_batch(spheres_only, spheres_only, batch_poses(), exact), Error);
 }
+
+TEST(QueryBatch, DistancesComeInPoseOrderTheSameOnAnyThreadCount) {
+    const Object& t = torus();
+    const std::vector<Pose> poses = batch_poses();
+    QueryScratch scratch;
+    BatchOptions one, three;
+    one.threads = 1;
+    three.threads = 3;
+    const std::vector<DistanceResult> a = distance_batch(t.model, t.model, poses, DistanceOptions{}, one);
+    const std::vector<DistanceResult> b = distance_batch(t.model, t.model, poses, DistanceOptions{}, three);
+    ASSERT_EQ(a.size(), poses.size());
+    for (size_t i = 0; i < poses.size(); i += 7) {
+        const DistanceResult single = distance_relative(t.model, t.model, poses[i], DistanceOptions{}, scratch);
+        EXPECT_EQ(a[i].distance, single.distance) << i;
+        EXPECT_EQ(b[i].distance, single.distance) << i;
+        EXPECT_EQ(b[i].point_a, single.point_a) << i;
+    }
+}

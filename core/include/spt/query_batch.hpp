@@ -2,6 +2,7 @@
 /// Many poses of one pair in one call (motion planners ask thousands at a time): the queries of
 /// query.hpp spread over the library's thread pool or a host's task system, results in pose order
 /// and the same for any number of threads. B's poses in A's frame (A at the identity), model units.
+#include "spt/distance.hpp"
 #include "spt/query.hpp"
 #include "spt/task_system.hpp"
 #include <cstdint>
@@ -24,5 +25,11 @@ struct BatchOptions {
 std::vector<QueryResult> query_batch(const CollisionModel& a, const CollisionModel& b, const std::vector<Pose>& b_in_a,
                                      const QueryOptions& query, const BatchOptions& options = {},
                                      std::vector<int64_t>* ns = nullptr);
+
+/// distance_relative of A against B at every pose of `b_in_a`, in pose order, as query_batch runs
+/// queries (the same answers on any thread count; `ns` as there).
+std::vector<DistanceResult> distance_batch(const CollisionModel& a, const CollisionModel& b,
+                                           const std::vector<Pose>& b_in_a, const DistanceOptions& distance,
+                                           const BatchOptions& options = {}, std::vector<int64_t>* ns = nullptr);
 
 } // namespace spt

@@ -11,14 +11,14 @@ namespace {
 // Poses a job takes at once: a query is a microsecond or two, an item of the pool tens of nanoseconds.
 constexpr size_t kPosesAChunk = 64;
 
-} // namespace
-
-std::vector<QueryResult> query_batch(const CollisionModel& a, const CollisionModel& b, const std::vector<Pose>& b_in_a,
-                                     const QueryOptions& query, const BatchOptions& options, std::vector<int64_t>* ns) {
+// Runs answer(pose, scratch) for every pose in chunks on the pool, timing each on request.
+template <class Result, class Answer>
+std::vector<Result> run_batch(const std::vector<Pose>& b_in_a, const BatchOptions& options, std::vector<int64_t>* ns,
+                              Answer&& answer) {
     if (options.threads < 0 || options.repeat < 1)
-        throw Error(ErrorKind::Usage, "query_batch: threads must be >= 0 and repeat >= 1");
+        throw Error(ErrorKind::Usage, "batch: threads must be >= 0 and repeat >= 1");
     const size_t n = b_in_a.size();
-    std::vector<QueryResult> out(n);
+    std::vector<Result> out(n);
     if (ns) ns->assign(n, 0);
     const int threads = options.threads > 0 ? options.threads : hardware_threads();
     const size_t chunks = (n + kPosesAChunk - 1) / kPosesAChunk;
@@ -29,7 +29,7 @@ std::vector<QueryResult> query_batch(const CollisionModel& a, const CollisionMod
         for (size_t i = c * kPosesAChunk; i < std::min(n, (c + 1) * kPosesAChunk); ++i) {
             for (int64_t& t : runs_ns) {
                 const auto t0 = std::chrono::steady_clock::now();
-                out[i] = collide_relative(a, b, b_in_a[i], query, scratch[size_t(w)]);
+                out[i] = answer(b_in_a[i], scratch[size_t(w)]);
                 t = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
             }
             if (ns) {
@@ -39,6 +39,23 @@ std::vector<QueryResult> query_batch(const CollisionModel& a, const CollisionMod
         }
     }, options.tasks);
     return out;
+}
+
+} // namespace
+
+std::vector<QueryResult> query_batch(const CollisionModel& a, const CollisionModel& b, const std::vector<Pose>& b_in_a,
+                                     const QueryOptions& query, const BatchOptions& options, std::vector<int64_t>* ns) {
+    return run_batch<QueryResult>(b_in_a, options, ns, [&](const Pose& p, QueryScratch& s) {
+        return collide_relative(a, b, p, query, s);
+    });
+}
+
+std::vector<DistanceResult> distance_batch(const CollisionModel& a, const CollisionModel& b,
+                                           const std::vector<Pose>& b_in_a, const DistanceOptions& distance,
+                                           const BatchOptions& options, std::vector<int64_t>* ns) {
+    return run_batch<DistanceResult>(b_in_a, options, ns, [&](const Pose& p, QueryScratch& s) {
+        return distance_relative(a, b, p, distance, s);
+    });
 }
 
 } // namespace spt
