@@ -64,11 +64,10 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     auto radius_a = [&](uint32_t i) { return double(bounds ? reach_a[i] : ta.nodes()[i].bv_radius); };
     auto radius_b = [&](uint32_t i) { return double(bounds ? reach_b[i] : tb.nodes()[i].bv_radius); };
     const FrameBToA to_a(a, b, b_in_a);
-    std::vector<Eigen::Vector3d> b_centre(tb.nodes().size());
-    std::vector<uint8_t> b_moved(tb.nodes().size(), 0);
-    auto centre_b = [&](uint32_t j) -> const Eigen::Vector3d& {
-        if (!b_moved[j]) b_centre[j] = to_a(Eigen::Vector3f(tb.nodes()[j].center[0], tb.nodes()[j].center[1], tb.nodes()[j].center[2])), b_moved[j] = 1;
-        return b_centre[j];
+    // Moved as the walk reaches them (a few multiplies): a table of every node would cost a large
+    // model's node count a query however little the walk visits.
+    auto centre_b = [&](uint32_t j) {
+        return to_a(Eigen::Vector3f(tb.nodes()[j].center[0], tb.nodes()[j].center[1], tb.nodes()[j].center[2]));
     };
     auto lower_bound = [&](uint32_t i, uint32_t j) {
         return (centre(ta.nodes()[i]) - centre_b(j)).norm() - radius_a(i) - radius_b(j);
