@@ -52,7 +52,6 @@ int main(int argc, char** argv) {
         MotionOptions mo;
         mo.steps = steps;
         mo.threads = 2;
-        if (const char* r = std::getenv("SPT_REACH_STEPS")) mo.reach_steps = std::atoi(r);
         // The scene alone, as spt simulate runs it: what the recording adds to it is the heat map's work.
         auto t0 = std::chrono::steady_clock::now();
         {
@@ -66,12 +65,10 @@ int main(int argc, char** argv) {
         std::printf("%s / %s: %zu steps (%u in contact), %zu samples, recorded in %.2f s (the scene alone %.2f s)\n",
                     scene_path.c_str(), object.c_str(), rec.steps.size(), rec.steps_in_contact, doc->samples.size(),
                     record_s, simulate_s);
-        BuildOptions base;
-        for (const SamplingTree& t : doc->trees) (void)t;
         std::vector<SamplingTree> trees;
         std::vector<std::string> names;
         for (uint32_t leaf : {4u, 8u, 16u}) {
-            BuildOptions b = base;
+            BuildOptions b;
             b.leaf_size = leaf;
             b.threads = 2;
             t0 = std::chrono::steady_clock::now();
@@ -84,7 +81,6 @@ int main(int argc, char** argv) {
             MotionBuildOptions mb;
             mb.build.leaf_size = leaf;
             mb.build.threads = 2;
-            if (const char* w = std::getenv("SPT_MOTION_WEIGHT")) mb.random_weight = std::atof(w);
             t0 = std::chrono::steady_clock::now();
             MotionBuildReport report;
             trees.push_back(build_motion_tree("motion" + std::to_string(leaf), doc->samples, rec, mb, &report));

@@ -70,7 +70,9 @@ std::vector<MotionCost> measure_motion_cost(const MotionRecording& rec, const st
     QueryScratch scratch;
     using Clock = std::chrono::steady_clock;
     const int R = std::max(1, rounds);
-    const double total = double(R) * double(rec.steps.size());
+    size_t met = 0; // steps with queries: what the progress counts
+    for (const MotionStep& st : rec.steps) met += !st.partners.empty();
+    const double total = double(R) * double(std::max<size_t>(1, met));
     size_t done_steps = 0;
     for (int r = 0; r < R; ++r) {
         size_t q = 0;

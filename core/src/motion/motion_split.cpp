@@ -1,7 +1,6 @@
 // The split chooser of a build from motion: binned planes scored by how often the recorded
 // motion enters each child, plus a volume term for the poses it did not record.
 #include "motion/motion_split.hpp"
-#include "spt/error.hpp"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -55,9 +54,7 @@ size_t count_bits(const std::vector<uint64_t>& bits, size_t at, size_t words) {
 
 MotionSplit::MotionSplit(const SampleSet& samples, const MotionRecording& rec, double random_weight, uint32_t leaf_size)
     : samples_(samples), random_weight_(random_weight), leaf_size_(std::max<uint32_t>(1, leaf_size)) {
-    if (rec.contact_steps.size() != samples.size())
-        throw Error(ErrorKind::BadInput, "the motion was recorded on " + std::to_string(rec.contact_steps.size()) +
-                                             " samples, the tree is over " + std::to_string(samples.size()));
+    // build_best checked that the recording is over these samples.
     size_t total = 0;
     for (const MotionReach& r : rec.reaches) total += r.near.size();
     const size_t every = std::max<size_t>(1, (total + kMaxTotalEntries - 1) / kMaxTotalEntries);
