@@ -108,6 +108,22 @@ TEST_F(CliQuery, DistanceModeWritesTheGapAndItsPointsAndInfBeyondTheMaximum) {
     EXPECT_EQ(run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --mode distance --max-distance -1").code, 1);
 }
 
+TEST_F(CliQuery, DistanceModeAtTheExactLevelGivesTheTrianglesGap) {
+    const auto poses = write("apart.txt", "5 0 0 1 0 0 0\n");
+    auto gap_at = [&](const std::string& level) {
+        const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() +
+                              " --mode distance --repeat 1 --level " + level);
+        EXPECT_EQ(r.code, 0) << r.err;
+        const std::string row = r.out.substr(r.out.find('\n') + 1);
+        EXPECT_EQ(row.rfind("0,0,", 0), 0u) << row;
+        return std::stod(row.substr(4, row.find(',', 4) - 4));
+    };
+    const double exact = gap_at("exact"), spheres = gap_at("spheres");
+    EXPECT_GT(exact, 0);
+    // The spheres sit on the surface: their gap is the triangles' within the sampling's reach.
+    EXPECT_NEAR(spheres, exact, 0.05 * exact);
+}
+
 TEST_F(CliQuery, BadPoseLineIsExitTwoNamingTheLine) {
     const auto poses = write("bad.txt", "# first\n0 0 0 1 0 0 0\n0 0 zero 1 0 0 0\n");
     const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string());

@@ -1,8 +1,10 @@
 // distance_relative against every sphere pair: the smallest gap, its points, max_distance and the
-// relative error allowance; overlapping models give the deepest overlap, negated.
+// relative error allowance; overlapping models give the deepest overlap, negated. Level exact
+// against every triangle pair.
 #include "query_fixtures.hpp"
 #include "spt/distance.hpp"
 #include "spt/error.hpp"
+#include "geometry/tri_distance.hpp"
 #include <gtest/gtest.h>
 #include <random>
 
@@ -75,19 +77,24 @@ TEST(Distance, IsTheSmallestGapOfAnySpherePairWithItsPoints) {
     EXPECT_GT(overlapping, 2);
 }
 
-TEST(Distance, OverlappingModelsAnswerTheDeepestOverlapNegated) {
+TEST(Distance, OverlappingModelsAnswerTheDeepestOverlapOfTheirLevelNegated) {
     const Object& t = torus();
     QueryScratch scratch;
     const Pose p = Pose::from(Eigen::Vector3d(0.3, 0, 0), Eigen::Quaterniond::Identity());
-    const DistanceResult d = distance_relative(t.model, t.model, p, DistanceOptions{}, scratch);
-    QueryOptions deepest;
-    deepest.mode = QueryMode::Deepest;
-    deepest.solids = false;
-    const QueryResult q = collide_relative(t.model, t.model, p, deepest, scratch);
-    ASSERT_TRUE(q.collide);
-    EXPECT_TRUE(d.collide);
-    EXPECT_DOUBLE_EQ(d.distance, -q.deepest.depth);
-    EXPECT_NEAR((d.point_a - d.point_b).norm(), q.deepest.depth, 1e-9);
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        DistanceOptions o;
+        o.level = level;
+        const DistanceResult d = distance_relative(t.model, t.model, p, o, scratch);
+        QueryOptions deepest;
+        deepest.level = level;
+        deepest.mode = QueryMode::Deepest;
+        deepest.solids = false;
+        const QueryResult q = collide_relative(t.model, t.model, p, deepest, scratch);
+        ASSERT_TRUE(q.collide);
+        EXPECT_TRUE(d.collide);
+        EXPECT_DOUBLE_EQ(d.distance, -q.deepest.depth);
+        EXPECT_NEAR((d.point_a - d.point_b).norm(), q.deepest.depth, 1e-9);
+    }
 }
 
 TEST(Distance, MaxDistanceAnswersBeyondAndRelativeErrorStaysWithinItsAllowance) {
@@ -119,16 +126,105 @@ TEST(Distance, MaxDistanceAnswersBeyondAndRelativeErrorStaysWithinItsAllowance) 
     EXPECT_GT(within, 2);
 }
 
-TEST(Distance, ExactLevelAndBadOptionsAreUsageErrors) {
+TEST(Distance, BadOptionsAreUsageErrors) {
     const Object& t = torus();
     QueryScratch scratch;
-    DistanceOptions exact;
-    exact.level = QueryLevel::Exact;
-    EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, exact, scratch), Error);
     DistanceOptions bad;
     bad.max_distance = 0;
     EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, bad, scratch), Error);
     bad = DistanceOptions{};
     bad.relative_error = std::nan("");
     EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, bad, scratch), Error);
+}
+
+namespace {
+
+// The smallest gap between any triangle of A and any of B at b_in_a (every pair).
+double every_triangle_pair(const Object& a, const Object& b, const Pose& b_in_a) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Triangle& x : a.mesh.triangles)
+        for (const Triangle& y : b.mesh.triangles) {
+            const auto& pa = a.mesh.positions;
+            const auto& pb = b.mesh.positions;
+            best = std::min(best, triangle_gap(pa[x[0]], pa[x[1]], pa[x[2]], b_in_a.apply(pb[y[0]]),
+                                               b_in_a.apply(pb[y[1]]), b_in_a.apply(pb[y[2]]))
+                                      .distance);
+        }
+    return best;
+}
+
+} // namespace
+
+TEST(DistanceExact, IsTheSmallestGapOfAnyTrianglePairWithPointsOnTheSurfaces) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    DistanceOptions exact;
+    exact.level = QueryLevel::Exact;
+    int apart = 0;
+    for (const Pose& p : apart_poses(40)) {
+        const DistanceResult d = distance_relative(t.model, t.model, p, exact, scratch);
+        const double truth = every_triangle_pair(t, t, p);
+        if (truth == 0) {
+            EXPECT_TRUE(d.collide);
+            EXPECT_LE(d.distance, 0);
+            continue;
+        }
+        ++apart;
+        ASSERT_FALSE(d.collide);
+        ASSERT_FALSE(d.beyond);
+        EXPECT_NEAR(d.distance, truth, 1e-12 * t.model.diagonal());
+        EXPECT_NEAR((d.point_a - d.point_b).norm(), d.distance, 1e-12);
+        // Each point lies on its mesh: some triangle holds it.
+        double on_a = std::numeric_limits<double>::infinity(), on_b = on_a;
+        const Pose inv = p.inverse();
+        for (const Triangle& x : t.mesh.triangles) {
+            const auto& v = t.mesh.positions;
+            on_a = std::min(on_a, (triangle_closest_point(v[x[0]], v[x[1]], v[x[2]], d.point_a) - d.point_a).norm());
+            const Eigen::Vector3d qb = inv.apply(d.point_b);
+            on_b = std::min(on_b, (triangle_closest_point(v[x[0]], v[x[1]], v[x[2]], qb) - qb).norm());
+        }
+        EXPECT_LT(on_a, 1e-9);
+        EXPECT_LT(on_b, 1e-9);
+    }
+    EXPECT_GT(apart, 20);
+}
+
+TEST(DistanceExact, MaxDistanceAndRelativeErrorHoldOnTheTriangles) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    int beyond = 0, within = 0;
+    for (const Pose& p : apart_poses(40)) {
+        const double truth = every_triangle_pair(t, t, p);
+        if (truth == 0) continue;
+        DistanceOptions capped;
+        capped.level = QueryLevel::Exact;
+        capped.max_distance = 0.5;
+        const DistanceResult c = distance_relative(t.model, t.model, p, capped, scratch);
+        if (truth >= 0.5) {
+            EXPECT_TRUE(c.beyond) << truth;
+            ++beyond;
+        } else {
+            EXPECT_NEAR(c.distance, truth, 1e-12);
+            ++within;
+        }
+        DistanceOptions rough;
+        rough.level = QueryLevel::Exact;
+        rough.relative_error = 0.1;
+        const DistanceResult r = distance_relative(t.model, t.model, p, rough, scratch);
+        EXPECT_GE(r.distance, truth - 1e-12);
+        EXPECT_LE(r.distance * 0.9, truth + 1e-12);
+    }
+    EXPECT_GT(beyond, 5);
+    EXPECT_GT(within, 2);
+}
+
+TEST(DistanceExact, NeedsTheMeshesOfBothModels) {
+    const Object& t = torus();
+    const CollisionModel no_mesh(t.doc);
+    QueryScratch scratch;
+    DistanceOptions exact;
+    exact.level = QueryLevel::Exact;
+    EXPECT_THROW(distance_relative(t.model, no_mesh, Pose::from(Eigen::Vector3d(5, 0, 0), Eigen::Quaterniond::Identity()),
+                                   exact, scratch),
+                 Error);
 }

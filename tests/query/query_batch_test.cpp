@@ -42,7 +42,9 @@ TEST(QueryBatch, GivesEachPoseTheAnswerOfItsOwnQueryOnAnyThreadCount) {
                 ASSERT_EQ(batch[i].collide, one[i].collide) << "pose " << i << ", " << threads << " threads";
                 EXPECT_EQ(batch[i].counters.node_pairs, one[i].counters.node_pairs) << "pose " << i;
                 EXPECT_EQ(batch[i].counters.sphere_tests, one[i].counters.sphere_tests) << "pose " << i;
-                if (mode == QueryMode::Deepest && one[i].collide) EXPECT_EQ(batch[i].deepest.depth, one[i].deepest.depth);
+                if (mode == QueryMode::Deepest && one[i].collide) {
+                    EXPECT_EQ(batch[i].deepest.depth, one[i].deepest.depth);
+                }
                 collide += batch[i].collide;
             }
         }
@@ -91,13 +93,19 @@ TEST(QueryBatch, DistancesComeInPoseOrderTheSameOnAnyThreadCount) {
     BatchOptions one, three;
     one.threads = 1;
     three.threads = 3;
-    const std::vector<DistanceResult> a = distance_batch(t.model, t.model, poses, DistanceOptions{}, one);
-    const std::vector<DistanceResult> b = distance_batch(t.model, t.model, poses, DistanceOptions{}, three);
-    ASSERT_EQ(a.size(), poses.size());
-    for (size_t i = 0; i < poses.size(); i += 7) {
-        const DistanceResult single = distance_relative(t.model, t.model, poses[i], DistanceOptions{}, scratch);
-        EXPECT_EQ(a[i].distance, single.distance) << i;
-        EXPECT_EQ(b[i].distance, single.distance) << i;
-        EXPECT_EQ(b[i].point_a, single.point_a) << i;
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        DistanceOptions d;
+        d.level = level;
+        const std::vector<DistanceResult> a = distance_batch(t.model, t.model, poses, d, one);
+        const std::vector<DistanceResult> b = distance_batch(t.model, t.model, poses, d, three);
+        ASSERT_EQ(a.size(), poses.size());
+        ASSERT_EQ(b.size(), poses.size());
+        for (size_t i = 0; i < poses.size(); i += 7) {
+            const DistanceResult single = distance_relative(t.model, t.model, poses[i], d, scratch);
+            EXPECT_EQ(a[i].distance, single.distance) << i;
+            EXPECT_EQ(b[i].distance, single.distance) << i;
+            EXPECT_EQ(b[i].point_a, single.point_a) << i;
+            EXPECT_EQ(b[i].counters.node_pairs, single.counters.node_pairs) << i;
+        }
     }
 }

@@ -9,8 +9,8 @@ namespace spt {
 
 /// Options of a distance query.
 struct DistanceOptions {
-    /// Spheres (the sampling spheres) or Bounds (the leaf bounding spheres); Exact is not there yet
-    /// (Error(Usage)).
+    /// Spheres (the sampling spheres), Bounds (the leaf bounding spheres) or Exact (the triangles:
+    /// both models need their meshes).
     QueryLevel level = QueryLevel::Spheres;
     /// Gaps beyond this are not looked for: a pair farther apart answers `beyond` (model units, > 0).
     double max_distance = std::numeric_limits<double>::infinity();
@@ -23,8 +23,8 @@ struct DistanceOptions {
 struct DistanceResult {
     bool collide = false;  ///< the spheres overlap (distance <= 0)
     bool beyond = false;   ///< farther apart than max_distance: distance is +infinity and the points unset
-    /// Apart: the gap between the nearest two spheres' surfaces. Overlapping: minus the deepest
-    /// overlap (the depth of collide_relative's mode deepest). Model units.
+    /// Apart: the gap between the nearest two spheres' surfaces (at Exact: triangles). Overlapping:
+    /// minus the deepest overlap (the depth of collide_relative's mode deepest). Model units.
     double distance = std::numeric_limits<double>::infinity();
     Eigen::Vector3d point_a = Eigen::Vector3d::Zero(); ///< on A's sphere, A's frame: nearest (apart) or deepest inside B
     Eigen::Vector3d point_b = Eigen::Vector3d::Zero(); ///< on B's sphere, A's frame
@@ -32,7 +32,7 @@ struct DistanceResult {
 };
 
 /// Distance of B at `b_in_a` from A (A at the identity). Const and thread-safe given one scratch a
-/// thread. Error(Usage) for level Exact or bad options.
+/// thread. Error(Usage) for bad options, or level Exact without both meshes.
 DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                  const DistanceOptions& options, QueryScratch& scratch);
 

@@ -1,6 +1,8 @@
 // Distance between two sampling-sphere models: best-first branch and bound over node pairs,
 // ordered by the gap their bounding spheres leave; overlapping models answer the deepest overlap.
+// Level exact hands the apart case to the triangles (distance_exact.cpp).
 #include "spt/distance.hpp"
+#include "query/distance_exact.hpp"
 #include "query/pending_pose.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
@@ -31,8 +33,6 @@ Eigen::Vector3d centre(const CompactNode& n) { return {n.center[0], n.center[1],
 
 DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                  const DistanceOptions& options, QueryScratch& scratch) {
-    if (options.level == QueryLevel::Exact)
-        throw Error(ErrorKind::Usage, "distance: level 'exact' is not there yet; use 'spheres' or 'bounds'");
     if (!(options.max_distance > 0) || !(options.relative_error >= 0 && options.relative_error < 1))
         throw Error(ErrorKind::Usage, "distance: max_distance must be > 0 and relative_error in [0, 1)");
     DistanceResult res;
@@ -52,6 +52,10 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
         return res;
     }
     detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
+    if (options.level == QueryLevel::Exact) { // no triangles meet: the nearest two
+        detail::exact_gap(a, b, b_in_a, options, scratch, res);
+        return res;
+    }
     const CompactTree& ta = a.tree();
     const CompactTree& tb = b.tree();
     if (ta.nodes().empty() || tb.nodes().empty()) {

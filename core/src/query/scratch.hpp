@@ -87,6 +87,14 @@ struct ScratchBuffers {
         uint32_t a, b;
     };
     std::vector<ExitBound> exit_stack;
+    // The exact distance's branch and bound (distance_exact.cpp): a heap of node pairs by the
+    // least gap below them.
+    struct GapBound {
+        float gap;
+        uint32_t a, b;
+        bool operator>(const GapBound& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
+    };
+    std::vector<GapBound> gap_heap;
     std::vector<Eigen::Vector3d> exit_leaf_b;
     SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
 };

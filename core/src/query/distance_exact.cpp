@@ -1,0 +1,138 @@
+// Exact distance between two triangle soups: best-first branch and bound over pairs of nodes of
+// their triangle trees, each pair's lower bound the largest of its bounding spheres' gap and the
+// gaps along the six face normals of the two boxes (a flat patch's box is far tighter than its
+// sphere); leaves by triangle_gap.
+#include "query/distance_exact.hpp"
+#include "geometry/tri_distance.hpp"
+#include "query/exact_data.hpp"
+#include "query/model_access.hpp"
+#include "query/query_run.hpp"
+#include "query/scratch.hpp"
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace spt::detail {
+namespace {
+
+Eigen::Vector3f v3(const float* p) { return {p[0], p[1], p[2]}; }
+
+// Half the length of box `b`'s shadow on unit axis u.
+float shadow(const Obb& b, const Eigen::Vector3f& u) {
+    float s = 0;
+    for (int k = 0; k < 3; ++k) s += std::abs(u.dot(v3(b.axis[k]))) * b.half[k];
+    return s;
+}
+
+// A lower bound of the distance between the contents of boxes `a` and `b` (one frame): their
+// largest gap along a face normal of either (0 if every normal sees them overlap).
+float box_gap(const Obb& a, const Obb& b) {
+    if (a.half[0] < 0 || b.half[0] < 0) return 0; // an empty box: leave it to the spheres
+    const Eigen::Vector3f d = v3(b.center) - v3(a.center);
+    float gap = 0;
+    for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3f u = v3(a.axis[k]);
+        gap = std::max(gap, std::abs(u.dot(d)) - a.half[k] - shadow(b, u));
+        const Eigen::Vector3f w = v3(b.axis[k]);
+        gap = std::max(gap, std::abs(w.dot(d)) - b.half[k] - shadow(a, w));
+    }
+    return gap;
+}
+
+// A lower bound of the distance between a triangle with corners `t` and unit normal `n` and
+// one with corners `u`: how far u lies beyond t's plane when all of u is on one side (0 if not).
+double plane_gap(const Eigen::Vector3d* t, const Eigen::Vector3d& n, const Eigen::Vector3d* u) {
+    const double h0 = n.dot(u[0] - t[0]), h1 = n.dot(u[1] - t[0]), h2 = n.dot(u[2] - t[0]);
+    if (h0 > 0 && h1 > 0 && h2 > 0) return std::min({h0, h1, h2});
+    if (h0 < 0 && h1 < 0 && h2 < 0) return -std::max({h0, h1, h2});
+    return 0;
+}
+
+} // namespace
+
+void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const DistanceOptions& options,
+               QueryScratch& scratch, DistanceResult& res) {
+    const ExactData &ea = exact_of(a), &eb = exact_of(b);
+    const auto &an = ea.tri_nodes, &bn = eb.tri_nodes;
+    res.beyond = true;
+    if (an.empty() || bn.empty()) return;
+    const QueryFrame f(a, b, b_in_a, 0);
+    ScratchBuffers& s = buffers_of(scratch);
+    prepare_scratch(s, a, b, true);
+    // B's vertices and node boxes moved into A's local frame where the walk first needs them.
+    auto b_vertex = [&](uint32_t v) -> const Eigen::Vector3d& {
+        if (s.vert_stamp[v] != s.epoch) s.vert_stamp[v] = s.epoch, s.bverts[v] = f.Rd * eb.positions[v] + f.td;
+        return s.bverts[v];
+    };
+    auto b_box = [&](uint32_t j) -> const Obb& {
+        if (s.bbox_stamp[j] != s.epoch) s.bbox_stamp[j] = s.epoch, s.bboxes[j] = placed(bn[j].box(), f.R, f.t);
+        return s.bboxes[j];
+    };
+    // Float bounds are lowered by the frame's rounding margin so that rounding never prunes the
+    // nearest pair.
+    auto lower_bound = [&](uint32_t i, uint32_t j) {
+        const Obb& bb = b_box(j);
+        const float centres = (v3(an[i].center) - v3(bb.center)).norm() - an[i].radius - bn[j].radius;
+        return std::max(centres, box_gap(an[i].box(), bb)) - f.margin;
+    };
+    double best = options.max_distance;
+    const double keep = 1 - options.relative_error;
+    Eigen::Vector3d best_a, best_b;
+    bool found = false;
+    using Bound = ScratchBuffers::GapBound;
+    auto& open = s.gap_heap;
+    open.clear();
+    auto push = [&](float g, uint32_t i, uint32_t j) {
+        open.push_back({g, i, j});
+        std::push_heap(open.begin(), open.end(), std::greater<Bound>());
+    };
+    ++res.counters.bound_tests;
+    if (const float g = lower_bound(0, 0); g < best) push(g, 0, 0);
+    while (!open.empty()) {
+        std::pop_heap(open.begin(), open.end(), std::greater<Bound>());
+        const Bound top = open.back();
+        open.pop_back();
+        if (!(top.gap < best * keep)) break;
+        ++res.counters.node_pairs;
+        const TriangleNode &na = an[top.a], &nb = bn[top.b];
+        if (na.is_leaf() && nb.is_leaf()) {
+            for (uint32_t p = na.first; p < na.first + na.count; ++p) {
+                const uint32_t ta = ea.tri_order[p];
+                const float* sa = &ea.tri_sphere[4 * size_t(ta)];
+                for (uint32_t q = nb.first; q < nb.first + nb.count; ++q) {
+                    const uint32_t tb = eb.tri_order[q];
+                    const float* sb = &eb.tri_sphere[4 * size_t(tb)];
+                    const Eigen::Vector3f cb = f.R * v3(sb) + f.t;
+                    if ((v3(sa) - cb).norm() - sa[3] - sb[3] - f.margin >= best * keep) continue;
+                    ++res.counters.triangle_tests;
+                    const Triangle &x = ea.triangles[ta], &y = eb.triangles[tb];
+                    const Eigen::Vector3d ta3[3] = {ea.positions[x[0]], ea.positions[x[1]], ea.positions[x[2]]};
+                    const Eigen::Vector3d tb3[3] = {b_vertex(y[0]), b_vertex(y[1]), b_vertex(y[2])};
+                    // Facing patches are nearest corner to face: each plane's gap is then the
+                    // distance itself, at a fraction of the full test's cost.
+                    const Eigen::Vector3d na3 = (ta3[1] - ta3[0]).cross(ta3[2] - ta3[0]).normalized();
+                    const Eigen::Vector3d nb3 = (tb3[1] - tb3[0]).cross(tb3[2] - tb3[0]).normalized();
+                    if (std::max(plane_gap(ta3, na3, tb3), plane_gap(tb3, nb3, ta3)) >= best * keep) continue;
+                    const TriangleGap g = triangle_gap(ta3[0], ta3[1], ta3[2], tb3[0], tb3[1], tb3[2], false);
+                    if (g.distance < best) best = g.distance, best_a = g.p, best_b = g.q, found = true;
+                }
+            }
+            continue;
+        }
+        // Descend the larger sphere (a leaf never): both children of that side.
+        const bool side_a = nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius);
+        const uint32_t first = side_a ? top.a + 1 : top.b + 1, second = side_a ? na.first : nb.first;
+        for (uint32_t c : {first, second}) {
+            const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
+            ++res.counters.bound_tests;
+            if (const float g = lower_bound(i, j); g < best * keep) push(g, i, j);
+        }
+    }
+    if (!found) return;
+    res.beyond = false;
+    res.distance = best;
+    res.point_a = best_a + a.origin();
+    res.point_b = best_b + a.origin();
+}
+
+} // namespace spt::detail
