@@ -50,6 +50,19 @@ bool FclPeer::collide(const spt::Pose& p) const {
     return res.isCollision();
 }
 
+double FclPeer::distance(const spt::Pose& p, Eigen::Vector3d* on_a, Eigen::Vector3d* on_b) const {
+    fcl::Transform3d t = fcl::Transform3d::Identity();
+    t.linear() = p.rotation.toRotationMatrix();
+    t.translation() = p.translation;
+    impl_->b->setTransform(t);
+    fcl::DistanceRequestd req(on_a != nullptr || on_b != nullptr);
+    fcl::DistanceResultd res;
+    fcl::distance(impl_->a.get(), impl_->b.get(), req, res);
+    if (on_a) *on_a = res.nearest_points[0];
+    if (on_b) *on_b = res.nearest_points[1];
+    return res.min_distance;
+}
+
 struct BulletPeer::Impl {
     std::vector<int> indices;
     std::vector<btScalar> vertices;

@@ -1,5 +1,5 @@
 #pragma once
-// The measured peers, behind one small interface: FCL (OBBRSS, boolean) and
+// The measured peers, behind one small interface: FCL (OBBRSS, boolean and distance) and
 // Bullet (btGImpactMeshShape). B's pose is given in A's frame; A at the identity.
 #include "spt/mesh.hpp"
 #include "spt/pose.hpp"
@@ -17,6 +17,9 @@ public:
     ~FclPeer();
     /// True if the triangle surfaces intersect.
     bool collide(const spt::Pose& b_in_a) const;
+    /// fcl::distance of the triangle surfaces (0 when they meet), model units; with the nearest
+    /// points when asked (A's frame).
+    double distance(const spt::Pose& b_in_a, Eigen::Vector3d* on_a = nullptr, Eigen::Vector3d* on_b = nullptr) const;
 
 private:
     struct Impl;
