@@ -2,6 +2,7 @@
 // deforming_model.cpp, core/src/tree/compact_refit.cpp).
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
+#include "spt/distance.hpp"
 #include "spt/error.hpp"
 #include "spt/ccd.hpp"
 #include "spt/query.hpp"
@@ -135,6 +136,50 @@ TEST(DeformingModel, QueriesAtEveryLevelSeeTheDeformedPose) {
         if (level != QueryLevel::Bounds) {
             EXPECT_GT(collide(dm.model(), at_rest_pose, obstacle, above, o, scratch).deepest.depth, 0.0) << int(level);
         }
+    }
+}
+
+// The smallest gap between any sphere of `a` and any of `b` at `b_in_a` (every pair).
+double every_sphere_pair_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const CompactNode& na : a.tree().nodes()) {
+        if (!na.is_active()) continue;
+        for (uint32_t k = na.first; k < na.first + na.count; ++k) {
+            const Eigen::Vector3d ca = a.tree().sphere_center(na, k).cast<double>() + a.origin();
+            for (const CompactNode& nb : b.tree().nodes()) {
+                if (!nb.is_active()) continue;
+                for (uint32_t l = nb.first; l < nb.first + nb.count; ++l) {
+                    const Eigen::Vector3d cb = b_in_a.apply(b.tree().sphere_center(nb, l).cast<double>() + b.origin());
+                    best = std::min(best, (ca - cb).norm() - na.ss_radius - nb.ss_radius);
+                }
+            }
+        }
+    }
+    return best;
+}
+
+// The distance's slabs are fitted to the bind pose's spheres: a pose (full or lazy) must not
+// prune with them, or the bent bar's nearest spheres would be cut off.
+TEST(DeformingModel, DistanceSeesTheDeformedPoseFullOrLazy) {
+    const ImportedMesh box = meshgen::prepare(meshgen::box(0.6, 0.3, 0.6), "box.obj");
+    ConvertOptions corners; // eight spheres: the brute force stays small
+    corners.auto_tolerance = false;
+    const SptDocument box_doc = make_document(box.mesh, corners);
+    const CollisionModel obstacle(box_doc, box.mesh);
+    DeformingModel dm(bar().doc, bar().mesh);
+    const Pose above = Pose::from(Eigen::Vector3d(0, 1.4, 0), Eigen::Quaterniond::Identity());
+    QueryScratch scratch;
+    DistanceOptions spheres;
+    const double at_rest = distance_relative(dm.model(), obstacle, above, spheres, scratch).distance;
+    for (bool lazy : {false, true}) {
+        if (lazy) dm.pose_lazily(&bar().mesh->clips[0], 1.0);
+        else dm.pose(&bar().mesh->clips[0], 1.0);
+        const DistanceResult d = distance_relative(dm.model(), obstacle, above, spheres, scratch);
+        ASSERT_FALSE(d.collide);
+        EXPECT_NEAR(d.distance, every_sphere_pair_gap(dm.model(), obstacle, above), 1e-5) << lazy;
+        EXPECT_NE(d.distance, at_rest) << "the bend moves the bar's nearest spheres";
+        EXPECT_EQ(detail::node_slab_of(dm.model()), nullptr);
+        dm.pose(nullptr, 0);
     }
 }
 

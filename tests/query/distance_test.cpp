@@ -5,6 +5,8 @@
 #include "spt/distance.hpp"
 #include "spt/error.hpp"
 #include "geometry/tri_distance.hpp"
+#include "mesh/shapes.hpp"
+#include "query/model_access.hpp"
 #include <gtest/gtest.h>
 #include <random>
 
@@ -227,4 +229,62 @@ TEST(DistanceExact, NeedsTheMeshesOfBothModels) {
     EXPECT_THROW(distance_relative(t.model, no_mesh, Pose::from(Eigen::Vector3d(5, 0, 0), Eigen::Quaterniond::Identity()),
                                    exact, scratch),
                  Error);
+}
+
+TEST(Distance, EveryNodesSlabHoldsTheSpheresBelowIt) {
+    // The torus (vertex samples on a curved surface) and the bracket's flat faces sampled densely.
+    const auto bracket = make_object(make_bracket(), ConvertOptions{});
+    for (const Object* o : {static_cast<const Object*>(&torus()), static_cast<const Object*>(bracket.get())}) {
+        const CompactTree& t = o->model.tree();
+        const float* slab = detail::node_slab_of(o->model);
+        ASSERT_NE(slab, nullptr);
+        size_t thin = 0;
+        const auto& nodes = t.nodes();
+        for (size_t i = 0; i < nodes.size(); ++i) {
+            const float* s = slab + 4 * i;
+            if (!(s[3] >= 0)) continue;
+            ++thin;
+            const Eigen::Vector3f n(s[0], s[1], s[2]), c(nodes[i].center[0], nodes[i].center[1], nodes[i].center[2]);
+            EXPECT_NEAR(n.norm(), 1, 1e-5);
+            EXPECT_LT(s[3], nodes[i].bv_radius);
+            // Every sphere below node i (children: the next node and `first`).
+            std::vector<size_t> open{i};
+            while (!open.empty()) {
+                const size_t j = open.back();
+                open.pop_back();
+                if (!nodes[j].is_active()) {
+                    open.push_back(j + 1), open.push_back(nodes[j].first);
+                    continue;
+                }
+                for (uint32_t k = nodes[j].first; k < nodes[j].first + nodes[j].count; ++k)
+                    EXPECT_LE(std::abs(n.dot(t.sphere_center(nodes[j], k) - c)) + nodes[j].ss_radius, s[3] * (1 + 1e-6f))
+                        << "node " << i << " sphere " << k;
+            }
+        }
+        EXPECT_GT(thin, nodes.size() / 4) << "faces give thin slabs";
+    }
+}
+
+TEST(Distance, AbsoluteErrorStaysWithinItsAllowanceAtEveryLevel) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        int apart = 0;
+        for (const Pose& p : apart_poses(40)) {
+            DistanceOptions full, rough;
+            full.level = rough.level = level;
+            rough.absolute_error = 0.2;
+            const DistanceResult f = distance_relative(t.model, t.model, p, full, scratch);
+            if (f.collide) continue;
+            ++apart;
+            const DistanceResult r = distance_relative(t.model, t.model, p, rough, scratch);
+            EXPECT_GE(r.distance, f.distance - 1e-9);
+            EXPECT_LE(r.distance, f.distance + 0.2 + 1e-9);
+            EXPECT_LE(r.counters.node_pairs, f.counters.node_pairs);
+        }
+        EXPECT_GT(apart, 20);
+    }
+    DistanceOptions bad;
+    bad.absolute_error = -1;
+    EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, bad, scratch), Error);
 }

@@ -82,6 +82,9 @@ private:
     std::shared_ptr<const ExactData> exact_; // null without a mesh; immutable, so copies share it
     std::shared_ptr<const SolidData> solid_;
     std::vector<float> bounds_reach_;
+    // Per node, the slab of query/node_slab.hpp (the distance query's bound); empty once the
+    // spheres have moved from where it was fitted (a deformed pose), where the balls bound alone.
+    std::vector<float> node_slab_;
     double extent_ = 0, reach_ = 0, diagonal_ = 0;
     uint32_t max_leaf_ = 0;
 };

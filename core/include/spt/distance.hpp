@@ -17,6 +17,10 @@ struct DistanceOptions {
     /// The search stops when no unvisited pair can be closer than (1 - this) x the best gap found:
     /// 0 gives the smallest gap, 0.05 one within 5% of it.
     double relative_error = 0;
+    /// The search also stops when no unvisited pair can be nearer than the best gap minus this
+    /// (model units, >= 0; FCL's abs_err): the answer is then at most this above the smallest gap.
+    /// Both allowances together: no pair left below (1 - relative_error) x best - absolute_error.
+    double absolute_error = 0;
 };
 
 /// Answer of a distance query.

@@ -177,6 +177,7 @@ void LazyPose::begin() {
     }
     for (size_t r = 0; r < layout_->regions.size(); ++r) posed_flags_[r].store(0, std::memory_order_relaxed);
     CollisionModel& model = owner_->model_;
+    model.node_slab_.clear(); // fitted to the bind pose's spheres
     CompactTree& tree = model.tree_;
     tree.ensure_boxes(); // before any walk: regions refit their nodes' boxes while walks read balls
     const std::vector<Eigen::Vector3d>& v = owner_->vertices_;

@@ -6,6 +6,7 @@
 #include "base/float_round.hpp"
 #include "query/exact_data.hpp"
 #include "query/solid.hpp"
+#include "query/node_slab.hpp"
 #include "query/triangle_tree.hpp"
 #include <algorithm>
 #include <cmath>
@@ -122,6 +123,7 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     max_leaf_ = 0;
     for (const CompactNode& n : tree_.nodes()) max_leaf_ = std::max(max_leaf_, n.count);
     measure();
+    node_slab_ = detail::node_slabs(tree_);
 }
 
 void CollisionModel::measure(bool by_leaves) {
@@ -161,6 +163,7 @@ void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& position
                                     const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
                                     bool triangles, int threads, TaskSystem* tasks) {
     tree_.follow_samples(points, normals, threads, tasks);
+    node_slab_.clear(); // fitted to the spheres where they were
     follow_triangles(positions, triangles);
 }
 
@@ -203,7 +206,7 @@ PendingHandle& PendingHandle::operator=(const PendingHandle& other) {
 
 size_t CollisionModel::memory_bytes() const {
     const ExactData& e = detail::exact_of(*this);
-    return tree_.memory_bytes() + e.positions.capacity() * sizeof(Eigen::Vector3d) +
+    return tree_.memory_bytes() + node_slab_.capacity() * sizeof(float) + e.positions.capacity() * sizeof(Eigen::Vector3d) +
            e.triangles.capacity() * sizeof(Triangle) +
            e.tri_nodes.capacity() * sizeof(TriangleNode) + e.tri_order.capacity() * sizeof(uint32_t) +
            e.tri_sphere.capacity() * sizeof(float) + e.closed.capacity() +

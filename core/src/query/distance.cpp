@@ -3,6 +3,7 @@
 // Level exact hands the apart case to the triangles (distance_exact.cpp).
 #include "spt/distance.hpp"
 #include "query/distance_exact.hpp"
+#include "query/model_access.hpp"
 #include "query/pending_pose.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
@@ -33,8 +34,10 @@ Eigen::Vector3d centre(const CompactNode& n) { return {n.center[0], n.center[1],
 
 DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                  const DistanceOptions& options, QueryScratch& scratch) {
-    if (!(options.max_distance > 0) || !(options.relative_error >= 0 && options.relative_error < 1))
-        throw Error(ErrorKind::Usage, "distance: max_distance must be > 0 and relative_error in [0, 1)");
+    if (!(options.max_distance > 0) || !(options.relative_error >= 0 && options.relative_error < 1) ||
+        !(options.absolute_error >= 0 && std::isfinite(options.absolute_error)))
+        throw Error(ErrorKind::Usage,
+                    "distance: max_distance must be > 0, relative_error in [0, 1) and absolute_error finite and >= 0");
     DistanceResult res;
     // Overlapping: the deepest overlap, as mode deepest finds it.
     QueryOptions deepest;
@@ -73,11 +76,28 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     auto centre_b = [&](uint32_t j) {
         return to_a(Eigen::Vector3f(tb.nodes()[j].center[0], tb.nodes()[j].center[1], tb.nodes()[j].center[2]));
     };
+    // At level spheres a node's spheres also lie in its slab (query/node_slab.hpp): across a densely
+    // sampled face the slab's gap is far nearer the distance than the balls'.
+    const float* slab_a = bounds ? nullptr : detail::node_slab_of(a);
+    const float* slab_b = bounds ? nullptr : detail::node_slab_of(b);
     auto lower_bound = [&](uint32_t i, uint32_t j) {
-        return (centre(ta.nodes()[i]) - centre_b(j)).norm() - radius_a(i) - radius_b(j);
+        const Eigen::Vector3d ca = centre(ta.nodes()[i]), cb = centre_b(j), d = cb - ca;
+        double gap = d.norm() - radius_a(i) - radius_b(j);
+        if (slab_a && slab_a[4 * size_t(i) + 3] >= 0) {
+            const float* s = slab_a + 4 * size_t(i);
+            gap = std::max(gap, std::abs(Eigen::Vector3d(s[0], s[1], s[2]).dot(d)) - s[3] - radius_b(j));
+        }
+        if (slab_b && slab_b[4 * size_t(j) + 3] >= 0) {
+            const float* s = slab_b + 4 * size_t(j);
+            const Eigen::Vector3d n = to_a.r * Eigen::Vector3d(s[0], s[1], s[2]);
+            gap = std::max(gap, std::abs(n.dot(d)) - s[3] - radius_a(i));
+        }
+        return gap;
     };
     double best = options.max_distance;
+    // A pair is worth a visit while it could beat the best by more than the allowances.
     const double keep = 1 - options.relative_error;
+    auto worth = [&](double gap) { return gap < best * keep - options.absolute_error; };
     Eigen::Vector3d best_a, best_b; // nearest sphere centres, A's local frame
     double best_ra = 0, best_rb = 0;
     bool found = false;
@@ -87,7 +107,7 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     while (!open.empty()) {
         const NodePairGap top = open.top();
         open.pop();
-        if (!(top.gap < best * keep) && !(top.gap < 0)) break;
+        if (!worth(top.gap) && !(top.gap < 0)) break;
         ++res.counters.node_pairs;
         const CompactNode& na = ta.nodes()[top.a];
         const CompactNode& nb = tb.nodes()[top.b];
@@ -114,7 +134,7 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
         for (uint32_t c : side_a ? children(ta, top.a) : children(tb, top.b)) {
             const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
             ++res.counters.bound_tests;
-            if (const double g = lower_bound(i, j); g < best * keep || g < 0) open.push({g, i, j});
+            if (const double g = lower_bound(i, j); worth(g) || g < 0) open.push({g, i, j});
         }
     }
     if (!found) {

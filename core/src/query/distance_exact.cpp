@@ -76,7 +76,9 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         return std::max(centres, box_gap(an[i].box(), bb)) - f.margin;
     };
     double best = options.max_distance;
+    // A pair is worth a visit while it could beat the best by more than the allowances.
     const double keep = 1 - options.relative_error;
+    auto worth = [&](double gap) { return gap < best * keep - options.absolute_error; };
     Eigen::Vector3d best_a, best_b;
     bool found = false;
     using Bound = ScratchBuffers::GapBound;
@@ -92,7 +94,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         std::pop_heap(open.begin(), open.end(), std::greater<Bound>());
         const Bound top = open.back();
         open.pop_back();
-        if (!(top.gap < best * keep)) break;
+        if (!worth(top.gap)) break;
         ++res.counters.node_pairs;
         const TriangleNode &na = an[top.a], &nb = bn[top.b];
         if (na.is_leaf() && nb.is_leaf()) {
@@ -103,7 +105,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
                     const uint32_t tb = eb.tri_order[q];
                     const float* sb = &eb.tri_sphere[4 * size_t(tb)];
                     const Eigen::Vector3f cb = f.R * v3(sb) + f.t;
-                    if ((v3(sa) - cb).norm() - sa[3] - sb[3] - f.margin >= best * keep) continue;
+                    if (!worth((v3(sa) - cb).norm() - sa[3] - sb[3] - f.margin)) continue;
                     ++res.counters.triangle_tests;
                     const Triangle &x = ea.triangles[ta], &y = eb.triangles[tb];
                     const Eigen::Vector3d ta3[3] = {ea.positions[x[0]], ea.positions[x[1]], ea.positions[x[2]]};
@@ -112,7 +114,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
                     // distance itself, at a fraction of the full test's cost.
                     const Eigen::Vector3d na3 = (ta3[1] - ta3[0]).cross(ta3[2] - ta3[0]).normalized();
                     const Eigen::Vector3d nb3 = (tb3[1] - tb3[0]).cross(tb3[2] - tb3[0]).normalized();
-                    if (std::max(plane_gap(ta3, na3, tb3), plane_gap(tb3, nb3, ta3)) >= best * keep) continue;
+                    if (!worth(std::max(plane_gap(ta3, na3, tb3), plane_gap(tb3, nb3, ta3)))) continue;
                     const TriangleGap g = triangle_gap(ta3[0], ta3[1], ta3[2], tb3[0], tb3[1], tb3[2], false);
                     if (g.distance < best) best = g.distance, best_a = g.p, best_b = g.q, found = true;
                 }
@@ -125,7 +127,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         for (uint32_t c : {first, second}) {
             const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
             ++res.counters.bound_tests;
-            if (const float g = lower_bound(i, j); g < best * keep) push(g, i, j);
+            if (const float g = lower_bound(i, j); worth(g)) push(g, i, j);
         }
     }
     if (!found) return;

@@ -17,10 +17,14 @@ struct ModelAccess {
         return m.solid_ ? *m.solid_ : kNone;
     }
     static PendingPose* pending(const CollisionModel& m) { return m.pending_.pose; }
+    static const float* node_slab(const CollisionModel& m) { return m.node_slab_.empty() ? nullptr : m.node_slab_.data(); }
 };
 
 /// Triangle data for the `exact` level, empty without a mesh.
 inline const ExactData& exact_of(const CollisionModel& m) { return ModelAccess::exact(m); }
+/// Per node, a unit normal and half-thickness holding its spheres (query/node_slab.hpp); null when
+/// the spheres have moved since they were fitted.
+inline const float* node_slab_of(const CollisionModel& m) { return ModelAccess::node_slab(m); }
 /// Where the model is solid, and its anchor points.
 inline const SolidData& solid_of(const CollisionModel& m) { return ModelAccess::solid(m); }
 
