@@ -85,6 +85,7 @@ private:
     // Per node, the slab of query/node_slab.hpp (the distance query's bound); empty once the
     // spheres have moved from where it was fitted (a deformed pose), where the balls bound alone.
     std::vector<float> node_slab_;
+    std::vector<float> node_max_radius_; // per node, the largest sampling-sphere radius below it
     double extent_ = 0, reach_ = 0, diagonal_ = 0;
     uint32_t max_leaf_ = 0;
 };

@@ -124,6 +124,7 @@ void CollisionModel::init(const SptDocument& doc, const std::string& tree_name) 
     for (const CompactNode& n : tree_.nodes()) max_leaf_ = std::max(max_leaf_, n.count);
     measure();
     node_slab_ = detail::node_slabs(tree_);
+    node_max_radius_ = detail::node_max_radii(tree_);
 }
 
 void CollisionModel::measure(bool by_leaves) {
@@ -206,7 +207,7 @@ PendingHandle& PendingHandle::operator=(const PendingHandle& other) {
 
 size_t CollisionModel::memory_bytes() const {
     const ExactData& e = detail::exact_of(*this);
-    return tree_.memory_bytes() + node_slab_.capacity() * sizeof(float) + e.positions.capacity() * sizeof(Eigen::Vector3d) +
+    return tree_.memory_bytes() + (node_slab_.capacity() + node_max_radius_.capacity()) * sizeof(float) + e.positions.capacity() * sizeof(Eigen::Vector3d) +
            e.triangles.capacity() * sizeof(Triangle) +
            e.tri_nodes.capacity() * sizeof(TriangleNode) + e.tri_order.capacity() * sizeof(uint32_t) +
            e.tri_sphere.capacity() * sizeof(float) + e.closed.capacity() +

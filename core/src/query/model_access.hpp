@@ -18,6 +18,9 @@ struct ModelAccess {
     }
     static PendingPose* pending(const CollisionModel& m) { return m.pending_.pose; }
     static const float* node_slab(const CollisionModel& m) { return m.node_slab_.empty() ? nullptr : m.node_slab_.data(); }
+    static const float* node_max_radius(const CollisionModel& m) {
+        return m.node_max_radius_.empty() ? nullptr : m.node_max_radius_.data();
+    }
 };
 
 /// Triangle data for the `exact` level, empty without a mesh.
@@ -25,6 +28,8 @@ inline const ExactData& exact_of(const CollisionModel& m) { return ModelAccess::
 /// Per node, a unit normal and half-thickness holding its spheres (query/node_slab.hpp); null when
 /// the spheres have moved since they were fitted.
 inline const float* node_slab_of(const CollisionModel& m) { return ModelAccess::node_slab(m); }
+/// Per node, the largest sampling-sphere radius below it (query/node_slab.hpp); null for an empty model.
+inline const float* node_max_radius_of(const CollisionModel& m) { return ModelAccess::node_max_radius(m); }
 /// Where the model is solid, and its anchor points.
 inline const SolidData& solid_of(const CollisionModel& m) { return ModelAccess::solid(m); }
 

@@ -1,4 +1,4 @@
-// Node slabs, bottom up: a leaf's from its spheres, an inner node's from its children's slabs.
+// Node slabs and largest radii, bottom up: a leaf's from its spheres, an inner node's from its children's.
 #include "query/node_slab.hpp"
 #include <algorithm>
 #include <cmath>
@@ -57,6 +57,14 @@ std::vector<float> node_slabs(const CompactTree& tree) {
         out[0] = sum.x(), out[1] = sum.y(), out[2] = sum.z(), out[3] = h;
     }
     return slab;
+}
+
+std::vector<float> node_max_radii(const CompactTree& tree) {
+    const auto& nodes = tree.nodes();
+    std::vector<float> m(nodes.size(), 0.0f);
+    for (size_t i = nodes.size(); i-- > 0;) // children follow their parent
+        m[i] = nodes[i].is_active() ? nodes[i].ss_radius : std::max(m[i + 1], m[nodes[i].first]);
+    return m;
 }
 
 } // namespace spt::detail

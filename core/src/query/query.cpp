@@ -135,6 +135,12 @@ void QueryRun::run() {
     const float* reach_b = bounds ? B.bounds_reach().data() : nullptr;
     const float pad = o.inflate + f.margin;
     const bool flat = !bounds && (A.tree().node_disc() || B.tree().node_disc());
+    const float *disc_a = A.tree().node_disc(), *disc_b = B.tree().node_disc();
+    const float* max_r_a = bounds ? nullptr : detail::node_max_radius_of(A);
+    const float* max_r_b = max_r_a ? detail::node_max_radius_of(B) : nullptr;
+    if (!max_r_b) max_r_a = nullptr;
+    // Most node pairs have no disc on either side (h < 0): told here, without the call.
+    auto node_is_disc = [](const float* disc, uint32_t ref) { return disc && disc[4 * size_t(ref & ~kActive) + 3] >= 0; };
     // Lazily posed models: a part is posed before the walk first reads below it.
     detail::PendingPose *lazy_a = detail::pending_of(A), *lazy_b = detail::pending_of(B);
     VisitStack stack{s.visits};
@@ -165,10 +171,17 @@ void QueryRun::run() {
         // Exit search: no pair below can leave later than its bounding balls part.
         if (exit && exit->found && !may_exit_later(ca, cb, ra, rb, pad)) continue;
         // Deepest: no sphere below this pair can be deeper than the bounds' overlap.
-        if (deepest && have_best && !(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth))) continue;
+        // Nor deeper than their largest spheres' radii together: once the balls lie deep in each
+        // other, that is the bound that prunes.
+        if (deepest && have_best &&
+            (!(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth)) ||
+             (max_r_a && !(max_r_a[ref_a & ~kActive] + max_r_b[ref_b & ~kActive] + pad > float(res.deepest.depth)))))
+            continue;
         // Flat nodes of two-sided spheres are discs: two sheets side by side are apart here,
         // not after a walk down to every pair of their leaves.
-        if (flat && !node_discs_touch(ref_a & ~kActive, ref_b & ~kActive, ca, cb, ra, rb)) continue;
+        if (flat && node_is_disc(disc_a, ref_a) | node_is_disc(disc_b, ref_b) &&
+            !node_discs_touch(ref_a & ~kActive, ref_b & ~kActive, ca, cb, ra, rb))
+            continue;
         const bool leaf_a = ref_a & kActive, leaf_b = ref_b & kActive;
         if (leaf_a && leaf_b) {
             const uint32_t i = ref_a & ~kActive, j = ref_b & ~kActive;
