@@ -20,7 +20,7 @@ import numpy as np
 import spt
 
 SCENES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "resources", "scenes")
-# The bin's parts: mesh and world pose (position, quaternion w x y z), as robot_arm.json places them.
+# The bin's parts: mesh and world pose (position, quaternion w x y z), as robot_arm.json has them.
 QUARTER_TURN = (0.7071067811865476, 0.0, 0.7071067811865476, 0.0)
 BIN = [
     ("floor", "bin_floor.obj", (0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0)),
@@ -65,7 +65,8 @@ def main():
     args = parser.parse_args()
 
     arm = spt.load(os.path.join(SCENES, "arm.obj"))
-    models = {mesh: spt.load(os.path.join(SCENES, mesh)) for mesh in {mesh for _, mesh, _, _ in BIN}}
+    meshes = {mesh for _, mesh, _, _ in BIN}
+    models = {mesh: spt.load(os.path.join(SCENES, mesh)) for mesh in meshes}
     parts = {name: (models[mesh], transform(p, q)) for name, mesh, p, q in BIN}
     world, motion = plan(args.steps)
     n = len(world)
@@ -74,7 +75,7 @@ def main():
     hits, clearance = np.zeros(n, dtype=bool), np.full(n, np.inf)
     first = None  # (pose, part) of the first contact along the path
     for name, (model, part_pose) in parts.items():
-        in_part = np.linalg.inv(part_pose) @ world  # the arm in the part's frame, as the queries want it
+        in_part = np.linalg.inv(part_pose) @ world  # the arm in the part's frame: B in A's
         hit = spt.collide(model, arm, in_part)
         gap = spt.distance(model, arm, in_part, max_distance=args.margin)  # inf beyond it
         hits |= hit
@@ -83,12 +84,14 @@ def main():
             first = (int(hit.argmax()), name)
     seconds = time.perf_counter() - start
 
-    print(f"path: {n} poses of arm.obj against {len(parts)} parts of the bin, checked in {seconds * 1e3:.1f} ms")
+    print(f"path: {n} poses of arm.obj against {len(parts)} parts of the bin, "
+          f"checked in {seconds * 1e3:.1f} ms")
     low = int(clearance.argmin())
     if np.isinf(clearance[low]):
         print(f"smallest clearance: more than the margin {args.margin} everywhere")
     else:
-        print(f"smallest clearance: {clearance[low]:.4f} at pose {low}" + (" (overlap)" if clearance[low] <= 0 else ""))
+        overlap = " (overlap)" if clearance[low] <= 0 else ""
+        print(f"smallest clearance: {clearance[low]:.4f} at pose {low}{overlap}")
     close = int(np.count_nonzero(np.isfinite(clearance) & ~hits))
     print(f"poses closer than the margin {args.margin} but free: {close}")
     if first is None:

@@ -25,8 +25,8 @@ MESHES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "resourc
 def main():
     """Time both sides and print the figures."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--a", default=os.path.join(MESHES, "torus.obj"), help="object A (mesh or .spt)")
-    parser.add_argument("--b", default=os.path.join(MESHES, "figure.obj"), help="object B (mesh or .spt)")
+    parser.add_argument("--a", default=os.path.join(MESHES, "torus.obj"), help="object A")
+    parser.add_argument("--b", default=os.path.join(MESHES, "figure.obj"), help="object B")
     parser.add_argument("--poses", type=int, default=100_000)
     parser.add_argument("--rounds", type=int, default=11)
     parser.add_argument("--level", default="spheres")
@@ -49,7 +49,7 @@ def main():
     def cpp_side():
         return spt._time_collide_batch(a, b, poses, args.level, threads=args.threads)
 
-    hits = spt.collide(a, b, poses, args.level, threads=args.threads)  # warms the pool and the caches
+    hits = spt.collide(a, b, poses, args.level, threads=args.threads)  # warms pool and caches
     cpp_side()
     py_times, cpp_times = [], []
     for r in range(args.rounds):
@@ -60,8 +60,8 @@ def main():
             cpp_times.append(cpp_side())
             py_times.append(python_side())
     py_median, cpp_median = statistics.median(py_times), statistics.median(cpp_times)
-    print(f"{args.poses} poses, {int(hits.sum())} colliding, level {args.level}, threads {args.threads or 'all'}, "
-          f"{args.rounds} rounds")
+    print(f"{args.poses} poses, {int(hits.sum())} colliding, level {args.level}, "
+          f"threads {args.threads or 'all'}, {args.rounds} rounds")
     print(f"spt.collide (Python): median {py_median * 1e3:.1f} ms, "
           f"rounds {', '.join(f'{t * 1e3:.1f}' for t in py_times)}")
     print(f"query_batch (C++):    median {cpp_median * 1e3:.1f} ms, "

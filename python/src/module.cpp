@@ -14,6 +14,7 @@ using namespace pybind11::literals;
 
 namespace {
 
+// spt.Error.kind: the error's kind in words, as a caller would test it.
 const char* kind_name(spt::ErrorKind kind) {
     switch (kind) {
     case spt::ErrorKind::Usage: return "usage";
@@ -23,6 +24,7 @@ const char* kind_name(spt::ErrorKind kind) {
     return "bad input";
 }
 
+// What a model is at a glance in a session: its file, tree, size and whether `exact` works.
 std::string model_repr(const spt::python::Model& m) {
     return "<spt.Model '" + m.path + "' tree '" + m.tree + "', " + std::to_string(m.model.tree().sphere_count()) +
            " spheres" + (m.model.has_mesh() ? ", with triangles>" : ">");

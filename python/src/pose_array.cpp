@@ -17,6 +17,7 @@ using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 // several rotations in double stay well within it; a scale of 1.00001 does not.
 constexpr double kRigidTolerance = 1e-6;
 
+// NumPy's own spelling of a shape, "(3, 5)" or "(7,)", so the message shows what the caller sees.
 std::string shape_of(const py::array& a) {
     std::string s = "(";
     for (py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
@@ -35,6 +36,7 @@ Doubles as_doubles(const py::handle& obj, const char* name) {
     return Doubles::ensure(a);
 }
 
+// "poses row 2: why": the argument and the row as NumPy indexes it (the CLI's `pose` column).
 [[noreturn]] void fail(const char* name, size_t row, const std::string& why) {
     throw py::value_error(std::string(name) + " row " + std::to_string(row) + ": " + why);
 }
@@ -70,6 +72,7 @@ void check_row(const char* name, size_t row, const double* v, size_t n, const do
                                 " is beyond 1e16 in magnitude (docs/queries.md, \"Extreme values\")");
 }
 
+// tx ty tz qw qx qy qz, checked and normalised as read_pose_file does a line.
 Pose pose_from_row7(const char* name, size_t row, const double* v) {
     check_row(name, row, v, 7, v);
     const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
@@ -77,6 +80,7 @@ Pose pose_from_row7(const char* name, size_t row, const double* v) {
     return Pose::from(Eigen::Vector3d(v[0], v[1], v[2]), q);
 }
 
+// A row-major 4 x 4 transform; refused unless rigid, since a pose cannot scale the model.
 Pose pose_from_matrix(const char* name, size_t row, const double* v) {
     const double translation[3] = {v[3], v[7], v[11]};
     check_row(name, row, v, 16, translation);

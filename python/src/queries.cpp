@@ -14,6 +14,7 @@ namespace py = pybind11;
 namespace spt::python {
 namespace {
 
+// The level `spt query --level` names; anything else is the caller's mistake (ValueError).
 QueryLevel level_of(const std::string& level) {
     if (level == "bounds") return QueryLevel::Bounds;
     if (level == "spheres") return QueryLevel::Spheres;
@@ -34,6 +35,7 @@ QueryOptions query_options(const CollideArgs& args) {
     return o;
 }
 
+// Threads only: a call is timed by its caller, so the batch times nothing itself.
 BatchOptions batch_options(int threads) {
     BatchOptions batch;
     batch.threads = threads;

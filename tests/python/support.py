@@ -38,7 +38,8 @@ def query_cli(a, b, rows, *options):
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "poses.txt")
         np.savetxt(path, np.asarray(rows), fmt="%.17g")
-        _, out, _ = run_cli(["query", a, b, "--poses", path, "--repeat", "1", "--threads", "2", *options])
+        args = ["query", a, b, "--poses", path, "--repeat", "1", "--threads", "2", *options]
+        _, out, _ = run_cli(args)
     return list(csv.DictReader(io.StringIO(out)))
 
 

@@ -36,11 +36,12 @@ class BadArrays(unittest.TestCase):
                 self.assert_refused(ValueError, np.ones(shape), "shape " + str(shape))
 
     def test_what_is_not_a_number_is_a_type_error_naming_the_dtype(self):
-        for poses in (np.ones((2, 7), dtype=bool), np.ones((2, 7), dtype=complex), np.full((2, 7), "1"),
-                      np.full((2, 7), None, dtype=object)):
+        for poses in (np.ones((2, 7), dtype=bool), np.ones((2, 7), dtype=complex),
+                      np.full((2, 7), "1"), np.full((2, 7), None, dtype=object)):
             with self.subTest(dtype=poses.dtype):
                 self.assert_refused(TypeError, poses, "dtype")
-        self.assert_refused(TypeError, [IDENTITY, [1, 2]], "expected a NumPy array of numbers")  # ragged
+        ragged = [IDENTITY, [1, 2]]
+        self.assert_refused(TypeError, ragged, "expected a NumPy array of numbers")
         self.assert_refused(TypeError, "poses.txt", "dtype")
 
     def test_a_nan_or_inf_names_the_row_and_the_column(self):
@@ -77,9 +78,10 @@ class BadArrays(unittest.TestCase):
 
     def test_directions_are_checked_like_poses(self):
         poses = np.array([IDENTITY] * 2)
+        nan = np.array([[0, 0, 1], [np.nan, 0, 0]])
         for directions, words in ((np.zeros((3, 3)), "with a row for each of the 2 poses"),
                                   (np.zeros((2, 4)), "shape (2, 4)"),
-                                  (np.array([[0, 0, 1], [np.nan, 0, 0]]), "directions row 1: dx is nan")):
+                                  (nan, "directions row 1: dx is nan")):
             with self.assertRaises(ValueError) as caught:
                 spt.backtrack(self.torus, self.torus, poses, directions)
             self.assertIn("directions", str(caught.exception))
@@ -88,13 +90,12 @@ class BadArrays(unittest.TestCase):
             spt.backtrack(self.torus, self.torus, poses, np.full((2, 3), "x"))
 
     def test_bad_options_are_value_errors_naming_the_option(self):
-        poses = np.array([IDENTITY])
-        calls = {"level": lambda: spt.collide(self.torus, self.torus, poses, "triangles"),
-                 "cull_angle": lambda: spt.collide(self.torus, self.torus, poses, cull_angle=120),
-                 "threads": lambda: spt.collide(self.torus, self.torus, poses, threads=-1),
-                 "rule": lambda: spt.backtrack(self.torus, self.torus, poses, np.ones((1, 3)), rule="fast"),
-                 "max_distance": lambda: spt.backtrack(self.torus, self.torus, poses, np.ones((1, 3)),
-                                                       max_distance=0)}
+        t, poses, up = self.torus, np.array([IDENTITY]), np.ones((1, 3))
+        calls = {"level": lambda: spt.collide(t, t, poses, "triangles"),
+                 "cull_angle": lambda: spt.collide(t, t, poses, cull_angle=120),
+                 "threads": lambda: spt.collide(t, t, poses, threads=-1),
+                 "rule": lambda: spt.backtrack(t, t, poses, up, rule="fast"),
+                 "max_distance": lambda: spt.backtrack(t, t, poses, up, max_distance=0)}
         for name, call in calls.items():
             with self.subTest(option=name):
                 with self.assertRaises(ValueError) as caught:
@@ -143,8 +144,10 @@ class BadFiles(unittest.TestCase):
     def test_bad_files_give_the_cli_message_naming_the_file(self):
         with open(CRATE, "rb") as f:
             crate = f.read()
-        for path in (os.path.join(self.tmp.name, "missing.spt"), self.file("short.spt", crate[:300]),
-                     self.file("flipped.spt", crate[:-10] + bytes(10)), self.file("junk.obj", b"v 1 2\nf 1 2 3 x\n"),
+        for path in (os.path.join(self.tmp.name, "missing.spt"),
+                     self.file("short.spt", crate[:300]),
+                     self.file("flipped.spt", crate[:-10] + bytes(10)),
+                     self.file("junk.obj", b"v 1 2\nf 1 2 3 x\n"),
                      self.file("tiny.stl", b"solid")):
             with self.subTest(file=os.path.basename(path)):
                 self.assert_cli_message(lambda: spt.load(path), [path, TORUS])
@@ -153,13 +156,15 @@ class BadFiles(unittest.TestCase):
                 self.assertIn(path, str(caught.exception))
 
     def test_a_missing_tree_gives_the_cli_message(self):
-        self.assert_cli_message(lambda: spt.load(CRATE, tree="nope"), [CRATE, CRATE, "--tree", "nope"])
+        self.assert_cli_message(lambda: spt.load(CRATE, tree="nope"),
+                                [CRATE, CRATE, "--tree", "nope"])
         with self.assertRaises(spt.Error) as caught:
             spt.load(CRATE, tree=3)
         self.assertEqual(str(caught.exception), CRATE + ": no tree at index 3 (the file holds 1)")
 
     def test_a_mesh_that_is_not_the_files_mesh_is_refused(self):
-        self.assert_cli_message(lambda: spt.load(CRATE, mesh=TORUS), [CRATE, CRATE, "--mesh-a", TORUS])
+        self.assert_cli_message(lambda: spt.load(CRATE, mesh=TORUS),
+                                [CRATE, CRATE, "--mesh-a", TORUS])
 
     def test_a_mesh_argument_for_a_mesh_is_refused(self):
         with self.assertRaises(spt.Error) as caught:
