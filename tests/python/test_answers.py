@@ -63,7 +63,7 @@ class AnswersOfTheCli(unittest.TestCase):
         self.assert_collide_column(got, rows)
 
     def test_distance_is_the_distance_column_with_its_points(self):
-        for level in ("spheres", "bounds"):
+        for level in ("spheres", "bounds", "exact"):
             with self.subTest(level=level):
                 dist, pa, pb = spt.distance(self.a, self.b, self.poses, level, return_points=True)
                 rows = query_cli(TORUS, FIGURE, self.poses, "--mode", "distance", "--level", level)
