@@ -97,7 +97,8 @@ PYBIND11_MODULE(spt, m) {
         [](const Model& a, const Model& b, const py::handle& poses, const py::handle& directions,
            const std::string& level, const std::string& rule, double max_distance, bool surfaces, bool culling,
            double cull_angle, int threads) {
-            return backtrack(a, b, poses, directions, {level, surfaces, culling, cull_angle, threads}, rule, max_distance);
+            const CollideArgs args{level, surfaces, culling, cull_angle, threads};
+            return backtrack(a, b, poses, directions, args, rule, max_distance);
         },
         "a"_a, "b"_a, "poses"_a, "directions"_a, "level"_a = "spheres", py::kw_only(), "rule"_a = "exact",
         "max_distance"_a = std::numeric_limits<double>::infinity(), "surfaces"_a = false, "culling"_a = false,

@@ -22,11 +22,19 @@ QueryLevel level_of(const std::string& level) {
     throw py::value_error("level: expected 'bounds', 'spheres' or 'exact', got '" + level + "'");
 }
 
+// A number as Python's str() would show it in the message ("0", "-1.5", "nan").
+std::string shown(double x) { return py::str(py::float_(x)).cast<std::string>(); }
+
+// Negative counts are a mistake; 0 is every core, as BatchOptions reads it.
+void check_threads(int threads) {
+    if (threads < 0) throw py::value_error("threads: expected 0 (every core) or more, got " + std::to_string(threads));
+}
+
 // The options `spt query` builds from its flags (run_query), checked as its parser checks them.
 QueryOptions query_options(const CollideArgs& args) {
     if (!(args.cull_angle >= 0 && args.cull_angle <= 90))
-        throw py::value_error("cull_angle: expected degrees from 0 to 90, got " + std::to_string(args.cull_angle));
-    if (args.threads < 0) throw py::value_error("threads: expected 0 (every core) or more, got " + std::to_string(args.threads));
+        throw py::value_error("cull_angle: expected degrees from 0 to 90, got " + shown(args.cull_angle));
+    check_threads(args.threads);
     QueryOptions o;
     o.level = level_of(args.level);
     o.normal_culling = args.culling;
@@ -60,7 +68,7 @@ py::array_t<bool> collide(const Model& a, const Model& b, const py::handle& pose
 
 py::object distance(const Model& a, const Model& b, const py::handle& poses, const std::string& level,
                     double max_distance, double relative_error, int threads, bool return_points) {
-    if (threads < 0) throw py::value_error("threads: expected 0 (every core) or more, got " + std::to_string(threads));
+    check_threads(threads);
     DistanceOptions d;
     d.level = level_of(level);
     d.max_distance = max_distance;
@@ -92,8 +100,10 @@ py::object distance(const Model& a, const Model& b, const py::handle& poses, con
 py::array_t<double> backtrack(const Model& a, const Model& b, const py::handle& poses, const py::handle& directions,
                               const CollideArgs& args, const std::string& rule, double max_distance) {
     const QueryOptions o = query_options(args);
-    if (rule != "exact" && rule != "paper") throw py::value_error("rule: expected 'exact' or 'paper', got '" + rule + "'");
-    if (!(max_distance > 0)) throw py::value_error("max_distance: expected a distance > 0, got " + std::to_string(max_distance));
+    if (rule != "exact" && rule != "paper")
+        throw py::value_error("rule: expected 'exact' or 'paper', got '" + rule + "'");
+    if (!(max_distance > 0))
+        throw py::value_error("max_distance: expected a distance > 0, got " + shown(max_distance));
     const BacktrackRule r = rule == "paper" ? BacktrackRule::Paper : BacktrackRule::Exact;
     const std::vector<Pose> b_in_a = poses_from_array(poses, "poses");
     const std::vector<Eigen::Vector3d> motion = directions_from_array(directions, "directions", b_in_a.size());
@@ -108,7 +118,8 @@ py::array_t<double> backtrack(const Model& a, const Model& b, const py::handle& 
         run_parallel(jobs, [&](int job) {
             QueryScratch scratch;
             for (size_t i = n * size_t(job) / size_t(jobs); i < n * size_t(job + 1) / size_t(jobs); ++i) {
-                const BacktrackResult res = backtrack_relative(a.model, b.model, b_in_a[i], motion[i], o, r, scratch, max_distance);
+                const BacktrackResult res =
+                    backtrack_relative(a.model, b.model, b_in_a[i], motion[i], o, r, scratch, max_distance);
                 back[i] = res.beyond ? std::numeric_limits<double>::infinity() : res.distance;
             }
         });
