@@ -1,6 +1,6 @@
 # Script of Architecture.* (tests/CMakeLists.txt): docs/architecture.md's table of which private
 # folders of core each folder uses is what the sources include, and nothing outside core (render/,
-# editor/, cli/) nor any public header includes a private one. usage: cmake -DSOURCE_DIR=... -P
+# editor/, cli/, python/) nor any public header includes a private one. usage: cmake -DSOURCE_DIR=... -P
 file(READ ${SOURCE_DIR}/docs/architecture.md doc)
 file(GLOB folders LIST_DIRECTORIES true RELATIVE ${SOURCE_DIR}/core/src ${SOURCE_DIR}/core/src/*)
 set(private "")
@@ -54,7 +54,8 @@ foreach(f IN LISTS private)
 endforeach()
 
 file(GLOB_RECURSE outside ${SOURCE_DIR}/render/*.cpp ${SOURCE_DIR}/render/*.hpp ${SOURCE_DIR}/editor/*.cpp
-     ${SOURCE_DIR}/editor/*.hpp ${SOURCE_DIR}/cli/*.cpp ${SOURCE_DIR}/cli/*.hpp ${SOURCE_DIR}/core/include/*.hpp)
+     ${SOURCE_DIR}/editor/*.hpp ${SOURCE_DIR}/cli/*.cpp ${SOURCE_DIR}/cli/*.hpp ${SOURCE_DIR}/python/*.cpp
+     ${SOURCE_DIR}/python/*.hpp ${SOURCE_DIR}/core/include/*.hpp)
 foreach(file IN LISTS outside)
   included_folders(uses "" ${file})
   if(uses)

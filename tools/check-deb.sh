@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # CI's check of the Debian package (docs/library.md): build spt_VERSION_amd64.deb from BUILD_DIR,
-# install it with apt-get as a user would, run `spt --version` from the PATH, and build and run
-# examples/ as an outside project that finds the package where apt put it. The package is removed
+# install it with apt-get as a user would, run `spt --version` from the PATH, build and run
+# examples/ as an outside project that finds the package where apt put it, and run
+# examples/check_path.py with the system's python3, which finds the module where apt put it. The package is removed
 # again at the end unless it was installed before, so the machine is left as it was.
 # usage: tools/check-deb.sh [BUILD_DIR]     (as root: apt-get installs)
 set -euo pipefail
@@ -30,6 +31,8 @@ for f in ./usr/bin/spt ./usr/bin/spt-editor ./usr/bin/spt-viewer ./usr/include/s
          ./usr/share/doc/spt/README.md; do
   grep -qx "$f" "$work/contents.txt" || { echo "check-deb: $f is not in the package" >&2; exit 1; }
 done
+grep -qE '^\./usr/lib/python3[.0-9]*/dist-packages/spt\.cpython-[^/]*\.so$' "$work/contents.txt" ||
+  { echo "check-deb: the Python module is not in the package" >&2; exit 1; }
 apt-get install -y -q "$deb" > "$work/apt.log" 2>&1 || { cat "$work/apt.log"; exit 1; }
 got=$(cd / && spt --version)
 [[ $got == "spt $version" ]] || { echo "check-deb: spt --version said '$got'" >&2; exit 1; }
@@ -44,4 +47,10 @@ cmake --build "$work/build" > "$work/build.log" 2>&1 || { cat "$work/build.log";
 grep -q "any: collide" "$work/query.txt" ||
   { echo "check-deb: the example's query did not find the overlap" >&2; exit 1; }
 desktop-file-validate /usr/share/applications/spt-editor.desktop /usr/share/applications/spt-viewer.desktop
-echo "check-deb: installed $(basename "$deb"), spt --version and an outside find_package(spt) project work"
+# The module from the package, not from a build: no PYTHONPATH, the system's python3, from /.
+got=$(cd / && env -u PYTHONPATH /usr/bin/python3 -c 'import spt; print(spt.__version__)')
+[[ $got == "$version" ]] || { echo "check-deb: import spt gave version '$got'" >&2; exit 1; }
+(cd / && env -u PYTHONPATH /usr/bin/python3 "$SRC/examples/check_path.py" --steps 20) > "$work/path.txt"
+grep -q "first contact: pose" "$work/path.txt" ||
+  { echo "check-deb: examples/check_path.py did not report the path's contact" >&2; cat "$work/path.txt" >&2; exit 1; }
+echo "check-deb: installed $(basename "$deb"), spt --version, an outside find_package(spt) project and import spt work"

@@ -51,3 +51,15 @@ run("query (apart)" COMMAND ${bin}/query_two_trees ${WORK_DIR}/figure.spt ${WORK
     MATCH "any: apart")
 run("query (not a .spt)" COMMAND ${bin}/query_two_trees ${mesh} ${WORK_DIR}/figure.spt EXPECT_CODE 2
     MATCH "figure.obj")
+
+# The Python module, when built: installed in this Python's folder under the prefix, and found there.
+if(PYTHON)
+  file(GLOB module ${prefix}/${PYTHON_DIR}/spt.*.so)
+  if(NOT module)
+    message(FATAL_ERROR "install: the Python module is not in ${prefix}/${PYTHON_DIR}")
+  endif()
+  # (lines, not semicolons, which would split the argument into a CMake list)
+  run("import spt" COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c
+      "import spt\nm = spt.load('${WORK_DIR}/figure.spt')\nprint(spt.__file__, spt.collide(m, m, [[0, 0, 0, 1, 0, 0, 0]])[0])"
+      MATCH "^${prefix}/${PYTHON_DIR}/spt[^ ]* True")
+endif()
