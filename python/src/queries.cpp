@@ -67,12 +67,14 @@ py::array_t<bool> collide(const Model& a, const Model& b, const py::handle& pose
 }
 
 py::object distance(const Model& a, const Model& b, const py::handle& poses, const std::string& level,
-                    double max_distance, double relative_error, int threads, bool return_points) {
+                    double max_distance, double relative_error, double absolute_error, int threads,
+                    bool return_points) {
     check_threads(threads);
     DistanceOptions d;
     d.level = level_of(level);
     d.max_distance = max_distance;
     d.relative_error = relative_error;
+    d.absolute_error = absolute_error;
     const std::vector<Pose> b_in_a = poses_from_array(poses, "poses");
     std::vector<DistanceResult> results;
     {

@@ -88,6 +88,16 @@ class AnswersOfTheCli(unittest.TestCase):
         self.assertTrue(np.isnan(pa[beyond]).all())
         self.assertEqual(beyond.tolist(), [r["ax"] == "" for r in rows])
 
+    def test_error_allowances_stay_within_what_they_allow(self):
+        full = spt.distance(self.a, self.b, self.poses)
+        allowance = 0.02 * self.a.diagonal
+        rough = spt.distance(self.a, self.b, self.poses, absolute_error=allowance,
+                             relative_error=0.1)
+        apart = full > 0
+        self.assertTrue(apart.any())
+        self.assertTrue((rough[apart] >= full[apart] - 1e-9).all())
+        self.assertTrue((rough[apart] * 0.9 - allowance <= full[apart] + 1e-9).all())
+
     def test_backtrack_is_the_backtrack_column(self):
         rng = np.random.default_rng(7)
         directions = rng.normal(size=(len(self.poses), 3))

@@ -104,12 +104,13 @@ class BadArrays(unittest.TestCase):
 
     def test_what_the_library_refuses_is_spt_error_with_its_message(self):
         poses = np.array([IDENTITY])
-        for options in ({"max_distance": -1.0}, {"relative_error": 1.5}):
+        for options in ({"max_distance": -1.0}, {"relative_error": 1.5}, {"absolute_error": -1.0}):
             with self.subTest(**options):
                 with self.assertRaises(spt.Error) as caught:
                     spt.distance(self.torus, self.torus, poses, **options)
                 self.assertEqual(str(caught.exception),
-                                 "distance: max_distance must be > 0 and relative_error in [0, 1)")
+                                 "distance: max_distance must be > 0, relative_error in [0, 1) "
+                                 "and absolute_error finite and >= 0")
                 self.assertEqual(caught.exception.kind, "usage")
                 self.assertIsInstance(caught.exception, RuntimeError)
 
