@@ -147,7 +147,9 @@ TEST(overlay, heat_scale_is_logarithmic_beyond_a_ratio_of_twenty_and_its_legend_
     size_t total = 0;
     for (size_t i = 0; i < legend.size(); ++i) {
         total += legend[i].samples;
-        if (i > 0) EXPECT_EQ(legend[i].from, legend[i - 1].to + 1);
+        if (i > 0) {
+            EXPECT_EQ(legend[i].from, legend[i - 1].to + 1);
+        }
     }
     EXPECT_EQ(total, counts.size());
     EXPECT_EQ(legend.back().to, 100u);
