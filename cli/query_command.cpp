@@ -29,6 +29,7 @@ struct QueryArgs {
     bool culling = false, surfaces = false;
     double cull_angle = 60;
     double max_distance = std::numeric_limits<double>::infinity(); // --mode distance
+    bool no_depth = false;                                         // --mode distance
 };
 
 // --mode distance: pose,collide,distance,ax,ay,az,bx,by,bz,node_pairs,sphere_tests,ns (points in A's
@@ -46,6 +47,8 @@ void write_distances(std::FILE* out, const CollisionModel& a, const CollisionMod
             throw Error(ErrorKind::BadInput, pose_file + ":" + std::to_string(poses[i].line) + ": the query gave a non-finite distance");
         if (r.beyond)
             std::fprintf(out, "%zu,0,inf,,,,,,,", i);
+        else if (!r.point_a.allFinite() || !r.point_b.allFinite()) // overlapping, asked without depth
+            std::fprintf(out, "%zu,%d,%.9g,,,,,,,", i, r.collide ? 1 : 0, r.distance);
         else
             std::fprintf(out, "%zu,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,", i, r.collide ? 1 : 0, r.distance, r.point_a.x(),
                          r.point_a.y(), r.point_a.z(), r.point_b.x(), r.point_b.y(), r.point_b.z());
@@ -77,6 +80,7 @@ std::unique_ptr<Loaded> load(const std::string& path, const std::string& mesh_pa
 int run_query(const QueryArgs& args) {
     if (std::isfinite(args.max_distance) && args.mode != "distance")
         throw Error(ErrorKind::Usage, "--max-distance goes with --mode distance");
+    if (args.no_depth && args.mode != "distance") throw Error(ErrorKind::Usage, "--no-depth goes with --mode distance");
     QueryOptions o;
     o.level = args.level == "bounds" ? QueryLevel::Bounds : args.level == "exact" ? QueryLevel::Exact : QueryLevel::Spheres;
     o.mode = args.mode == "all" ? QueryMode::All : args.mode == "deepest" ? QueryMode::Deepest : QueryMode::Any;
@@ -99,6 +103,7 @@ int run_query(const QueryArgs& args) {
         DistanceOptions d;
         d.level = o.level;
         d.max_distance = args.max_distance;
+        d.depth = !args.no_depth;
         BatchOptions batch;
         batch.threads = args.threads;
         batch.repeat = std::max(1, args.repeat);
@@ -157,6 +162,9 @@ Action add_query_command(CLI::App& app) {
         ->check(CLI::IsMember({"any", "all", "deepest", "distance"}));
     c->add_option("--max-distance", a->max_distance, "With --mode distance: gaps beyond this are written as inf")
         ->check(finite_in(std::numeric_limits<double>::min(), std::numeric_limits<double>::max(), "greater than 0"));
+    c->add_flag("--no-depth", a->no_depth,
+                "With --mode distance: overlapping poses are written as 0 with empty points, without the deepest "
+                "overlap's walk (as FCL's distance answers)");
     c->add_option("--repeat", a->repeat, "Repeats per pose; ns is their median")->check(CLI::Range(1, 1000000));
     c->add_option("--threads", a->threads,
                   "Poses queried at once (default 1, so that ns is one thread's time; the answers are the same for any count)")

@@ -112,14 +112,16 @@ void run_case(const Case& c, int rounds, double relative_error) {
     const double diag = std::max(c.a.diagonal(), c.b.diagonal());
     const double margin = 0.01 * diag; // max_distance of the "planner's margin" rows
     QueryScratch scratch;
-    std::vector<Method> methods(6);
+    std::vector<Method> methods(10);
     size_t pose_index = 0;
-    auto spt_distance = [&](size_t k, QueryLevel level, double max_distance, double absolute_error = 0) {
-        return [&, k, level, max_distance, absolute_error](const Pose& p) {
+    auto spt_distance = [&](size_t k, QueryLevel level, double max_distance, double absolute_error = 0,
+                            bool depth = true) {
+        return [&, k, level, max_distance, absolute_error, depth](const Pose& p) {
             DistanceOptions o;
             o.level = level;
             o.max_distance = max_distance;
             o.absolute_error = absolute_error;
+            o.depth = depth;
             o.relative_error = relative_error;
             const DistanceResult r = distance_relative(ca->model, cb->model, p, o, scratch);
             methods[k].node_pairs[pose_index] = double(r.counters.node_pairs);
@@ -136,6 +138,11 @@ void run_case(const Case& c, int rounds, double relative_error) {
     // The spheres' own accuracy: no need to tell apart gaps closer than what sampling leaves uncovered.
     const double sampling = ca->uncovered + cb->uncovered;
     methods[5] = {"spt spheres, absolute error = uncovered depths", spt_distance(5, QueryLevel::Spheres, inf, sampling), {}, {}, {}, {}};
+    // Without depth (DistanceOptions::depth): overlapping poses answer 0 at once, as FCL's do.
+    methods[6] = {"spt exact, no depth", spt_distance(6, QueryLevel::Exact, inf, 0, false), {}, {}, {}, {}};
+    methods[7] = {"spt spheres, no depth", spt_distance(7, QueryLevel::Spheres, inf, 0, false), {}, {}, {}, {}};
+    methods[8] = {"spt exact, max 1%, no depth", spt_distance(8, QueryLevel::Exact, margin, 0, false), {}, {}, {}, {}};
+    methods[9] = {"spt spheres, max 1%, no depth", spt_distance(9, QueryLevel::Spheres, margin, 0, false), {}, {}, {}, {}};
     const size_t n = c.poses.size();
     for (Method& m : methods) m.answer.assign(n, 0), m.ns.assign(n, inf), m.node_pairs.assign(n, 0), m.leaf_tests.assign(n, 0);
     // Interleaved rounds: every method through every pose, then again; a pose's time is its best.
@@ -217,8 +224,10 @@ void run_case(const Case& c, int rounds, double relative_error) {
                     split(methods[0], true, methods[0].ns) / split(m, true, m.ns), split(m, false, m.node_pairs),
                     split(m, false, m.leaf_tests), split(m, true, m.node_pairs), split(m, true, m.leaf_tests));
     }
-    std::printf("\nmax_distance 1%% of the diagonal against none (mean): exact %.2fx, spheres %.2fx faster\n\n",
-                mean(methods[1].ns) / mean(methods[3].ns), mean(methods[2].ns) / mean(methods[4].ns));
+    std::printf("\nmax_distance 1%% of the diagonal against none (mean): exact %.2fx, spheres %.2fx faster; "
+                "without depth: exact %.2fx, spheres %.2fx\n\n",
+                mean(methods[1].ns) / mean(methods[3].ns), mean(methods[2].ns) / mean(methods[4].ns),
+                mean(methods[6].ns) / mean(methods[8].ns), mean(methods[7].ns) / mean(methods[9].ns));
     std::fflush(stdout);
 }
 

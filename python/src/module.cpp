@@ -86,11 +86,12 @@ PYBIND11_MODULE(spt, m) {
 
     m.def("distance", &distance, "a"_a, "b"_a, "poses"_a, "level"_a = "spheres",
           "max_distance"_a = std::numeric_limits<double>::infinity(), py::kw_only(), "relative_error"_a = 0.0,
-          "absolute_error"_a = 0.0, "threads"_a = 0, "return_points"_a = false,
+          "absolute_error"_a = 0.0, "depth"_a = true, "threads"_a = 0, "return_points"_a = false,
           "How far B at each pose is from A: a float64 array, `spt query --mode distance`'s distance column "
           "(negative: minus the deepest overlap; inf: farther than max_distance).\n"
           "relative_error: stop within that share of the smallest gap; absolute_error: within that much of it "
-          "(model units). return_points: return (distance, "
+          "(model units). depth=False: overlapping poses give 0 (and NaN points) without the deepest overlap's "
+          "walk, as `--no-depth`. return_points: return (distance, "
           "points_a, points_b), the nearest (or deepest) points, N x 3 in A's frame, NaN where inf.");
 
     m.def(

@@ -67,7 +67,7 @@ py::array_t<bool> collide(const Model& a, const Model& b, const py::handle& pose
 }
 
 py::object distance(const Model& a, const Model& b, const py::handle& poses, const std::string& level,
-                    double max_distance, double relative_error, double absolute_error, int threads,
+                    double max_distance, double relative_error, double absolute_error, bool depth, int threads,
                     bool return_points) {
     check_threads(threads);
     DistanceOptions d;
@@ -75,6 +75,7 @@ py::object distance(const Model& a, const Model& b, const py::handle& poses, con
     d.max_distance = max_distance;
     d.relative_error = relative_error;
     d.absolute_error = absolute_error;
+    d.depth = depth;
     const std::vector<Pose> b_in_a = poses_from_array(poses, "poses");
     std::vector<DistanceResult> results;
     {

@@ -22,8 +22,8 @@ pybind11::array_t<bool> collide(const Model& a, const Model& b, const pybind11::
 /// spt.distance: distance_batch, a float64 a pose (+inf beyond max_distance), with the points when
 /// asked: a tuple (distance, points_a, points_b), N x 3 in A's frame, NaN where beyond.
 pybind11::object distance(const Model& a, const Model& b, const pybind11::handle& poses, const std::string& level,
-                          double max_distance, double relative_error, double absolute_error, int threads,
-                          bool return_points);
+                          double max_distance, double relative_error, double absolute_error, bool depth,
+                          int threads, bool return_points);
 
 /// spt.backtrack: backtrack_relative at every pose along its direction (`spt query`'s backtrack
 /// column), +inf where the search passed max_distance; the poses shared out over `threads` jobs.

@@ -124,6 +124,21 @@ TEST_F(CliQuery, DistanceModeAtTheExactLevelGivesTheTrianglesGap) {
     EXPECT_NEAR(spheres, exact, 0.05 * exact);
 }
 
+TEST_F(CliQuery, NoDepthWritesOverlappingPosesAsZeroWithEmptyPoints) {
+    const auto poses = write("two.txt", "5 0 0 1 0 0 0\n0.2 0 0 1 0 0 0\n");
+    const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string() +
+                          " --mode distance --no-depth --repeat 1");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string header, apart, overlapping;
+    std::getline(lines, header), std::getline(lines, apart), std::getline(lines, overlapping);
+    EXPECT_EQ(apart.rfind("0,0,", 0), 0u) << apart;
+    EXPECT_EQ(apart.find(",,"), std::string::npos) << "an apart pose keeps its points: " << apart;
+    EXPECT_EQ(overlapping.rfind("1,1,0,,,,,,,", 0), 0u) << overlapping;
+    EXPECT_EQ(run("query " + mesh() + " " + mesh() + " --poses " + poses.string() + " --no-depth").code, 1)
+        << "--no-depth without --mode distance";
+}
+
 TEST_F(CliQuery, BadPoseLineIsExitTwoNamingTheLine) {
     const auto poses = write("bad.txt", "# first\n0 0 0 1 0 0 0\n0 0 zero 1 0 0 0\n");
     const Outcome r = run("query " + mesh() + " " + mesh() + " --poses " + poses.string());

@@ -88,6 +88,16 @@ class AnswersOfTheCli(unittest.TestCase):
         self.assertTrue(np.isnan(pa[beyond]).all())
         self.assertEqual(beyond.tolist(), [r["ax"] == "" for r in rows])
 
+    def test_without_depth_overlaps_are_zero_as_the_cli_writes_them(self):
+        dist, pa, _ = spt.distance(self.a, self.b, self.poses, depth=False, return_points=True)
+        rows = query_cli(TORUS, FIGURE, self.poses, "--mode", "distance", "--no-depth")
+        self.assertEqual(as_written(dist), column(rows, "distance"))
+        hit = np.array([r["collide"] == "1" for r in rows])
+        self.assertTrue(hit.any() and not hit.all())
+        self.assertTrue((dist[hit] == 0).all())
+        self.assertTrue(np.isnan(pa[hit]).all())
+        self.assertFalse(np.isnan(pa[~hit]).any())
+
     def test_error_allowances_stay_within_what_they_allow(self):
         full = spt.distance(self.a, self.b, self.poses)
         allowance = 0.02 * self.a.diagonal

@@ -288,3 +288,32 @@ TEST(Distance, AbsoluteErrorStaysWithinItsAllowanceAtEveryLevel) {
     bad.absolute_error = -1;
     EXPECT_THROW(distance_relative(t.model, t.model, Pose{}, bad, scratch), Error);
 }
+
+TEST(Distance, WithoutDepthOverlapAnswersZeroAtOnceAndApartPosesTheSame) {
+    const Object& t = torus();
+    QueryScratch scratch;
+    int overlapping = 0;
+    for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
+        std::vector<Pose> poses = apart_poses(30);
+        for (size_t i = 0; i < 30; ++i) // and as many near the centre, mostly overlapping
+            poses.push_back(Pose::from(0.15 * poses[i].translation, poses[i].rotation));
+        for (const Pose& p : poses) {
+            DistanceOptions full, quick;
+            full.level = quick.level = level;
+            quick.depth = false;
+            const DistanceResult f = distance_relative(t.model, t.model, p, full, scratch);
+            const DistanceResult q = distance_relative(t.model, t.model, p, quick, scratch);
+            EXPECT_EQ(q.collide, f.collide);
+            if (!f.collide) {
+                EXPECT_EQ(q.distance, f.distance);
+                EXPECT_EQ(q.point_a, f.point_a);
+                continue;
+            }
+            ++overlapping;
+            EXPECT_EQ(q.distance, 0);
+            EXPECT_TRUE(q.point_a.array().isNaN().all() && q.point_b.array().isNaN().all());
+            EXPECT_LT(q.counters.node_pairs, f.counters.node_pairs) << "no deepest walk";
+        }
+    }
+    EXPECT_GT(overlapping, 4);
+}

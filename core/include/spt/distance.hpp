@@ -21,6 +21,10 @@ struct DistanceOptions {
     /// (model units, >= 0; FCL's abs_err): the answer is then at most this above the smallest gap.
     /// Both allowances together: no pair left below (1 - relative_error) x best - absolute_error.
     double absolute_error = 0;
+    /// False: overlapping objects are only told apart from the rest (an `any` query, as FCL's
+    /// distance answers 0 for meshes that meet): distance 0, collide, points NaN. A planner that
+    /// needs the clearance of free poses skips the deepest overlap's walk on the others.
+    bool depth = true;
 };
 
 /// Answer of a distance query.
@@ -30,7 +34,8 @@ struct DistanceResult {
     /// Apart: the gap between the nearest two spheres' surfaces (at Exact: triangles). Overlapping:
     /// minus the deepest overlap (the depth of collide_relative's mode deepest). Model units.
     double distance = std::numeric_limits<double>::infinity();
-    Eigen::Vector3d point_a = Eigen::Vector3d::Zero(); ///< on A's sphere, A's frame: nearest (apart) or deepest inside B
+    /// On A's sphere, A's frame: nearest (apart) or deepest inside B; NaN when overlapping without depth.
+    Eigen::Vector3d point_a = Eigen::Vector3d::Zero();
     Eigen::Vector3d point_b = Eigen::Vector3d::Zero(); ///< on B's sphere, A's frame
     QueryCounters counters; ///< node pairs and sphere tests walked
 };

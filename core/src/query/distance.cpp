@@ -7,6 +7,7 @@
 #include "query/pending_pose.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <queue>
 
@@ -39,13 +40,20 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
         throw Error(ErrorKind::Usage,
                     "distance: max_distance must be > 0, relative_error in [0, 1) and absolute_error finite and >= 0");
     DistanceResult res;
-    // Overlapping: the deepest overlap, as mode deepest finds it.
+    // Overlapping: the deepest overlap, as mode deepest finds it (or, without depth, only that
+    // they overlap, as mode any finds it).
     QueryOptions deepest;
     deepest.level = options.level;
-    deepest.mode = QueryMode::Deepest;
+    deepest.mode = options.depth ? QueryMode::Deepest : QueryMode::Any;
     deepest.solids = false;
     const QueryResult hit = collide_relative(a, b, b_in_a, deepest, scratch);
     res.counters = hit.counters;
+    if (hit.collide && !options.depth) {
+        res.collide = true;
+        res.distance = 0;
+        res.point_a = res.point_b = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+        return res;
+    }
     if (hit.collide) {
         const Contact& c = hit.deepest;
         res.collide = true;
