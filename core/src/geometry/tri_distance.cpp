@@ -89,26 +89,45 @@ bool crossing_point(const V3& p, const V3& q, const V3& a, const V3& b, const V3
 } // namespace
 
 TriangleGap triangle_gap(const V3& a0, const V3& a1, const V3& a2, const V3& b0, const V3& b1, const V3& b2,
-                         bool may_meet) {
+                         bool may_meet, double limit) {
     const V3 A[3] = {a0, a1, a2}, B[3] = {b0, b1, b2};
     TriangleGap g;
-    double best = std::numeric_limits<double>::infinity();
+    // Features are skipped by cheap bounds against the nearest so far (or the caller's limit):
+    // a corner's distance to a plane bounds its distance to the face, an edge's ball (its middle,
+    // half its length) bounds its distance to another edge.
+    double best = limit < std::numeric_limits<double>::infinity() ? limit * limit : limit;
+    double reach = limit; // sqrt(best)
+    g.p = a0, g.q = b0;
     auto keep = [&](double d2, const V3& p, const V3& q) {
-        if (d2 < best) best = d2, g.p = p, g.q = q;
+        if (d2 < best) best = d2, reach = std::sqrt(d2), g.p = p, g.q = q;
     };
+    const V3 na = (a1 - a0).cross(a2 - a0), nb = (b1 - b0).cross(b2 - b0);
+    const double la = na.norm(), lb = nb.norm();
+    for (int i = 0; i < 3; ++i) {
+        if (!(lb > 0) || std::abs(nb.dot(A[i] - b0)) < reach * lb) {
+            const V3 y = triangle_closest_point(b0, b1, b2, A[i]);
+            keep((A[i] - y).squaredNorm(), A[i], y);
+        }
+        if (!(la > 0) || std::abs(na.dot(B[i] - a0)) < reach * la) {
+            const V3 x = triangle_closest_point(a0, a1, a2, B[i]);
+            keep((B[i] - x).squaredNorm(), x, B[i]);
+        }
+    }
+    V3 ma[3], mb[3];
+    double ha[3], hb[3];
+    for (int i = 0; i < 3; ++i) {
+        ma[i] = 0.5 * (A[i] + A[(i + 1) % 3]), ha[i] = 0.5 * (A[(i + 1) % 3] - A[i]).norm();
+        mb[i] = 0.5 * (B[i] + B[(i + 1) % 3]), hb[i] = 0.5 * (B[(i + 1) % 3] - B[i]).norm();
+    }
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
+            const double r = reach + ha[i] + hb[j];
+            if ((ma[i] - mb[j]).squaredNorm() >= r * r) continue;
             double s = 0, t = 0;
             const V3 &p0 = A[i], &p1 = A[(i + 1) % 3], &q0 = B[j], &q1 = B[(j + 1) % 3];
             const double d2 = segments_closest(p0, p1, q0, q1, s, t);
             keep(d2, p0 + s * (p1 - p0), q0 + t * (q1 - q0));
         }
-    for (int i = 0; i < 3; ++i) {
-        const V3 y = triangle_closest_point(b0, b1, b2, A[i]);
-        keep((A[i] - y).squaredNorm(), A[i], y);
-        const V3 x = triangle_closest_point(a0, a1, a2, B[i]);
-        keep((B[i] - x).squaredNorm(), x, B[i]);
-    }
     g.distance = std::sqrt(best);
     if (may_meet && g.distance > 0 && triangles_intersect(a0, a1, a2, b0, b1, b2)) {
         // One pierces the other: an edge's crossing of the other's plane that lies in that

@@ -2,6 +2,7 @@
 /// Closest points between two triangles, for the exact level's distance query: the same
 /// answer as FCL's TriangleDistance, in double.
 #include <Eigen/Core>
+#include <limits>
 
 namespace spt {
 
@@ -13,10 +14,11 @@ struct TriangleGap {
 
 /// Distance and closest points of triangles (a0, a1, a2) and (b0, b1, b2); triangles that
 /// meet (decided exactly) answer 0 and a common point. A zero-area triangle counts as its edges.
-/// `may_meet` false: the caller knows they do not cross (the exact test is skipped).
+/// `may_meet` false: the caller knows they do not cross (the exact test is skipped). `limit`: only
+/// a distance below it is of use; at or above it the answer is some distance >= limit.
 TriangleGap triangle_gap(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
                          const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2,
-                         bool may_meet = true);
+                         bool may_meet = true, double limit = std::numeric_limits<double>::infinity());
 
 /// Closest point of segment [p0, p1] to x is p0 + s (p1 - p0); returns s in [0, 1].
 double segment_closest_parameter(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& x);

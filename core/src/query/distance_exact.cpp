@@ -24,12 +24,32 @@ float shadow(const Obb& b, const Eigen::Vector3f& u) {
     return s;
 }
 
-// A lower bound of the distance between the contents of boxes `a` and `b` (one frame): their
-// largest gap along a face normal of either (0 if every normal sees them overlap).
-float box_gap(const Obb& a, const Obb& b) {
-    if (a.half[0] < 0 || b.half[0] < 0) return 0; // an empty box: leave it to the spheres
+// The point of box `b` nearest to x.
+Eigen::Vector3f clamp_into(const Obb& b, const Eigen::Vector3f& x) {
+    const Eigen::Vector3f c = v3(b.center), d = x - c;
+    Eigen::Vector3f p = c;
+    for (int k = 0; k < 3; ++k) p += std::clamp(v3(b.axis[k]).dot(d), -b.half[k], b.half[k]) * v3(b.axis[k]);
+    return p;
+}
+
+// A lower bound of the distance between the contents of boxes `a` and `b` (one frame), tightened
+// step by step until it reaches `enough` (then no tighter bound is of use): their gap along the
+// line of centres, along the line between a near point of each, then along each face normal.
+float box_gap(const Obb& a, const Obb& b, float gap, float enough) {
+    if (a.half[0] < 0 || b.half[0] < 0) return gap; // an empty box: leave it to the spheres
     const Eigen::Vector3f d = v3(b.center) - v3(a.center);
-    float gap = 0;
+    // The line of centres first: boxes apart along a diagonal are told by it, not by a face.
+    const float length = d.norm();
+    if (length > 0) gap = std::max(gap, length - shadow(a, d / length) - shadow(b, d / length));
+    if (gap >= enough) return gap;
+    // B's centre clamped into A's box, that point clamped into B's: one step of alternating
+    // projections, near the direction of the boxes' closest pair.
+    const Eigen::Vector3f pa = clamp_into(a, v3(b.center)), pb = clamp_into(b, pa), e = pb - pa;
+    if (const float n = e.norm(); n > 0) {
+        const Eigen::Vector3f u = e / n;
+        gap = std::max(gap, std::abs(u.dot(d)) - shadow(a, u) - shadow(b, u));
+        if (gap >= enough) return gap;
+    }
     for (int k = 0; k < 3; ++k) {
         const Eigen::Vector3f u = v3(a.axis[k]);
         gap = std::max(gap, std::abs(u.dot(d)) - a.half[k] - shadow(b, u));
@@ -70,10 +90,13 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     };
     // Float bounds are lowered by the frame's rounding margin so that rounding never prunes the
     // nearest pair.
-    auto lower_bound = [&](uint32_t i, uint32_t j) {
+    // `enough`: a bound there prunes the pair, so the tightening stops.
+    auto lower_bound = [&](uint32_t i, uint32_t j, double enough) {
         const Obb& bb = b_box(j);
         const float centres = (v3(an[i].center) - v3(bb.center)).norm() - an[i].radius - bn[j].radius;
-        return std::max(centres, box_gap(an[i].box(), bb)) - f.margin;
+        const float stop = float(std::min(enough, 1e30)) + f.margin;
+        if (centres >= stop) return centres - f.margin;
+        return box_gap(an[i].box(), bb, centres, stop) - f.margin;
     };
     double best = options.max_distance;
     // A pair is worth a visit while it could beat the best by more than the allowances.
@@ -89,7 +112,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         std::push_heap(open.begin(), open.end(), std::greater<Bound>());
     };
     ++res.counters.bound_tests;
-    if (const float g = lower_bound(0, 0); g < best) push(g, 0, 0);
+    if (const float g = lower_bound(0, 0, best); g < best) push(g, 0, 0);
     while (!open.empty()) {
         std::pop_heap(open.begin(), open.end(), std::greater<Bound>());
         const Bound top = open.back();
@@ -115,7 +138,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
                     const Eigen::Vector3d na3 = (ta3[1] - ta3[0]).cross(ta3[2] - ta3[0]).normalized();
                     const Eigen::Vector3d nb3 = (tb3[1] - tb3[0]).cross(tb3[2] - tb3[0]).normalized();
                     if (!worth(std::max(plane_gap(ta3, na3, tb3), plane_gap(tb3, nb3, ta3)))) continue;
-                    const TriangleGap g = triangle_gap(ta3[0], ta3[1], ta3[2], tb3[0], tb3[1], tb3[2], false);
+                    const TriangleGap g = triangle_gap(ta3[0], ta3[1], ta3[2], tb3[0], tb3[1], tb3[2], false, best);
                     if (g.distance < best) best = g.distance, best_a = g.p, best_b = g.q, found = true;
                 }
             }
@@ -127,7 +150,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         for (uint32_t c : {first, second}) {
             const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
             ++res.counters.bound_tests;
-            if (const float g = lower_bound(i, j); worth(g)) push(g, i, j);
+            if (const float g = lower_bound(i, j, best * keep - options.absolute_error); worth(g)) push(g, i, j);
         }
     }
     if (!found) return;
