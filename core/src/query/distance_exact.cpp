@@ -33,12 +33,21 @@ Eigen::Vector3f clamp_into(const Obb& b, const Eigen::Vector3f& x) {
 }
 
 // A lower bound of the distance between the contents of boxes `a` and `b` (one frame), tightened
-// step by step until it reaches `enough` (then no tighter bound is of use): their gap along the
-// line of centres, along the line between a near point of each, then along each face normal.
+// step by step until it reaches `enough` (then no tighter bound is of use): their gap along their
+// thinnest faces' normals, the line of centres, the line between a near point of each, then the
+// other face normals.
 float box_gap(const Obb& a, const Obb& b, float gap, float enough) {
     if (a.half[0] < 0 || b.half[0] < 0) return gap; // an empty box: leave it to the spheres
     const Eigen::Vector3f d = v3(b.center) - v3(a.center);
-    // The line of centres first: boxes apart along a diagonal are told by it, not by a face.
+    auto along_face = [&](int k) { // each box's k-th face normal
+        const Eigen::Vector3f u = v3(a.axis[k]), w = v3(b.axis[k]);
+        gap = std::max(gap, std::abs(u.dot(d)) - a.half[k] - shadow(b, u));
+        gap = std::max(gap, std::abs(w.dot(d)) - b.half[k] - shadow(a, w));
+    };
+    // A flat patch's own normal first (axis 0, of least spread): facing patches are told by it.
+    along_face(0);
+    if (gap >= enough) return gap;
+    // The line of centres: boxes apart along a diagonal are told by it, not by a face.
     const float length = d.norm();
     if (length > 0) gap = std::max(gap, length - shadow(a, d / length) - shadow(b, d / length));
     if (gap >= enough) return gap;
@@ -50,12 +59,7 @@ float box_gap(const Obb& a, const Obb& b, float gap, float enough) {
         gap = std::max(gap, std::abs(u.dot(d)) - shadow(a, u) - shadow(b, u));
         if (gap >= enough) return gap;
     }
-    for (int k = 0; k < 3; ++k) {
-        const Eigen::Vector3f u = v3(a.axis[k]);
-        gap = std::max(gap, std::abs(u.dot(d)) - a.half[k] - shadow(b, u));
-        const Eigen::Vector3f w = v3(b.axis[k]);
-        gap = std::max(gap, std::abs(w.dot(d)) - b.half[k] - shadow(a, w));
-    }
+    along_face(1), along_face(2);
     return gap;
 }
 
