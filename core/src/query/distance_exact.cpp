@@ -1,7 +1,7 @@
 // Exact distance between two triangle soups: best-first branch and bound over pairs of nodes of
 // their triangle trees, each pair's lower bound the largest of its bounding spheres' gap and the
-// gaps along the six face normals of the two boxes (a flat patch's box is far tighter than its
-// sphere); leaves by triangle_gap.
+// boxes' gaps along a few separating directions (a flat patch's box is far tighter than its
+// sphere); leaves by triangle_gap after cheaper bounds of each triangle pair.
 #include "query/distance_exact.hpp"
 #include "geometry/tri_distance.hpp"
 #include "query/exact_data.hpp"
