@@ -269,20 +269,25 @@ TEST(Distance, AbsoluteErrorStaysWithinItsAllowanceAtEveryLevel) {
     const Object& t = torus();
     QueryScratch scratch;
     for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact}) {
-        int apart = 0;
-        for (const Pose& p : apart_poses(40)) {
+        int apart = 0, overlapping = 0;
+        std::vector<Pose> poses = apart_poses(40);
+        for (size_t i = 0; i < 20; ++i) // and some near the centre, mostly overlapping
+            poses.push_back(Pose::from(0.15 * poses[i].translation, poses[i].rotation));
+        for (const Pose& p : poses) {
             DistanceOptions full, rough;
             full.level = rough.level = level;
             rough.absolute_error = 0.2;
             const DistanceResult f = distance_relative(t.model, t.model, p, full, scratch);
-            if (f.collide) continue;
-            ++apart;
             const DistanceResult r = distance_relative(t.model, t.model, p, rough, scratch);
-            EXPECT_GE(r.distance, f.distance - 1e-9);
-            EXPECT_LE(r.distance, f.distance + 0.2 + 1e-9);
+            (f.collide ? overlapping : apart) += 1;
+            // Apart, or overlapping (minus the deepest depth): at most the allowance above, never below.
+            EXPECT_EQ(r.collide, f.collide);
+            EXPECT_GE(r.distance, f.distance - 1e-6);
+            EXPECT_LE(r.distance, f.distance + 0.2 + 1e-6);
             EXPECT_LE(r.counters.node_pairs, f.counters.node_pairs);
         }
         EXPECT_GT(apart, 20);
+        EXPECT_GT(overlapping, 4);
     }
     DistanceOptions bad;
     bad.absolute_error = -1;

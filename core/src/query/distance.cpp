@@ -5,6 +5,7 @@
 #include "query/distance_exact.hpp"
 #include "query/model_access.hpp"
 #include "query/pending_pose.hpp"
+#include "query/query_run.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
 #include <limits>
@@ -46,7 +47,10 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     deepest.level = options.level;
     deepest.mode = options.depth ? QueryMode::Deepest : QueryMode::Any;
     deepest.solids = false;
-    const QueryResult hit = collide_relative(a, b, b_in_a, deepest, scratch);
+    // The absolute allowance holds for an overlap's depth too: the answer may be that much above -depth.
+    const QueryResult hit = options.depth && options.absolute_error > 0
+                                ? detail::deepest_within(a, b, b_in_a, deepest, float(options.absolute_error), scratch)
+                                : collide_relative(a, b, b_in_a, deepest, scratch);
     res.counters = hit.counters;
     if (hit.collide && !options.depth) {
         res.collide = true;

@@ -174,8 +174,9 @@ void QueryRun::run() {
         // Nor deeper than their largest spheres' radii together: once the balls lie deep in each
         // other, that is the bound that prunes.
         if (deepest && have_best &&
-            (!(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth)) ||
-             (max_r_a && !(max_r_a[ref_a & ~kActive] + max_r_b[ref_b & ~kActive] + pad > float(res.deepest.depth)))))
+            (!(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth) + deepest_slack) ||
+             (max_r_a &&
+              !(max_r_a[ref_a & ~kActive] + max_r_b[ref_b & ~kActive] + pad > float(res.deepest.depth) + deepest_slack))))
             continue;
         // Flat nodes of two-sided spheres are discs: two sheets side by side are apart here,
         // not after a walk down to every pair of their leaves.
@@ -304,12 +305,13 @@ namespace {
 // collide_relative; with `deep` (mode all, not exact) the walk stops at the first leaf pair
 // holding a deep pair and says so there.
 QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
-                           const QueryOptions& options, QueryScratch& scratch, bool* deep) {
+                           const QueryOptions& options, QueryScratch& scratch, bool* deep, float slack = 0) {
     // A lazy pose is posed where this walk descends at level spheres; elsewhere in full first.
     const bool lazy = detail::pending_of(a) || detail::pending_of(b);
     if (lazy && options.level != QueryLevel::Spheres) detail::settle(a), detail::settle(b);
     QueryRun run(a, b, b_in_a, options, scratch);
     run.stop_when_deep = deep != nullptr;
+    run.deepest_slack = slack;
     if (run.f.apart) { // the models cannot meet: one bound test, decided in double
         run.res.counters.bound_tests = 1;
         return run.res;
@@ -323,7 +325,7 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
             (posed_triangles_needed(a) || posed_triangles_needed(b))) {
             // Containment asks the posed triangles: pose the rest and ask again.
             detail::settle(a), detail::settle(b);
-            return relative_query(a, b, b_in_a, options, scratch, deep);
+            return relative_query(a, b, b_in_a, options, scratch, deep, slack);
         }
         if (!run.stopped_deep) run.check_containment();
     } else {
@@ -357,6 +359,11 @@ QueryResult world_query(const CollisionModel& a, const Pose& pose_a, const Colli
 QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                              const QueryOptions& options, QueryScratch& scratch) {
     return relative_query(a, b, b_in_a, options, scratch, nullptr);
+}
+
+QueryResult detail::deepest_within(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                                   const QueryOptions& options, float slack, QueryScratch& scratch) {
+    return relative_query(a, b, b_in_a, options, scratch, nullptr, slack);
 }
 
 QueryResult collide_all_unless_deep(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,

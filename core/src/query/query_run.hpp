@@ -46,6 +46,12 @@ struct QueryFrame {
 
 namespace detail {
 
+// collide_relative in mode deepest, allowed to answer a depth up to `slack` short of the deepest
+// (model units): node pairs that cannot beat the best by more are not walked. Distance queries
+// with an absolute error allowance ask this.
+QueryResult deepest_within(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
+                           const QueryOptions& options, float slack, QueryScratch& scratch);
+
 // The exact backtrack's question at one shift (response.cpp): B moving on by s * back (unit,
 // A's local frame), the largest s at which a pair overlapping now stops overlapping. Answered
 // by a walk that keeps only that root and skips node pairs whose own bounding spheres part
@@ -170,6 +176,7 @@ struct QueryRun {
     QueryFrame f;
     bool exact;
     bool have_best = false;
+    float deepest_slack = 0;    // mode deepest: a pair must beat the best by more than this to be walked
     bool roots_overlap = false; // set by the walks: containment is possible only then
     bool stop_when_deep = false; // collide_all_unless_deep: the walk ends at a deep leaf pair...
     bool stopped_deep = false;   // ...and says so here
