@@ -83,20 +83,12 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     const QueryFrame f(a, b, b_in_a, 0);
     ScratchBuffers& s = buffers_of(scratch);
     prepare_scratch(s, a, b, true);
-    // B's vertices and node boxes moved into A's local frame where the walk first needs them.
-    auto b_vertex = [&](uint32_t v) -> const Eigen::Vector3d& {
-        if (s.vert_stamp[v] != s.epoch) s.vert_stamp[v] = s.epoch, s.bverts[v] = f.Rd * eb.positions[v] + f.td;
-        return s.bverts[v];
-    };
-    auto b_box = [&](uint32_t j) -> const Obb& {
-        if (s.bbox_stamp[j] != s.epoch) s.bbox_stamp[j] = s.epoch, s.bboxes[j] = placed(bn[j].box(), f.R, f.t);
-        return s.bboxes[j];
-    };
+    detail::MovedB moved{s, eb, f}; // B's vertices, triangle spheres and boxes, where the walk needs them
     // Float bounds are lowered by the frame's rounding margin so that rounding never prunes the
     // nearest pair.
     // `enough`: a bound there prunes the pair, so the tightening stops.
     auto lower_bound = [&](uint32_t i, uint32_t j, double enough) {
-        const Obb& bb = b_box(j);
+        const Obb& bb = moved.tri_box(j);
         const float centres = (v3(an[i].center) - v3(bb.center)).norm() - an[i].radius - bn[j].radius;
         const float stop = float(std::min(enough, 1e30)) + f.margin;
         if (centres >= stop) return centres - f.margin;
@@ -128,18 +120,25 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
             for (uint32_t p = na.first; p < na.first + na.count; ++p) {
                 const uint32_t ta = ea.tri_order[p];
                 const float* sa = &ea.tri_sphere[4 * size_t(ta)];
+                // A's triangle and its normal, made for the first of B's triangles that passes
+                // the spheres and kept for the rest.
+                Eigen::Vector3d ta3[3], na3;
+                bool a_made = false;
                 for (uint32_t q = nb.first; q < nb.first + nb.count; ++q) {
                     const uint32_t tb = eb.tri_order[q];
-                    const float* sb = &eb.tri_sphere[4 * size_t(tb)];
-                    const Eigen::Vector3f cb = f.R * v3(sb) + f.t;
-                    if (!worth((v3(sa) - cb).norm() - sa[3] - sb[3] - f.margin)) continue;
+                    const float* sb = moved.tri_sphere(tb);
+                    if (!worth((v3(sa) - v3(sb)).norm() - sa[3] - sb[3] - f.margin)) continue;
                     ++res.counters.triangle_tests;
-                    const Triangle &x = ea.triangles[ta], &y = eb.triangles[tb];
-                    const Eigen::Vector3d ta3[3] = {ea.positions[x[0]], ea.positions[x[1]], ea.positions[x[2]]};
-                    const Eigen::Vector3d tb3[3] = {b_vertex(y[0]), b_vertex(y[1]), b_vertex(y[2])};
+                    if (!a_made) {
+                        const Triangle& x = ea.triangles[ta];
+                        ta3[0] = ea.positions[x[0]], ta3[1] = ea.positions[x[1]], ta3[2] = ea.positions[x[2]];
+                        na3 = (ta3[1] - ta3[0]).cross(ta3[2] - ta3[0]).normalized();
+                        a_made = true;
+                    }
+                    const Triangle& y = eb.triangles[tb];
+                    const Eigen::Vector3d tb3[3] = {moved.vertex(y[0]), moved.vertex(y[1]), moved.vertex(y[2])};
                     // Facing patches are nearest corner to face: each plane's gap is then the
                     // distance itself, at a fraction of the full test's cost.
-                    const Eigen::Vector3d na3 = (ta3[1] - ta3[0]).cross(ta3[2] - ta3[0]).normalized();
                     const Eigen::Vector3d nb3 = (tb3[1] - tb3[0]).cross(tb3[2] - tb3[0]).normalized();
                     if (!worth(std::max(plane_gap(ta3, na3, tb3), plane_gap(tb3, nb3, ta3)))) continue;
                     const TriangleGap g = triangle_gap(ta3[0], ta3[1], ta3[2], tb3[0], tb3[1], tb3[2], false, best);

@@ -24,33 +24,11 @@ bool sphere_misses_box(const TriangleNode& n, const Eigen::Vector3f& c, float r)
 
 } // namespace
 
-const Eigen::Vector3d& QueryRun::b_vertex(uint32_t v) {
-    if (s.vert_stamp[v] != s.epoch) {
-        s.vert_stamp[v] = s.epoch;
-        s.bverts[v] = f.Rd * EB.positions[v] + f.td;
-    }
-    return s.bverts[v];
-}
+const Eigen::Vector3d& QueryRun::b_vertex(uint32_t v) { return detail::MovedB{s, EB, f}.vertex(v); }
 
-const float* QueryRun::b_tri_sphere(uint32_t tri) {
-    float* out = &s.btri[4 * size_t(tri)];
-    if (s.tri_stamp[tri] != s.epoch) {
-        s.tri_stamp[tri] = s.epoch;
-        const float* in = &EB.tri_sphere[4 * size_t(tri)];
-        const Eigen::Vector3f c = f.R * Eigen::Vector3f(in[0], in[1], in[2]) + f.t;
-        out[0] = c.x(), out[1] = c.y(), out[2] = c.z(), out[3] = in[3];
-    }
-    return out;
-}
+const float* QueryRun::b_tri_sphere(uint32_t tri) { return detail::MovedB{s, EB, f}.tri_sphere(tri); }
 
-const Obb& QueryRun::b_tri_box(uint32_t j) {
-    Obb& out = s.bboxes[j];
-    if (s.bbox_stamp[j] != s.epoch) {
-        s.bbox_stamp[j] = s.epoch;
-        out = placed(EB.tri_nodes[j].box(), f.R, f.t);
-    }
-    return out;
-}
+const Obb& QueryRun::b_tri_box(uint32_t j) { return detail::MovedB{s, EB, f}.tri_box(j); }
 
 bool QueryRun::triangle_pair(uint32_t ta, uint32_t tb) {
     const float* sa = &EA.tri_sphere[4 * size_t(ta)];

@@ -46,6 +46,36 @@ struct QueryFrame {
 
 namespace detail {
 
+// B's exact-level data moved into A's frame at most once a query, where a walk first needs it: the
+// scratch's stamped slots, which prepare_scratch sizes and gives a new epoch. The exact collide
+// walk and the exact distance share it.
+struct MovedB {
+    ScratchBuffers& s;
+    const ExactData& e; // B's
+    const QueryFrame& f;
+    // Vertex v of B, in double.
+    const Eigen::Vector3d& vertex(uint32_t v) {
+        if (s.vert_stamp[v] != s.epoch) s.vert_stamp[v] = s.epoch, s.bverts[v] = f.Rd * e.positions[v] + f.td;
+        return s.bverts[v];
+    }
+    // The bounding sphere of B's triangle `tri`: centre xyz, radius.
+    const float* tri_sphere(uint32_t tri) {
+        float* out = &s.btri[4 * size_t(tri)];
+        if (s.tri_stamp[tri] != s.epoch) {
+            s.tri_stamp[tri] = s.epoch;
+            const float* in = &e.tri_sphere[4 * size_t(tri)];
+            const Eigen::Vector3f c = f.R * Eigen::Vector3f(in[0], in[1], in[2]) + f.t;
+            out[0] = c.x(), out[1] = c.y(), out[2] = c.z(), out[3] = in[3];
+        }
+        return out;
+    }
+    // The box of node j of B's triangle tree.
+    const Obb& tri_box(uint32_t j) {
+        if (s.bbox_stamp[j] != s.epoch) s.bbox_stamp[j] = s.epoch, s.bboxes[j] = placed(e.tri_nodes[j].box(), f.R, f.t);
+        return s.bboxes[j];
+    }
+};
+
 // collide_relative in mode deepest, allowed to answer a depth up to `slack` short of the deepest
 // (model units): node pairs that cannot beat the best by more are not walked. Distance queries
 // with an absolute error allowance ask this.
