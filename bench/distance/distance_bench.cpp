@@ -17,7 +17,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <random>
 #include <string>
@@ -82,10 +81,11 @@ std::vector<Pose> box_poses(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi
     return out;
 }
 
+// A row of the table: FCL's distance, or spt's with these options.
 struct Method {
     std::string name;
-    std::function<double(const Pose&)> run; // the distance (+inf beyond a maximum)
-    std::vector<double> answer, ns;
+    std::optional<DistanceOptions> spt;         // none: FCL
+    std::vector<double> answer, ns;             // a pose's distance (+inf beyond a maximum), best time
     std::vector<double> node_pairs, leaf_tests; // spt: a pose's counters
 };
 
@@ -112,48 +112,47 @@ void run_case(const Case& c, int rounds, double relative_error) {
     const double diag = std::max(c.a.diagonal(), c.b.diagonal());
     const double margin = 0.01 * diag; // max_distance of the "planner's margin" rows
     QueryScratch scratch;
-    std::vector<Method> methods(10);
-    size_t pose_index = 0;
-    auto spt_distance = [&](size_t k, QueryLevel level, double max_distance, double absolute_error = 0,
-                            bool depth = true) {
-        return [&, k, level, max_distance, absolute_error, depth](const Pose& p) {
-            DistanceOptions o;
-            o.level = level;
-            o.max_distance = max_distance;
-            o.absolute_error = absolute_error;
-            o.depth = depth;
-            o.relative_error = relative_error;
-            const DistanceResult r = distance_relative(ca->model, cb->model, p, o, scratch);
-            methods[k].node_pairs[pose_index] = double(r.counters.node_pairs);
-            methods[k].leaf_tests[pose_index] = double(r.counters.sphere_tests + r.counters.triangle_tests);
-            return r.beyond ? std::numeric_limits<double>::infinity() : r.distance;
-        };
-    };
     const double inf = std::numeric_limits<double>::infinity();
-    methods[0] = {"FCL distance (OBBRSS)", [&](const Pose& p) { return fcl.distance(p); }, {}, {}, {}, {}};
-    methods[1] = {"spt exact", spt_distance(1, QueryLevel::Exact, inf), {}, {}, {}, {}};
-    methods[2] = {"spt spheres", spt_distance(2, QueryLevel::Spheres, inf), {}, {}, {}, {}};
-    methods[3] = {"spt exact, max 1% of diagonal", spt_distance(3, QueryLevel::Exact, margin), {}, {}, {}, {}};
-    methods[4] = {"spt spheres, max 1% of diagonal", spt_distance(4, QueryLevel::Spheres, margin), {}, {}, {}, {}};
+    auto row = [&](std::string name, QueryLevel level, double max_distance, double absolute_error = 0,
+                   bool depth = true) {
+        DistanceOptions o;
+        o.level = level;
+        o.max_distance = max_distance;
+        o.absolute_error = absolute_error;
+        o.depth = depth;
+        o.relative_error = relative_error;
+        return Method{std::move(name), o, {}, {}, {}, {}};
+    };
     // The spheres' own accuracy: no need to tell apart gaps closer than what sampling leaves uncovered.
     const double sampling = ca->uncovered + cb->uncovered;
-    methods[5] = {"spt spheres, absolute error = uncovered depths", spt_distance(5, QueryLevel::Spheres, inf, sampling), {}, {}, {}, {}};
-    // Without depth (DistanceOptions::depth): overlapping poses answer 0 at once, as FCL's do.
-    methods[6] = {"spt exact, no depth", spt_distance(6, QueryLevel::Exact, inf, 0, false), {}, {}, {}, {}};
-    methods[7] = {"spt spheres, no depth", spt_distance(7, QueryLevel::Spheres, inf, 0, false), {}, {}, {}, {}};
-    methods[8] = {"spt exact, max 1%, no depth", spt_distance(8, QueryLevel::Exact, margin, 0, false), {}, {}, {}, {}};
-    methods[9] = {"spt spheres, max 1%, no depth", spt_distance(9, QueryLevel::Spheres, margin, 0, false), {}, {}, {}, {}};
+    std::vector<Method> methods = {
+        {"FCL distance (OBBRSS)", std::nullopt, {}, {}, {}, {}},
+        row("spt exact", QueryLevel::Exact, inf),
+        row("spt spheres", QueryLevel::Spheres, inf),
+        row("spt exact, max 1% of diagonal", QueryLevel::Exact, margin),
+        row("spt spheres, max 1% of diagonal", QueryLevel::Spheres, margin),
+        row("spt spheres, absolute error = uncovered depths", QueryLevel::Spheres, inf, sampling),
+        // Without depth (DistanceOptions::depth): overlapping poses answer 0 at once, as FCL's do.
+        row("spt exact, no depth", QueryLevel::Exact, inf, 0, false),
+        row("spt spheres, no depth", QueryLevel::Spheres, inf, 0, false),
+        row("spt exact, max 1%, no depth", QueryLevel::Exact, margin, 0, false),
+        row("spt spheres, max 1%, no depth", QueryLevel::Spheres, margin, 0, false),
+    };
     const size_t n = c.poses.size();
     for (Method& m : methods) m.answer.assign(n, 0), m.ns.assign(n, inf), m.node_pairs.assign(n, 0), m.leaf_tests.assign(n, 0);
     // Interleaved rounds: every method through every pose, then again; a pose's time is its best.
     for (int r = 0; r < rounds; ++r)
         for (Method& m : methods) {
             for (size_t i = 0; i < n; ++i) {
-                pose_index = i;
+                DistanceResult d;
                 const auto t0 = Clock::now();
-                m.answer[i] = m.run(c.poses[i]);
+                if (m.spt) d = distance_relative(ca->model, cb->model, c.poses[i], *m.spt, scratch);
+                else d.distance = fcl.distance(c.poses[i]);
                 const double ns = double(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count());
                 m.ns[i] = std::min(m.ns[i], ns);
+                m.answer[i] = d.beyond ? inf : d.distance;
+                m.node_pairs[i] = double(d.counters.node_pairs);
+                m.leaf_tests[i] = double(d.counters.sphere_tests + d.counters.triangle_tests);
             }
         }
 
@@ -188,17 +187,17 @@ void run_case(const Case& c, int rounds, double relative_error) {
             if ((truth[i] <= 0) == meeting) v.push_back(of[i]);
         return median(v);
     };
-    for (size_t k = 0; k < methods.size(); ++k) {
-        const Method& m = methods[k];
-        const bool exact = m.name.find("exact") != std::string::npos, capped = m.name.find("max") != std::string::npos;
+    for (const Method& m : methods) {
+        const bool exact = m.spt && m.spt->level == QueryLevel::Exact;
+        const bool capped = m.spt && std::isfinite(m.spt->max_distance);
         size_t agree = 0;
         double worst = 0;
         // A row with an absolute error allowance may answer that much above the spheres' gap.
-        const double above_here = above + (k == 5 ? sampling : 0);
+        const double above_here = above + (m.spt ? m.spt->absolute_error : 0);
         for (size_t i = 0; i < n; ++i) {
             const double f = truth[i], d = m.answer[i];
             bool ok = true;
-            if (k == 0) {
+            if (!m.spt) {
                 ok = true;
             } else if (capped && f >= margin + tol) {
                 ok = std::isinf(d) || (!exact && d <= f + above); // beyond the margin: "more than max"
