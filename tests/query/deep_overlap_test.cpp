@@ -56,6 +56,25 @@ TEST(DeepOverlap, DeepestPairOfAHalfRadiusOverlapIsTheFirstDeepestOfEveryPair) {
     }
 }
 
+TEST(DeepOverlap, AnAllowanceFindsADeepPairWithinItInFewerNodePairs) {
+    // The deepest-bounded child first, then every pair that cannot beat the best by more than the
+    // allowance skipped: never deeper than the deepest, never shallower by more than the allowance.
+    QueryScratch s;
+    QueryOptions q;
+    q.mode = QueryMode::Deepest;
+    for (double gap : {0.99, 0.9, 0.75, 0.6}) {
+        const Pose p = offset(gap);
+        const QueryResult exact = collide_relative(ball(), ball(), p, q, s);
+        for (float slack : {0.001f, 0.01f}) {
+            const QueryResult within = detail::deepest_within(ball(), ball(), p, q, slack, s);
+            ASSERT_TRUE(within.collide);
+            EXPECT_LE(within.deepest.depth, exact.deepest.depth) << "gap " << gap;
+            EXPECT_GE(within.deepest.depth, exact.deepest.depth - slack) << "gap " << gap;
+            EXPECT_LT(within.counters.node_pairs, exact.counters.node_pairs) << "gap " << gap;
+        }
+    }
+}
+
 TEST(DeepOverlap, AShallowContactListsEveryPairAndACrossingOneStopsAtItsFirstDeepPair) {
     QueryScratch s;
     QueryOptions all;

@@ -116,12 +116,12 @@ struct VisitStack {
 // the copy wait on narrower stores (store forwarding fails; this doubled the time of
 // a walk to a contact).
 void push_visit(VisitStack& stack, uint32_t a, uint32_t b, float ax, float ay, float az, const Eigen::Vector3f& cb,
-                float ra, float rb, float d2) {
+                float ra, float rb, float d2, float cap) {
     detail::NodePairVisit& v = stack.buf[stack.size++];
     v.a = a, v.b = b;
     v.ca[0] = ax, v.ca[1] = ay, v.ca[2] = az;
     v.cb[0] = cb.x(), v.cb[1] = cb.y(), v.cb[2] = cb.z();
-    v.ra = ra, v.rb = rb, v.d2 = d2;
+    v.ra = ra, v.rb = rb, v.d2 = d2, v.cap = cap;
 }
 
 } // namespace
@@ -156,6 +156,11 @@ void QueryRun::run() {
     ++res.counters.bound_tests;
     if (const float prune = ra + rb + pad; d2 > prune * prune) return;
     roots_overlap = true;
+    // Mode deepest: the depth bound of the pair in hand, no more than its ancestors' (a child's
+    // ball can poke out of its parent's). With an allowance the descent takes the deepest-bounded
+    // child first, so that a pair near the deepest comes early and the allowance prunes the rest.
+    float cap = std::numeric_limits<float>::infinity();
+    const bool deepest_first = deepest && deepest_slack > 0;
     bool carried = true;
     for (;;) {
         if (!carried) {
@@ -164,7 +169,7 @@ void QueryRun::run() {
             ref_a = top.a, ref_b = top.b;
             ca = Eigen::Vector3f(top.ca[0], top.ca[1], top.ca[2]);
             cb = Eigen::Vector3f(top.cb[0], top.cb[1], top.cb[2]);
-            ra = top.ra, rb = top.rb, d2 = top.d2;
+            ra = top.ra, rb = top.rb, d2 = top.d2, cap = top.cap;
         }
         carried = false;
         ++res.counters.node_pairs;
@@ -173,11 +178,11 @@ void QueryRun::run() {
         // Deepest: no sphere below this pair can be deeper than the bounds' overlap.
         // Nor deeper than their largest spheres' radii together: once the balls lie deep in each
         // other, that is the bound that prunes.
-        if (deepest && have_best &&
-            (!(ra + rb + pad - std::sqrt(d2) > float(res.deepest.depth) + deepest_slack) ||
-             (max_r_a &&
-              !(max_r_a[ref_a & ~kActive] + max_r_b[ref_b & ~kActive] + pad > float(res.deepest.depth) + deepest_slack))))
-            continue;
+        if (deepest) {
+            cap = std::min(cap, ra + rb + pad - std::sqrt(d2));
+            if (max_r_a) cap = std::min(cap, max_r_a[ref_a & ~kActive] + max_r_b[ref_b & ~kActive] + pad);
+            if (have_best && !(cap > float(res.deepest.depth) + deepest_slack)) continue;
+        }
         // Flat nodes of two-sided spheres are discs: two sheets side by side are apart here,
         // not after a walk down to every pair of their leaves.
         if (flat && node_is_disc(disc_a, ref_a) | node_is_disc(disc_b, ref_b) &&
@@ -246,10 +251,10 @@ void QueryRun::run() {
         stack.make_room(4);
         auto push = [&](int k) {
             if (side_a)
-                push_visit(stack, w.ref[k], ref_b, lx[k], ly[k], lz[k], cb, lr[k], rb, ld2[k]);
+                push_visit(stack, w.ref[k], ref_b, lx[k], ly[k], lz[k], cb, lr[k], rb, ld2[k], cap);
             else
                 push_visit(stack, ref_a, w.ref[k], ca.x(), ca.y(), ca.z(), Eigen::Vector3f(lx[k], ly[k], lz[k]), ra,
-                           lr[k], ld2[k]);
+                           lr[k], ld2[k], cap);
         };
         if (exit) {
             // Exit search: the lane likely to part last on top of the stack, so that the best
@@ -277,6 +282,14 @@ void QueryRun::run() {
             // Modes all and deepest: the last lane pushed would be popped at once; carried instead,
             // the walk visits the same pairs in the same order.
             if (!any && bits) nearest = 31 - __builtin_clz(bits);
+            if (deepest_first && bits) { // the lane whose balls overlap most
+                float most = -std::numeric_limits<float>::infinity();
+                const float other_r = side_a ? rb : ra;
+                for (unsigned b = bits; b; b &= b - 1) {
+                    const int k = __builtin_ctz(b);
+                    if (const float bound = lr[k] + other_r - std::sqrt(ld2[k]); bound > most) most = bound, nearest = k;
+                }
+            }
             for (bits &= ~(nearest >= 0 ? 1u << nearest : 0u); bits; bits &= bits - 1) push(__builtin_ctz(bits));
         }
         if (nearest >= 0) {

@@ -16,6 +16,7 @@ struct NodePairVisit {
     float ca[3], cb[3];
     float ra, rb; // radii the pair was tested with
     float d2;     // squared centre distance
+    float cap;    // mode deepest: no pair below is deeper than this (its ancestors' bounds)
 };
 
 // A value per sphere (or node), computed at most once between two start() calls: a list of
