@@ -242,8 +242,13 @@ TEST_F(CliSimulate, CollidingPairAnswersAsSptQueryAtTheSameRelativePose) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto query = read_csv(dir.file("q.csv"));
     ASSERT_EQ(query.size(), 2u);
-    EXPECT_EQ(query[1][1], "1");                        // collide
-    EXPECT_NEAR(std::stod(query[1][2]), std::stod(contacts[1][3]), 1e-6 * std::stod(query[1][2]) + 1e-9); // depth
+    EXPECT_EQ(query[1][1], "1"); // collide
+    // The ball lies deep in the box (surfaces crossed by more than half a sampling reach): the
+    // scene's depth is a deep pair's, within the deep-overlap allowance of the deepest (2% of the
+    // two largest sampling radii, each at most 0.5 here; docs/scenes.md), never deeper.
+    const double deepest = std::stod(query[1][2]), depth = std::stod(contacts[1][3]);
+    EXPECT_LE(depth, deepest + 1e-6 * deepest);
+    EXPECT_GE(depth, deepest - 0.02 * (0.5 + 0.5));
 }
 
 } // namespace

@@ -28,6 +28,22 @@ Pose offset(double gap) {
     return Pose::from(gap * dir, Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.2, 1, 0.5).normalized())));
 }
 
+// A random direction.
+Eigen::Vector3d random_unit(std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    Eigen::Vector3d v;
+    do v = Eigen::Vector3d(u(rng), u(rng), u(rng));
+    while (!(v.norm() > 0.1));
+    return v.normalized();
+}
+
+// B's centre along `dir` from A's, 0.5 to 0.97 apart (half a radius deep to a graze), turned at random.
+Pose deep_pose(std::mt19937& rng, const Eigen::Vector3d& dir) {
+    std::uniform_real_distribution<double> gap(0.5, 0.97), angle(-3, 3);
+    const double g = gap(rng), a = angle(rng);
+    return Pose::from(g * dir, Eigen::Quaterniond(Eigen::AngleAxisd(a, random_unit(rng))));
+}
+
 // The first of the deepest pairs of a complete `all` query, as depth picked it before.
 SpherePair deepest_of_all(const Pose& p, QueryScratch& s) {
     QueryOptions all;
@@ -148,22 +164,15 @@ TEST(DeepOverlap, BacktrackFromItsOwnLooksEqualsTheOneFromEveryPairBitForBit) {
 TEST(DeepOverlap, LastExitOfEveryPairIsWhereTheLooksPartOnRandomDeepPoses) {
     QueryScratch s;
     std::mt19937 rng(37);
-    std::uniform_real_distribution<double> u(-1, 1), gap(0.5, 0.97);
-    auto unit = [&] {
-        Eigen::Vector3d v;
-        do v = Eigen::Vector3d(u(rng), u(rng), u(rng));
-        while (!(v.norm() > 0.1));
-        return Eigen::Vector3d(v.normalized());
-    };
     double reach = 0; // the largest of a pair
     for (const CompactNode& n : ball().tree().nodes())
         if (n.is_active()) reach = std::max(reach, 2.0 * n.ss_radius);
     double worst = 0;
     for (int k = 0; k < 40; ++k) {
-        const Eigen::Vector3d dir = unit();
-        const Pose p = Pose::from(gap(rng) * dir, Eigen::Quaterniond(Eigen::AngleAxisd(3 * u(rng), unit())));
+        const Eigen::Vector3d dir = random_unit(rng);
+        const Pose p = deep_pose(rng, dir);
         // Along the line of centres (as the normal parts a deep pair) and along any motion.
-        for (const Eigen::Vector3d& motion : {Eigen::Vector3d(-dir), unit()}) {
+        for (const Eigen::Vector3d& motion : {Eigen::Vector3d(-dir), random_unit(rng)}) {
             const BacktrackResult looks =
                 backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, BacktrackRule::Exact, s);
             const BacktrackResult bnb = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s);
@@ -182,6 +191,33 @@ TEST(DeepOverlap, LastExitOfEveryPairIsWhereTheLooksPartOnRandomDeepPoses) {
     RecordProperty("worst_difference", text.str());
 }
 
+// With an allowance the branch and bound skips pairs that cannot part later than its best by more,
+// and answers without a look: never before the last exit (a query there finds the balls apart),
+// at most the allowance (and the float margin) after it, from far fewer queries' worth of work.
+TEST(DeepOverlap, AnAllowanceAnswersAtMostThatLateAndApartWithoutALook) {
+    QueryScratch s;
+    std::mt19937 rng(41);
+    const double allowance = detail::deep_allowance(ball(), ball());
+    ASSERT_GT(allowance, 0);
+    const double margin = 1e-5 * 2 * ball().extent() + 1e-6;
+    for (int k = 0; k < 30; ++k) {
+        const Eigen::Vector3d dir = random_unit(rng);
+        const Pose p = deep_pose(rng, dir);
+        for (const Eigen::Vector3d& motion : {Eigen::Vector3d(-dir), random_unit(rng)}) {
+            const BacktrackResult exact = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s);
+            const BacktrackResult rough =
+                detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s, kNoBacktrackLimit, allowance);
+            EXPECT_TRUE(rough.converged);
+            EXPECT_EQ(rough.queries, 1) << "pose " << k;
+            EXPECT_GE(rough.distance, exact.distance - 1e-6) << "pose " << k;
+            EXPECT_LE(rough.distance, exact.distance + allowance + margin) << "pose " << k;
+            Pose parted = p;
+            parted.translation -= rough.distance * motion.normalized();
+            EXPECT_FALSE(collide_relative(ball(), ball(), parted, QueryOptions{}, s).collide) << "pose " << k;
+        }
+    }
+}
+
 // A limit below the distance ends both searches with `beyond` set; above it, no `beyond`.
 TEST(DeepOverlap, LastExitOfEveryPairSaysBeyondWhereTheLooksDo) {
     QueryScratch s;
@@ -195,6 +231,10 @@ TEST(DeepOverlap, LastExitOfEveryPairSaysBeyondWhereTheLooksDo) {
         const BacktrackResult bnb = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s, limit);
         EXPECT_EQ(bnb.beyond, looks.beyond) << "limit " << limit;
         EXPECT_EQ(bnb.beyond, limit < full.distance) << "limit " << limit;
+        // With an allowance too, though its answer may lie past a limit that the distance does not.
+        const BacktrackResult rough = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s, limit,
+                                                             detail::deep_allowance(ball(), ball()));
+        EXPECT_EQ(rough.beyond, limit < full.distance) << "limit " << limit;
     }
 }
 

@@ -7,6 +7,7 @@
 #include "geometry/tri_distance.hpp"
 #include "mesh/shapes.hpp"
 #include "query/model_access.hpp"
+#include "query/node_slab.hpp"
 #include <gtest/gtest.h>
 #include <random>
 
@@ -234,6 +235,8 @@ TEST(DistanceExact, NeedsTheMeshesOfBothModels) {
 TEST(Distance, EveryNodesSlabHoldsTheSpheresBelowIt) {
     // The torus (vertex samples on a curved surface) and the bracket's flat faces sampled densely.
     const auto bracket = make_object(make_bracket(), ConvertOptions{});
+    std::mt19937 rng(41);
+    std::normal_distribution<float> g;
     for (const Object* o : {static_cast<const Object*>(&torus()), static_cast<const Object*>(bracket.get())}) {
         const CompactTree& t = o->model.tree();
         const float* slab = detail::node_slab_of(o->model);
@@ -241,12 +244,15 @@ TEST(Distance, EveryNodesSlabHoldsTheSpheresBelowIt) {
         size_t thin = 0;
         const auto& nodes = t.nodes();
         for (size_t i = 0; i < nodes.size(); ++i) {
-            const float* s = slab + 4 * i;
+            const float* s = slab + detail::kSlabStride * i;
             if (!(s[3] >= 0)) continue;
-            ++thin;
             const Eigen::Vector3f n(s[0], s[1], s[2]), c(nodes[i].center[0], nodes[i].center[1], nodes[i].center[2]);
+            const auto shape = detail::NodeShape::of(c, nodes[i].bv_radius, s, n);
+            thin += s[3] + s[4] < 2 * nodes[i].bv_radius; // thinner than the ball
             EXPECT_NEAR(n.norm(), 1, 1e-5);
-            EXPECT_LT(s[3], nodes[i].bv_radius);
+            // Directions to check the disc's support against: its normal, across it, and at random.
+            std::vector<Eigen::Vector3f> dirs{n, -n, n.unitOrthogonal()};
+            for (int k = 0; k < 6; ++k) dirs.push_back(Eigen::Vector3f(g(rng), g(rng), g(rng)).normalized());
             // Every sphere below node i (children: the next node and `first`).
             std::vector<size_t> open{i};
             while (!open.empty()) {
@@ -256,12 +262,19 @@ TEST(Distance, EveryNodesSlabHoldsTheSpheresBelowIt) {
                     open.push_back(j + 1), open.push_back(nodes[j].first);
                     continue;
                 }
-                for (uint32_t k = nodes[j].first; k < nodes[j].first + nodes[j].count; ++k)
-                    EXPECT_LE(std::abs(n.dot(t.sphere_center(nodes[j], k) - c)) + nodes[j].ss_radius, s[3] * (1 + 1e-6f))
-                        << "node " << i << " sphere " << k;
+                EXPECT_LE(nodes[j].ss_radius, s[6]);
+                for (uint32_t k = nodes[j].first; k < nodes[j].first + nodes[j].count; ++k) {
+                    const Eigen::Vector3f d = t.sphere_center(nodes[j], k) - c;
+                    EXPECT_LE(n.dot(d) + nodes[j].ss_radius, s[3]) << "node " << i << " sphere " << k;
+                    EXPECT_LE(nodes[j].ss_radius - n.dot(d), s[4]) << "node " << i << " sphere " << k;
+                    EXPECT_LE((d - n.dot(d) * n).norm(), s[5] * (1 + 1e-6f)) << "node " << i << " sphere " << k;
+                    for (const Eigen::Vector3f& u : dirs)
+                        EXPECT_LE(d.dot(u) + nodes[j].ss_radius, shape.support(u) + 1e-6f * nodes[i].bv_radius)
+                            << "node " << i << " sphere " << k;
+                }
             }
         }
-        EXPECT_GT(thin, nodes.size() / 4) << "faces give thin slabs";
+        EXPECT_GT(thin, nodes.size() / 4) << "faces give thin discs";
     }
 }
 

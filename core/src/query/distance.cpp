@@ -4,6 +4,7 @@
 #include "spt/distance.hpp"
 #include "query/distance_exact.hpp"
 #include "query/model_access.hpp"
+#include "query/node_slab.hpp"
 #include "query/pending_pose.hpp"
 #include "query/query_run.hpp"
 #include "spt/error.hpp"
@@ -95,14 +96,19 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     auto lower_bound = [&](uint32_t i, uint32_t j) {
         const Eigen::Vector3d ca = centre(ta.nodes()[i]), cb = centre_b(j), d = cb - ca;
         double gap = d.norm() - radius_a(i) - radius_b(j);
-        if (slab_a && slab_a[4 * size_t(i) + 3] >= 0) {
-            const float* s = slab_a + 4 * size_t(i);
-            gap = std::max(gap, std::abs(Eigen::Vector3d(s[0], s[1], s[2]).dot(d)) - s[3] - radius_b(j));
+        // The gap beyond a disc's face towards the other node's centre (its reach along its normal,
+        // or against it), then beyond the other's ball.
+        auto beyond_disc = [](const float* s, const Eigen::Vector3d& n, const Eigen::Vector3d& to_other) {
+            const double along = n.dot(to_other);
+            return along >= 0 ? along - s[3] : -along - s[4];
+        };
+        if (slab_a && slab_a[detail::kSlabStride * i + 3] >= 0) {
+            const float* s = slab_a + detail::kSlabStride * i;
+            gap = std::max(gap, beyond_disc(s, Eigen::Vector3d(s[0], s[1], s[2]), d) - radius_b(j));
         }
-        if (slab_b && slab_b[4 * size_t(j) + 3] >= 0) {
-            const float* s = slab_b + 4 * size_t(j);
-            const Eigen::Vector3d n = to_a.r * Eigen::Vector3d(s[0], s[1], s[2]);
-            gap = std::max(gap, std::abs(n.dot(d)) - s[3] - radius_a(i));
+        if (slab_b && slab_b[detail::kSlabStride * j + 3] >= 0) {
+            const float* s = slab_b + detail::kSlabStride * j;
+            gap = std::max(gap, beyond_disc(s, to_a.r * Eigen::Vector3d(s[0], s[1], s[2]), -d) - radius_a(i));
         }
         return gap;
     };

@@ -1,20 +1,57 @@
 #pragma once
-// Per-node bounds beyond the balls. Slabs around the sampling tree's nodes for the distance query: a node's spheres spread over a
-// face lie in a slab far thinner than their bounding ball, and the gap to that slab bounds the
-// distance of a node pair far more tightly where faces are sampled densely.
+// Per-node bounds beyond the balls. A node's spheres spread over a face lie in a flat disc far
+// thinner than their bounding ball: it bounds a node pair's distance, and how late the pair can
+// part along a direction, far more tightly where faces are sampled densely.
 #include "spt/compact_tree.hpp"
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace spt::detail {
 
-/// Per node of `tree`, 4 floats: a unit normal n and a half-thickness h such that every
-/// sampling sphere below the node lies within h of the plane through the node's centre with
-/// normal n (local frame, model units); h < 0 when no slab is thinner than the node's ball.
+/// Floats per node in node_slabs' table.
+constexpr size_t kSlabStride = 7;
+
+/// Per node of `tree`, kSlabStride floats: a unit normal n; how far the node's spheres reach
+/// along n and along -n from the node's centre; how far their centres lie from the line through
+/// that centre along n; the largest sphere radius (local frame, model units). Spheres spread over a face lie in a flat, round-edged disc far thinner than their
+/// bounding ball; with radii that differ (smaller spheres near edges sit nearer the surface) the
+/// reaches along n are those of the sphere surfaces, not of the centres. A reach along n < 0:
+/// no disc (the spheres' normals give no direction).
 std::vector<float> node_slabs(const CompactTree& tree);
 
 /// Per node of `tree`, the largest sampling-sphere radius below it (model units). No two spheres
 /// below a pair of nodes overlap by more than the sum of theirs: the deepest overlap's bound where
 /// the nodes' balls, deep in each other, bound nothing. Unchanged by a pose (radii stay).
 std::vector<float> node_max_radii(const CompactTree& tree);
+
+/// A node's sampling spheres as the walks see them: inside the ball of radius `radius` about
+/// `centre` and, when it has a disc (node_slabs: unit normal, reaches along it and against it,
+/// width, largest radius), inside that. All in one frame, model units.
+struct NodeShape {
+    Eigen::Vector3f centre;
+    float radius;
+    Eigen::Vector3f normal;
+    float out = -1, in = 0, wide = 0, sphere = 0;
+    /// The shape of a node from its row of node_slabs' table (`slab`, may be null), its centre and
+    /// normal given in the caller's frame.
+    static NodeShape of(const Eigen::Vector3f& centre, float radius, const float* slab, const Eigen::Vector3f& normal) {
+        NodeShape s{centre, radius, normal};
+        if (slab && slab[3] >= 0) s.out = slab[3], s.in = slab[4], s.wide = slab[5], s.sphere = slab[6];
+        return s;
+    }
+    bool has_slab() const { return out >= 0; }
+    /// The largest (x - centre).u over every point x of the node's spheres, u a unit vector. With
+    /// u = a n + b e (e across n, a >= 0), a sphere's c.u + r = a (c.n + r) + b (c.e) + (1 - a) r:
+    /// at most a times the reach along n, b times the width and (1 - a) times the largest radius;
+    /// or the ball's support where that is less.
+    float support(const Eigen::Vector3f& u) const {
+        if (!(out >= 0)) return radius;
+        const float a = normal.dot(u), abs_a = std::abs(a);
+        const float b = std::sqrt(std::max(0.0f, 1 - a * a));
+        return std::min(radius, abs_a * (a >= 0 ? out : in) + wide * b + (1 - abs_a) * sphere);
+    }
+};
 
 } // namespace spt::detail

@@ -356,12 +356,12 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
 
 // A query at world poses: B's pose relative to A's in double, the contact back in the world.
 QueryResult world_query(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
-                        const QueryOptions& options, QueryScratch& scratch, bool* deep) {
+                        const QueryOptions& options, QueryScratch& scratch, bool* deep, float slack = 0) {
     check_pose(pose_a, "pose of A");
     check_pose(pose_b, "pose of B");
     const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
     const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
-    QueryResult r = relative_query(a, b, relative_pose(ua, ub), options, scratch, deep);
+    QueryResult r = relative_query(a, b, relative_pose(ua, ub), options, scratch, deep, slack);
     r.deepest.point = ua.apply(r.deepest.point);
     r.deepest.normal = ua.rotate(r.deepest.normal);
     return r;
@@ -374,9 +374,19 @@ QueryResult collide_relative(const CollisionModel& a, const CollisionModel& b, c
     return relative_query(a, b, b_in_a, options, scratch, nullptr);
 }
 
+double detail::deep_allowance(const CollisionModel& a, const CollisionModel& b) {
+    const float *ra = detail::node_max_radius_of(a), *rb = detail::node_max_radius_of(b);
+    return ra && rb ? kDeepAllowance * (double(ra[0]) + double(rb[0])) : 0.0;
+}
+
 QueryResult detail::deepest_within(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                                    const QueryOptions& options, float slack, QueryScratch& scratch) {
     return relative_query(a, b, b_in_a, options, scratch, nullptr, slack);
+}
+
+QueryResult detail::deepest_within(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,
+                                   const Pose& pose_b, const QueryOptions& options, float slack, QueryScratch& scratch) {
+    return world_query(a, pose_a, b, pose_b, options, scratch, nullptr, slack);
 }
 
 QueryResult collide_all_unless_deep(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b,

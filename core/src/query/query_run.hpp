@@ -81,6 +81,16 @@ struct MovedB {
 // with an absolute error allowance ask this.
 QueryResult deepest_within(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                            const QueryOptions& options, float slack, QueryScratch& scratch);
+// The same at world poses (as collide), the contact in the world.
+QueryResult deepest_within(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
+                           const QueryOptions& options, float slack, QueryScratch& scratch);
+
+// How far short of the deepest a deep overlap's depth, and how far past the last exit its parting
+// distance, may be (model units): kDeepAllowance of the two models' largest sampling-sphere radii
+// together (docs/scenes.md, "Deep overlaps"). Such an overlap holds thousands of sphere pairs within
+// a few thousandths of the deepest; proving which one is deepest would cost a walk through them all.
+constexpr double kDeepAllowance = 0.02;
+double deep_allowance(const CollisionModel& a, const CollisionModel& b);
 
 // The exact backtrack's question at one shift (response.cpp): B moving on by s * back (unit,
 // A's local frame), the largest s at which a pair overlapping now stops overlapping. Answered

@@ -2,6 +2,7 @@
 #include "spt/response.hpp"
 #include "query/pending_pose.hpp"
 #include "query/backtrack_from.hpp"
+#include "query/node_slab.hpp"
 #include "query/query_run.hpp"
 #include <algorithm>
 #include <cmath>
@@ -144,9 +145,12 @@ double exit_of(const Eigen::Vector3d& w, double reach, const Eigen::Vector3d& ba
 // along back, would meet again (docs/queries.md). Sets `root` and `reach` as an ExitSearch; false
 // when no pair meets past s = 0, or the answer must come from the looks alone: two-sided spheres
 // or culling (which the looks apply pair by pair) or a grown sphere. The search ends at the first
-// root whose jump passes `max_distance`: the backtrack then says only that it lies beyond.
+// root whose jump passes `max_distance`: the backtrack then says only that it lies beyond. With an
+// `allowance` (model units) node pairs that cannot part later than the best by more are skipped,
+// and `upper` (never early, at most the allowance late) is where every pair has parted.
 bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const Eigen::Vector3d& back,
-               const QueryOptions& options, QueryScratch& scratch, double max_distance, detail::ExitSearch& best) {
+               const QueryOptions& options, QueryScratch& scratch, double max_distance, double allowance,
+               detail::ExitSearch& best, double& upper) {
     const CompactTree &ta = a.tree(), &tb = b.tree();
     if (options.level != QueryLevel::Spheres || options.normal_culling || options.inflate != 0 || ta.two_sided() ||
         tb.two_sided() || ta.nodes().empty() || tb.nodes().empty())
@@ -166,12 +170,31 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     best.back = back;
     std::vector<detail::ScratchBuffers::ExitBound>& stack = s.exit_stack;
     stack.clear();
+    // A node's spheres reach along a direction no further than its disc does (query/node_slab.hpp).
+    const float *slab_a = detail::node_slab_of(a), *slab_b = detail::node_slab_of(b);
+    const Eigen::Vector3f back_a = back.cast<float>(), back_b = f.R.transpose() * -back_a; // each in its model's frame
+    auto support = [](const CompactNode& n, const float* slab, uint32_t i, const Eigen::Vector3f& u) {
+        const float* row = slab ? slab + detail::kSlabStride * i : nullptr;
+        if (!row || !(row[3] >= 0)) return double(n.bv_radius);
+        return double(detail::NodeShape::of(Eigen::Vector3f::Zero(), n.bv_radius, row, Eigen::Vector3f(row[0], row[1], row[2]))
+                          .support(u));
+    };
     // The bound of node pair (i, j), B's centre less A's w: the exit root of their balls, or -1
-    // when they do not meet past the best root.
+    // when they do not meet past the best root; and no later than their discs part along back (a
+    // pair of spheres has parted once B's lies beyond A's along it), far tighter than the balls
+    // across the caps that part last.
     auto bound = [&](uint32_t i, uint32_t j, const Eigen::Vector3d& w) {
         const double r = wide(w, double(an[i].bv_radius) + double(bn[j].bv_radius));
-        return meet_past(w, r, back, best.found ? best.root : 0.0) ? exit_of(w, r, back) : -1.0;
+        if (!meet_past(w, r, back, best.found ? best.root : 0.0)) return -1.0;
+        const double discs = support(an[i], slab_a, i, back_a) + support(bn[j], slab_b, j, back_b) - w.dot(back) +
+                             1e-5 * r + 1e-6 * w.cwiseAbs().sum();
+        const double root = std::min(exit_of(w, r, back), discs);
+        return best.found && !(root > best.root) ? -1.0 : root;
     };
+    // With an allowance, pairs that cannot part later than the best by more are skipped; the
+    // latest bound skipped so is kept: past `upper`, the later of it and the best root, nothing
+    // overlaps, and it is at most the allowance late.
+    double skipped = -1;
     std::vector<Eigen::Vector3d>& moved = s.exit_leaf_b;
     moved.resize(b.max_leaf());
     if (const double r0 = bound(0, 0, b_centre(bn[0]) - node_centre(an[0])); r0 >= 0) stack.push_back({r0, 0, 0});
@@ -180,7 +203,10 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     while (!stack.empty() && !(best.found && best.root + 1e-6 * best.reach > max_distance)) {
         const detail::ScratchBuffers::ExitBound top = stack.back();
         stack.pop_back();
-        if (best.found && top.root <= best.root) continue;
+        if (best.found && top.root <= best.root + allowance) {
+            if (top.root > best.root) skipped = std::max(skipped, top.root);
+            continue;
+        }
         const CompactNode &na = an[top.a], &nb = bn[top.b];
         if (na.is_active() && nb.is_active()) {
             for (uint32_t q = 0; q < nb.count; ++q)
@@ -208,15 +234,17 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         const uint32_t at = side_a ? top.a : top.b;
         double key[2];
         const uint32_t child[2] = {at + 1, split.first};
+        // No later than the parent's bound either (a child's ball can poke out of its parent's).
         for (int k = 0; k < 2; ++k)
-            key[k] = side_a ? bound(child[k], top.b, b_centre(nb) - node_centre(an[child[k]]))
-                            : bound(top.a, child[k], b_centre(bn[child[k]]) - node_centre(na));
+            key[k] = std::min(top.root, side_a ? bound(child[k], top.b, b_centre(nb) - node_centre(an[child[k]]))
+                                               : bound(top.a, child[k], b_centre(bn[child[k]]) - node_centre(na)));
         const int later = key[1] > key[0] ? 1 : 0; // pushed last, taken first
         for (const int k : {1 - later, later})
             if (key[k] >= 0)
                 stack.push_back(side_a ? detail::ScratchBuffers::ExitBound{key[k], child[k], top.b}
                                       : detail::ScratchBuffers::ExitBound{key[k], top.a, child[k]});
     }
+    upper = std::max(best.root, skipped);
     return best.found;
 }
 
@@ -233,7 +261,7 @@ Eigen::Vector3d back_direction(const Eigen::Vector3d& motion) {
 BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                          const Eigen::Vector3d& motion_in_a, const QueryOptions& options, BacktrackRule rule,
                          const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
-                         bool deep = false) {
+                         bool deep = false, double allowance = 0) {
     detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     BacktrackResult r;
     const Eigen::Vector3d back = back_direction(motion_in_a);
@@ -251,8 +279,21 @@ BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const
     // A deep overlap's first jump goes straight to the last exit of every pair, past the jumps
     // the looks would make through the overlap; the looks then go on from there.
     detail::ExitSearch last;
-    if (deep && last_exit(a, b, b_in_a, back, options, scratch, max_distance, last))
+    double upper = 0;
+    if (deep && last_exit(a, b, b_in_a, back, options, scratch, max_distance, allowance, last, upper)) {
+        // Every sphere pair has parted by `upper` (in double, from widened bounds): the look there
+        // would only confirm it. Past it by a hundred-thousandth of the models' extents, beyond the
+        // walks' float rounding, so that a query there finds them apart too. Unless `upper` passes
+        // max_distance while the best root does not: then the looks tell which side it lies.
+        const double jump = std::max(0.0, upper) + 1e-6 * last.reach + 1e-5 * (a.extent() + b.extent());
+        if (allowance > 0 && (jump <= max_distance || last.root + 1e-6 * last.reach > max_distance)) {
+            r.queries = 1;
+            r.distance = jump;
+            r.beyond = jump > max_distance;
+            return r;
+        }
         return by_exit_roots(a, b, b_in_a, back, options, nullptr, scratch, max_distance, &last);
+    }
     return by_exit_roots(a, b, b_in_a, back, options, start_pairs, scratch, max_distance);
 }
 
@@ -260,14 +301,14 @@ BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const
 BacktrackResult in_world(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                          const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
                          const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
-                         bool deep = false) {
+                         bool deep = false, double allowance = 0) {
     detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     check_pose(pose_a, "pose of A");
     check_pose(pose_b, "pose of B");
     const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
     const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
     return relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, start_pairs, scratch,
-                    max_distance, deep);
+                    max_distance, deep, allowance);
 }
 
 } // namespace
@@ -297,8 +338,9 @@ BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a
 
 BacktrackResult deep_backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                                const Eigen::Vector3d& motion, const QueryOptions& options, QueryScratch& scratch,
-                               double max_distance) {
-    return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, nullptr, scratch, max_distance, true);
+                               double max_distance, double allowance) {
+    return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, nullptr, scratch, max_distance, true,
+                    allowance);
 }
 
 } // namespace spt::detail

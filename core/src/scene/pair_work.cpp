@@ -107,7 +107,7 @@ void deep_contact(const CollisionModel& a, const Pose& pa, const CollisionModel&
                   const QueryOptions& all, bool a_dynamic, bool b_dynamic, PairWork& w, QueryScratch& scratch) {
     QueryOptions q = all;
     q.mode = QueryMode::Deepest;
-    const QueryResult r = collide(a, pa, b, pb, q, scratch);
+    const QueryResult r = detail::deepest_within(a, pa, b, pb, q, float(detail::deep_allowance(a, b)), scratch);
     add_counters(w.qc, r.counters);
     detail::ScratchBuffers& s = detail::buffers_of(scratch);
     const uint32_t node_a = s.deepest_node_a, node_b = s.deepest_node_b;

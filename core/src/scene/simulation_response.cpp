@@ -106,7 +106,7 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     auto back_along = [&](const Eigen::Vector3d& m, double limit) {
         if (pairs && !pairs->empty())
             return detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, *pairs, scratch, limit);
-        if (deep) return detail::deep_backtrack(ma, poses_[a], mb, poses_[b], m, q, scratch, limit);
+        if (deep) return detail::deep_backtrack(ma, poses_[a], mb, poses_[b], m, q, scratch, limit, detail::deep_allowance(ma, mb));
         return backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
     };
     // Further back than the step's own motion: the pair already overlapped where the step began
