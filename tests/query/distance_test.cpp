@@ -278,6 +278,31 @@ TEST(Distance, EveryNodesSlabHoldsTheSpheresBelowIt) {
     }
 }
 
+TEST(Distance, SpheresSupportIsTheFurthestReachOfAnySphereAlongADirection) {
+    const auto bracket = make_object(make_bracket(), ConvertOptions{});
+    std::mt19937 rng(43);
+    std::normal_distribution<double> g;
+    std::vector<std::pair<double, uint32_t>> heap;
+    for (const Object* o : {static_cast<const Object*>(&torus()), static_cast<const Object*>(bracket.get())}) {
+        const CompactTree& t = o->model.tree();
+        for (int k = 0; k < 20; ++k) {
+            const Eigen::Vector3d u = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+            double reach = -1e300;
+            for (const CompactNode& n : t.nodes())
+                if (n.is_active())
+                    for (uint32_t s = n.first; s < n.first + n.count; ++s)
+                        reach = std::max(reach, t.sphere_center(n, s).cast<double>().dot(u) + double(n.ss_radius));
+            for (const float* slab : {detail::node_slab_of(o->model), static_cast<const float*>(nullptr)}) {
+                const detail::SphereSupport found = detail::spheres_support(t, slab, u, heap);
+                EXPECT_EQ(found.reach, reach) << "direction " << k;
+                const CompactNode& n = t.nodes()[found.node];
+                ASSERT_TRUE(n.is_active());
+                EXPECT_EQ(t.sphere_center(n, found.sphere).cast<double>().dot(u) + double(n.ss_radius), reach);
+            }
+        }
+    }
+}
+
 TEST(Distance, AbsoluteErrorStaysWithinItsAllowanceAtEveryLevel) {
     const Object& t = torus();
     QueryScratch scratch;

@@ -61,6 +61,41 @@ std::vector<float> node_slabs(const CompactTree& tree) {
     return slab;
 }
 
+SphereSupport spheres_support(const CompactTree& tree, const float* slab, const Eigen::Vector3d& u,
+                              std::vector<std::pair<double, uint32_t>>& heap) {
+    const auto& nodes = tree.nodes();
+    SphereSupport best;
+    if (nodes.empty()) return best;
+    const Eigen::Vector3f uf = u.cast<float>();
+    // A node's bound, widened by a hundred-thousandth of its radius for the floats' rounding.
+    auto bound = [&](uint32_t i) {
+        const CompactNode& n = nodes[i];
+        const float* row = slab ? slab + kSlabStride * i : nullptr;
+        const NodeShape shape = NodeShape::of(Eigen::Vector3f::Zero(), n.bv_radius, row,
+                                              row ? Eigen::Vector3f(row[0], row[1], row[2]) : Eigen::Vector3f::Zero());
+        const Eigen::Vector3d c(n.center[0], n.center[1], n.center[2]);
+        return c.dot(u) + double(shape.support(uf)) + 1e-5 * double(n.bv_radius);
+    };
+    heap.clear();
+    heap.push_back({bound(0), 0});
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end());
+        const auto [reach, i] = heap.back();
+        heap.pop_back();
+        if (!(reach > best.reach)) break; // the largest bound left cannot beat the best
+        const CompactNode& n = nodes[i];
+        if (n.is_active()) {
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                if (const double r = tree.sphere_center(n, k).cast<double>().dot(u) + double(n.ss_radius); r > best.reach)
+                    best = {r, i, k};
+            continue;
+        }
+        for (const uint32_t child : {i + 1, n.first})
+            if (const double b = bound(child); b > best.reach) heap.push_back({b, child}), std::push_heap(heap.begin(), heap.end());
+    }
+    return best;
+}
+
 std::vector<float> node_max_radii(const CompactTree& tree) {
     const auto& nodes = tree.nodes();
     std::vector<float> m(nodes.size(), 0.0f);

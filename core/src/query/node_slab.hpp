@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace spt::detail {
@@ -53,5 +55,17 @@ struct NodeShape {
         return std::min(radius, abs_a * (a >= 0 ? out : in) + wide * b + (1 - abs_a) * sphere);
     }
 };
+
+/// How far a model's sampling spheres reach along a direction, and the sphere that does.
+struct SphereSupport {
+    double reach = -std::numeric_limits<double>::infinity(); ///< the largest c.u + r (model units)
+    uint32_t node = 0, sphere = 0;                           ///< its active node and sphere
+};
+
+/// The largest c.u + r over every sampling sphere of `tree` (centre c, radius r; local frame, u a
+/// unit vector): how far the model reaches along u. Best first over the nodes, each bounded by its
+/// disc (`slab`, node_slabs' table, may be null: the balls); exact. `heap` is the caller's room.
+SphereSupport spheres_support(const CompactTree& tree, const float* slab, const Eigen::Vector3d& u,
+                              std::vector<std::pair<double, uint32_t>>& heap);
 
 } // namespace spt::detail

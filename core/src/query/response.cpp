@@ -6,6 +6,7 @@
 #include "query/query_run.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace spt {
 namespace {
@@ -147,7 +148,9 @@ double exit_of(const Eigen::Vector3d& w, double reach, const Eigen::Vector3d& ba
 // or culling (which the looks apply pair by pair) or a grown sphere. The search ends at the first
 // root whose jump passes `max_distance`: the backtrack then says only that it lies beyond. With an
 // `allowance` (model units) node pairs that cannot part later than the best by more are skipped,
-// and `upper` (never early, at most the allowance late) is where every pair has parted.
+// and `upper` (never early, at most the allowance late) is where every pair has parted; the search
+// then also starts from the two spheres that reach furthest along back, and ends once the best root
+// is within the allowance of where the models' reaches along back part.
 bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const Eigen::Vector3d& back,
                const QueryOptions& options, QueryScratch& scratch, double max_distance, double allowance,
                detail::ExitSearch& best, double& upper) {
@@ -195,12 +198,29 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     // latest bound skipped so is kept: past `upper`, the later of it and the best root, nothing
     // overlaps, and it is at most the allowance late.
     double skipped = -1;
+    // With an allowance, also how far the two models reach along back (spheres_support): once B
+    // lies wholly beyond A along it every pair has parted, so that bounds every root, and it ends
+    // the search as soon as the best root comes within the allowance of it (two convex-ish shapes
+    // parted along the line of their deepest points: a walk of a few dozen node pairs).
+    double projected = std::numeric_limits<double>::infinity();
+    if (allowance > 0) {
+        const detail::SphereSupport sa = detail::spheres_support(ta, slab_a, back, s.support_heap);
+        const detail::SphereSupport sb = detail::spheres_support(tb, slab_b, -(f.Rd.transpose() * back), s.support_heap);
+        projected = sa.reach + sb.reach - f.td.dot(back) + 1e-6 * (a.extent() + b.extent());
+        // The two spheres that reach furthest, A's along back and B's against it, part last when
+        // the shapes meet in line: their root starts the search near the answer.
+        const Eigen::Vector3d w = f.Rd * tb.sphere_center(bn[sb.node], sb.sphere).cast<double>() + f.td -
+                                  ta.sphere_center(an[sa.node], sa.sphere).cast<double>();
+        const double reach = double(an[sa.node].ss_radius + bn[sb.node].ss_radius);
+        if (meet_past(w, reach, back, 0.0)) detail::keep_exit(best, exit_of(w, reach, back), reach);
+    }
     std::vector<Eigen::Vector3d>& moved = s.exit_leaf_b;
     moved.resize(b.max_leaf());
     if (const double r0 = bound(0, 0, b_centre(bn[0]) - node_centre(an[0])); r0 >= 0) stack.push_back({r0, 0, 0});
     // Depth first, the pair that parts later taken first: a late root comes early and prunes the
     // rest, with none of a priority queue's upkeep (which cost more than the walk).
-    while (!stack.empty() && !(best.found && best.root + 1e-6 * best.reach > max_distance)) {
+    while (!stack.empty() && !(best.found && best.root + 1e-6 * best.reach > max_distance) &&
+           !(best.found && projected <= best.root + allowance)) {
         const detail::ScratchBuffers::ExitBound top = stack.back();
         stack.pop_back();
         if (best.found && top.root <= best.root + allowance) {
@@ -244,7 +264,8 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
                 stack.push_back(side_a ? detail::ScratchBuffers::ExitBound{key[k], child[k], top.b}
                                       : detail::ScratchBuffers::ExitBound{key[k], top.a, child[k]});
     }
-    upper = std::max(best.root, skipped);
+    // Every pair not walked was skipped within the allowance, or lies below `projected`.
+    upper = std::max(best.root, stack.empty() ? std::min(skipped, projected) : projected);
     return best.found;
 }
 

@@ -88,6 +88,7 @@ struct ScratchBuffers {
         uint32_t a, b;
     };
     std::vector<ExitBound> exit_stack;
+    std::vector<std::pair<double, uint32_t>> support_heap; // detail::spheres_support's room
     // The exact distance's branch and bound (distance_exact.cpp): a heap of node pairs by the
     // least gap below them.
     struct GapBound {
