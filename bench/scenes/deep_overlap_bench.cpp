@@ -60,6 +60,30 @@ Scene two_balls(bool together) {
     return scene_of({{Eigen::Vector3d::Zero(), v}, {Eigen::Vector3d(1.5 * kRadius, 0, 0), together ? v : -v}});
 }
 
+// The same two balls moving together, their centres 1.5 radii apart along a random line and B
+// turned at random (a fixed seed): lines that pass through no pole or vertex in particular.
+std::vector<Scene> two_balls_on_random_lines(int count) {
+    std::mt19937 rng(53);
+    std::normal_distribution<double> g;
+    std::vector<Scene> scenes;
+    for (int k = 0; k < count; ++k) {
+        const Eigen::Vector3d dir = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+        const Eigen::Vector4d q = Eigen::Vector4d(g(rng), g(rng), g(rng), g(rng)).normalized();
+        std::ostringstream j;
+        j.precision(17);
+        const Eigen::Vector3d c = 1.5 * kRadius * dir;
+        j << R"({"spt_scene": 1, "dt": 0.01, "effects": ["motion", "contacts", "depth", "response"], "objects": [
+            {"name": "a", "model": "ball.obj", "velocity": [1, 0.5, 0]},
+            {"name": "b", "model": "ball.obj", "velocity": [1, 0.5, 0], "position": [)"
+          << c.x() << ", " << c.y() << ", " << c.z() << R"(], "orientation": [)" << q[0] << ", " << q[1] << ", "
+          << q[2] << ", " << q[3] << "]}]}";
+        Scene s = parse_scene(j.str(), "bench", fs::path(ball_file()).parent_path().string());
+        load_models(s);
+        scenes.push_back(std::move(s));
+    }
+    return scenes;
+}
+
 // 1,000 balls at random places in a cube of side 34, none overlapping at the start, velocities
 // up to 5 units/s a component: contacts come from the motion, a dozen or so a step.
 Scene thousand_balls() {
@@ -108,12 +132,32 @@ void two_balls_approaching(benchmark::State& state) {
     static const Scene s = two_balls(false);
     steps_from_start(state, s, 1, 1);
 }
+// Eight such lines; the time and counters are a step's, the mean over the eight scenes.
+void two_balls_together_random_lines(benchmark::State& state) {
+    static const std::vector<Scene> scenes = two_balls_on_random_lines(8);
+    StepCounters sum;
+    for (auto _ : state) {
+        int64_t ns = 0;
+        for (const Scene& scene : scenes) {
+            Simulation sim(scene, scene.effects, 1);
+            const StepCounters& c = sim.step().counters;
+            ns += c.ns_depth + c.ns_response;
+            sum.node_pairs += c.node_pairs, sum.ns_depth += c.ns_depth, sum.ns_response += c.ns_response;
+        }
+        state.SetIterationTime(double(ns) * 1e-9 / double(scenes.size()));
+    }
+    const double per_step = 1.0 / double(state.iterations()) / double(scenes.size());
+    state.counters["node_pairs"] = double(sum.node_pairs) * per_step;
+    state.counters["depth_us"] = double(sum.ns_depth) * 1e-3 * per_step;
+    state.counters["response_us"] = double(sum.ns_response) * 1e-3 * per_step;
+}
 void thousand_balls_2_threads(benchmark::State& state) {
     static const Scene s = thousand_balls();
     steps_from_start(state, s, 2, 20);
 }
 BENCHMARK(two_balls_together)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(two_balls_approaching)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(two_balls_together_random_lines)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(thousand_balls_2_threads)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
 } // namespace

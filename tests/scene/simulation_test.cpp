@@ -164,8 +164,8 @@ TEST(Simulation, SameStateHashesOnEveryRunForEveryThreadCountAndOnAHostsTaskSyst
 
 // With pairs and depth both on, depth takes its contact from the pairs effect's `all` query
 // (the same query) instead of running it again: the same contacts and states, and the work of
-// depth alone. A deep overlap is an exception to the work: depth alone stops listing its pairs at
-// the first deep one, while the pairs effect lists them all.
+// depth alone but its probe for a deep pair. A deep overlap is an exception to the work: depth
+// alone stops listing its pairs at the first deep one, while the pairs effect lists them all.
 TEST(Simulation, DepthWithPairsOnTakesItsContactFromThePairsQuery) {
     const spt::test::SceneDir dir;
     const Scene s = scene(dir, ball_cloud(27, 3));
@@ -185,8 +185,9 @@ TEST(Simulation, DepthWithPairsOnTakesItsContactFromThePairsQuery) {
             EXPECT_EQ(a.contacts[k].normal, b.contacts[k].normal) << "step " << step;
             EXPECT_FALSE(a.contacts[k].pairs.empty());
         }
-        if (!deep) {
-            EXPECT_EQ(a.counters.node_pairs, b.counters.node_pairs) << "step " << step;
+        if (!deep) { // depth alone first probes for a deep pair: one descent a contact (docs/scenes.md)
+            EXPECT_GE(b.counters.node_pairs, a.counters.node_pairs) << "step " << step;
+            EXPECT_LE(b.counters.node_pairs, a.counters.node_pairs + 64 * b.contacts.size()) << "step " << step;
         }
         EXPECT_EQ(a.counters.depth_queries, b.counters.depth_queries) << "step " << step;
         EXPECT_EQ(a.state_hash, b.state_hash) << "step " << step;

@@ -330,6 +330,11 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
         return run.res;
     }
     if (options.level != QueryLevel::Exact) {
+        if (deep && run.probe_deep()) { // crossed where the balls overlap most: no walk through the rest
+            run.res.collide = true;
+            *deep = true;
+            return run.res;
+        }
         run.run();
         if (deep) *deep = run.stopped_deep;
         // (A lazily posed model without triangles has no containment, as a full pose has none.)

@@ -183,6 +183,10 @@ struct QueryRun {
     bool triangle_pair(uint32_t ta, uint32_t tb);
     // Level `exact`: walks the triangle trees; sets res.collide (and, in mode all, the triangle pairs).
     void run_triangles();
+    // collide_all_unless_deep's first look (query/deep_probe.cpp): one descent from the roots into
+    // the child pair whose balls overlap most, down to a leaf pair; true when that leaf pair holds a
+    // deep pair (the walk would then stop at its own first one). Records nothing.
+    bool probe_deep();
     // With options.solids, after a walk that found nothing though the roots overlap: is a piece
     // of either model inside a closed part of the other? Sets res.collide and the contact.
     void check_containment();
