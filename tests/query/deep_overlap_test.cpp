@@ -7,6 +7,7 @@
 #include "meshgen.hpp"
 #include "query/backtrack_from.hpp"
 #include "query/query_run.hpp"
+#include "query/scratch.hpp"
 #include <gtest/gtest.h>
 #include <random>
 #include <sstream>
@@ -210,13 +211,24 @@ TEST(DeepOverlap, AnAllowanceAnswersAtMostThatLateAndApartWithoutALook) {
             const BacktrackResult exact = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s);
             const BacktrackResult rough =
                 detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s, kNoBacktrackLimit, allowance);
-            EXPECT_TRUE(rough.converged);
-            EXPECT_EQ(rough.queries, 1) << "pose " << k;
-            EXPECT_GE(rough.distance, exact.distance - 1e-6) << "pose " << k;
-            EXPECT_LE(rough.distance, exact.distance + allowance + margin) << "pose " << k;
-            Pose parted = p;
-            parted.translation -= rough.distance * motion.normalized();
-            EXPECT_FALSE(collide_relative(ball(), ball(), parted, QueryOptions{}, s).collide) << "pose " << k;
+            // From the deepest pair too, as a scene's response starts (any pair is a start).
+            QueryOptions deepest;
+            deepest.mode = QueryMode::Deepest;
+            const QueryResult d = collide_relative(ball(), ball(), p, deepest, s);
+            ASSERT_TRUE(d.collide);
+            const SpherePair seed{d.deepest.a, d.deepest.b, detail::buffers_of(s).deepest_node_a,
+                                  detail::buffers_of(s).deepest_node_b, float(d.deepest.depth), 0};
+            const BacktrackResult seeded = detail::deep_backtrack(ball(), Pose{}, ball(), p, motion, QueryOptions{}, s,
+                                                                  kNoBacktrackLimit, allowance, &seed);
+            for (const BacktrackResult& r : {rough, seeded}) {
+                EXPECT_TRUE(r.converged);
+                EXPECT_EQ(r.queries, 1) << "pose " << k;
+                EXPECT_GE(r.distance, exact.distance - 1e-6) << "pose " << k;
+                EXPECT_LE(r.distance, exact.distance + allowance + margin) << "pose " << k;
+                Pose parted = p;
+                parted.translation -= r.distance * motion.normalized();
+                EXPECT_FALSE(collide_relative(ball(), ball(), parted, QueryOptions{}, s).collide) << "pose " << k;
+            }
         }
     }
 }

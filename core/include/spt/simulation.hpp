@@ -147,7 +147,8 @@ private:
     std::vector<uint8_t> posed_;    // per object: its model is at that time (posed when a query needs it)
     bool lazy_pose_ = false;        // posed lazily (DeformingModel::pose_lazily): contacts are all the step asks
     // Per contact of the step: the sphere pairs depth's `all` query found, which are the
-    // response's first backtrack query when the pair's poses have not changed since.
+    // response's first backtrack query when the pair's poses have not changed since; for a deep
+    // overlap, its deepest pair alone, where the response's search starts.
     std::vector<std::vector<SpherePair>> start_pairs_;
     StepResult result_;
     std::unique_ptr<detail::DynamicsWorld> dynamics_; // effect dynamics: Bullet's world of the objects

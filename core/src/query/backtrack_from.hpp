@@ -22,9 +22,11 @@ BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a
 /// unless the models, once parted along the motion, would meet again further on (docs/queries.md,
 /// "Deep overlaps"). Elsewhere backtrack's answer. With an `allowance` > 0 (model units) the
 /// branch and bound skips pairs that cannot part later than the best by more, and its answer (at
-/// most that much late, never early) is returned without a look.
+/// most that much late, never early) is returned without a look; a `seed` pair (say the deepest,
+/// may be null) is where it starts.
 BacktrackResult deep_backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                                const Eigen::Vector3d& motion, const QueryOptions& options, QueryScratch& scratch,
-                               double max_distance = kNoBacktrackLimit, double allowance = 0);
+                               double max_distance = kNoBacktrackLimit, double allowance = 0,
+                               const SpherePair* seed = nullptr);
 
 } // namespace spt::detail

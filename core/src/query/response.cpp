@@ -153,7 +153,7 @@ double exit_of(const Eigen::Vector3d& w, double reach, const Eigen::Vector3d& ba
 // is within the allowance of where the models' reaches along back part.
 bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a, const Eigen::Vector3d& back,
                const QueryOptions& options, QueryScratch& scratch, double max_distance, double allowance,
-               detail::ExitSearch& best, double& upper) {
+               const SpherePair* seed, detail::ExitSearch& best, double& upper) {
     const CompactTree &ta = a.tree(), &tb = b.tree();
     if (options.level != QueryLevel::Spheres || options.normal_culling || options.inflate != 0 || ta.two_sided() ||
         tb.two_sided() || ta.nodes().empty() || tb.nodes().empty())
@@ -213,6 +213,15 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
                                   ta.sphere_center(an[sa.node], sa.sphere).cast<double>();
         const double reach = double(an[sa.node].ss_radius + bn[sb.node].ss_radius);
         if (meet_past(w, reach, back, 0.0)) detail::keep_exit(best, exit_of(w, reach, back), reach);
+    }
+    if (seed && seed->node_a < an.size() && seed->node_b < bn.size()) { // the caller's start
+        const CompactNode &na = an[seed->node_a], &nb = bn[seed->node_b];
+        if (na.is_active() && nb.is_active() && seed->a - na.first < na.count && seed->b - nb.first < nb.count) {
+            const Eigen::Vector3d w = f.Rd * tb.sphere_center(nb, seed->b).cast<double>() + f.td -
+                                      ta.sphere_center(na, seed->a).cast<double>();
+            const double reach = double(na.ss_radius + nb.ss_radius);
+            if (meet_past(w, reach, back, 0.0)) detail::keep_exit(best, exit_of(w, reach, back), reach);
+        }
     }
     std::vector<Eigen::Vector3d>& moved = s.exit_leaf_b;
     moved.resize(b.max_leaf());
@@ -282,7 +291,7 @@ Eigen::Vector3d back_direction(const Eigen::Vector3d& motion) {
 BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                          const Eigen::Vector3d& motion_in_a, const QueryOptions& options, BacktrackRule rule,
                          const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
-                         bool deep = false, double allowance = 0) {
+                         bool deep = false, double allowance = 0, const SpherePair* seed = nullptr) {
     detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     BacktrackResult r;
     const Eigen::Vector3d back = back_direction(motion_in_a);
@@ -301,7 +310,7 @@ BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const
     // the looks would make through the overlap; the looks then go on from there.
     detail::ExitSearch last;
     double upper = 0;
-    if (deep && last_exit(a, b, b_in_a, back, options, scratch, max_distance, allowance, last, upper)) {
+    if (deep && last_exit(a, b, b_in_a, back, options, scratch, max_distance, allowance, seed, last, upper)) {
         // Every sphere pair has parted by `upper` (in double, from widened bounds): the look there
         // would only confirm it. Past it by a hundred-thousandth of the models' extents, beyond the
         // walks' float rounding, so that a query there finds them apart too. Unless `upper` passes
@@ -322,14 +331,14 @@ BacktrackResult relative(const CollisionModel& a, const CollisionModel& b, const
 BacktrackResult in_world(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                          const Eigen::Vector3d& motion, const QueryOptions& options, BacktrackRule rule,
                          const std::vector<SpherePair>* start_pairs, QueryScratch& scratch, double max_distance,
-                         bool deep = false, double allowance = 0) {
+                         bool deep = false, double allowance = 0, const SpherePair* seed = nullptr) {
     detail::settle(a), detail::settle(b); // a lazy pose is posed in full first
     check_pose(pose_a, "pose of A");
     check_pose(pose_b, "pose of B");
     const Pose ua{unit_rotation(pose_a.rotation), pose_a.translation};
     const Pose ub{unit_rotation(pose_b.rotation), pose_b.translation};
     return relative(a, b, relative_pose(ua, ub), ua.rotation.conjugate() * motion, options, rule, start_pairs, scratch,
-                    max_distance, deep, allowance);
+                    max_distance, deep, allowance, seed);
 }
 
 } // namespace
@@ -359,9 +368,9 @@ BacktrackResult backtrack_from_pairs(const CollisionModel& a, const Pose& pose_a
 
 BacktrackResult deep_backtrack(const CollisionModel& a, const Pose& pose_a, const CollisionModel& b, const Pose& pose_b,
                                const Eigen::Vector3d& motion, const QueryOptions& options, QueryScratch& scratch,
-                               double max_distance, double allowance) {
+                               double max_distance, double allowance, const SpherePair* seed) {
     return in_world(a, pose_a, b, pose_b, motion, options, BacktrackRule::Exact, nullptr, scratch, max_distance, true,
-                    allowance);
+                    allowance, seed);
 }
 
 } // namespace spt::detail

@@ -111,6 +111,8 @@ void deep_contact(const CollisionModel& a, const Pose& pa, const CollisionModel&
     add_counters(w.qc, r.counters);
     detail::ScratchBuffers& s = detail::buffers_of(scratch);
     const uint32_t node_a = s.deepest_node_a, node_b = s.deepest_node_b;
+    w.deepest = {r.deepest.a, r.deepest.b, node_a, node_b, float(r.deepest.depth),
+                 a.tree().nodes()[node_a].ss_radius + b.tree().nodes()[node_b].ss_radius + q.inflate};
     w.depth = std::max(0.0, r.deepest.depth - double(q.inflate));
     const Eigen::Vector3d ca = world_sphere_centre(a, pa, node_a, r.deepest.a), cb = world_sphere_centre(b, pb, node_b, r.deepest.b);
     const Eigen::Vector3d line = (cb - ca).norm() > 0 ? Eigen::Vector3d((cb - ca).normalized()) : Eigen::Vector3d::UnitX();

@@ -15,6 +15,7 @@ struct PairWork {
     Eigen::Vector3d point = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitX();
     std::vector<SpherePair> pairs;
     bool deep = false; // depth took the deep-overlap route: `pairs` and the scratch's pairs are not every pair
+    SpherePair deepest{}; // a deep overlap's deepest pair (w.deep), where its response starts
     bool all_collide = false;                           // the pairs effect's `all` query: its answer
     Eigen::Vector3d all_point = Eigen::Vector3d::Zero(); // and its contact (a containment's anchor)
 };

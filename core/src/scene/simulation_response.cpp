@@ -94,7 +94,9 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     // does, found by branch and bound: its pairs grow with the volume the shells share, and even
     // looks that keep only the largest exit root each walk the two models near contact.
     bool deep = from_pairs && unmoved && pc.deep;
-    if (from_pairs && unmoved && !start_pairs.empty()) {
+    // A deep overlap's depth kept its deepest pair: any pair's exit is a start for the search.
+    const SpherePair* seed = from_pairs && pc.deep && !start_pairs.empty() ? &start_pairs[0] : nullptr;
+    if (from_pairs && unmoved && !pc.deep && !start_pairs.empty()) {
         pairs = &start_pairs;
     } else if (from_pairs && !still && !deep) {
         collide_all_unless_deep(ma, poses_[a], mb, poses_[b], q, scratch, deep);
@@ -106,7 +108,9 @@ bool Simulation::respond_pair(const PairContact& pc, const std::vector<SpherePai
     auto back_along = [&](const Eigen::Vector3d& m, double limit) {
         if (pairs && !pairs->empty())
             return detail::backtrack_from_pairs(ma, poses_[a], mb, poses_[b], m, q, *pairs, scratch, limit);
-        if (deep) return detail::deep_backtrack(ma, poses_[a], mb, poses_[b], m, q, scratch, limit, detail::deep_allowance(ma, mb));
+        if (deep)
+            return detail::deep_backtrack(ma, poses_[a], mb, poses_[b], m, q, scratch, limit,
+                                          detail::deep_allowance(ma, mb), seed);
         return backtrack(ma, poses_[a], mb, poses_[b], m, q, scene_.response.rule, scratch, limit);
     };
     // Further back than the step's own motion: the pair already overlapped where the step began
