@@ -34,6 +34,7 @@ const std::string& ball_file() {
 
 struct Ball {
     Eigen::Vector3d position, velocity;
+    Eigen::Vector4d orientation{1, 0, 0, 0}; // w x y z
 };
 
 Scene scene_of(const std::vector<Ball>& balls) {
@@ -44,7 +45,8 @@ Scene scene_of(const std::vector<Ball>& balls) {
         const Ball& b = balls[i];
         j << (i ? "," : "") << R"({"name": "b)" << i << R"(", "model": "ball.obj", "position": [)" << b.position.x()
           << ", " << b.position.y() << ", " << b.position.z() << R"(], "velocity": [)" << b.velocity.x() << ", "
-          << b.velocity.y() << ", " << b.velocity.z() << "]}";
+          << b.velocity.y() << ", " << b.velocity.z() << R"(], "orientation": [)" << b.orientation[0] << ", "
+          << b.orientation[1] << ", " << b.orientation[2] << ", " << b.orientation[3] << "]}";
     }
     j << "]}";
     Scene s = parse_scene(j.str(), "bench", fs::path(ball_file()).parent_path().string());
@@ -69,17 +71,8 @@ std::vector<Scene> two_balls_on_random_lines(int count) {
     for (int k = 0; k < count; ++k) {
         const Eigen::Vector3d dir = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
         const Eigen::Vector4d q = Eigen::Vector4d(g(rng), g(rng), g(rng), g(rng)).normalized();
-        std::ostringstream j;
-        j.precision(17);
-        const Eigen::Vector3d c = 1.5 * kRadius * dir;
-        j << R"({"spt_scene": 1, "dt": 0.01, "effects": ["motion", "contacts", "depth", "response"], "objects": [
-            {"name": "a", "model": "ball.obj", "velocity": [1, 0.5, 0]},
-            {"name": "b", "model": "ball.obj", "velocity": [1, 0.5, 0], "position": [)"
-          << c.x() << ", " << c.y() << ", " << c.z() << R"(], "orientation": [)" << q[0] << ", " << q[1] << ", "
-          << q[2] << ", " << q[3] << "]}]}";
-        Scene s = parse_scene(j.str(), "bench", fs::path(ball_file()).parent_path().string());
-        load_models(s);
-        scenes.push_back(std::move(s));
+        const Eigen::Vector3d v(1, 0.5, 0);
+        scenes.push_back(scene_of({{Eigen::Vector3d::Zero(), v}, {1.5 * kRadius * dir, v, q}}));
     }
     return scenes;
 }
@@ -99,23 +92,25 @@ Scene thousand_balls() {
     return scene_of(balls);
 }
 
-// Runs `steps` steps of the scene from its start; the time is their depth + response, the
-// counters are per step.
-void steps_from_start(benchmark::State& state, const Scene& scene, int threads, int steps) {
+// Runs `steps` steps of each scene from its start; the time is their depth + response, the mean
+// over the scenes, and the counters are a step's.
+void steps_from_start(benchmark::State& state, const std::vector<Scene>& scenes, int threads, int steps) {
     StepCounters sum;
     for (auto _ : state) {
-        Simulation sim(scene, scene.effects, threads);
         int64_t ns = 0;
-        for (int i = 0; i < steps; ++i) {
-            const StepCounters& c = sim.step().counters;
-            ns += c.ns_depth + c.ns_response;
-            sum.colliding_pairs += c.colliding_pairs, sum.node_pairs += c.node_pairs;
-            sum.sphere_tests += c.sphere_tests, sum.ns_depth += c.ns_depth, sum.ns_response += c.ns_response;
-            sum.ns_narrow += c.ns_narrow;
+        for (const Scene& scene : scenes) {
+            Simulation sim(scene, scene.effects, threads);
+            for (int i = 0; i < steps; ++i) {
+                const StepCounters& c = sim.step().counters;
+                ns += c.ns_depth + c.ns_response;
+                sum.colliding_pairs += c.colliding_pairs, sum.node_pairs += c.node_pairs;
+                sum.sphere_tests += c.sphere_tests, sum.ns_depth += c.ns_depth, sum.ns_response += c.ns_response;
+                sum.ns_narrow += c.ns_narrow;
+            }
         }
-        state.SetIterationTime(double(ns) * 1e-9);
+        state.SetIterationTime(double(ns) * 1e-9 / double(scenes.size()));
     }
-    const double per_step = 1.0 / double(state.iterations()) / steps;
+    const double per_step = 1.0 / double(state.iterations()) / steps / double(scenes.size());
     state.counters["colliding_pairs"] = double(sum.colliding_pairs) * per_step;
     state.counters["node_pairs"] = double(sum.node_pairs) * per_step;
     state.counters["sphere_tests"] = double(sum.sphere_tests) * per_step;
@@ -125,34 +120,20 @@ void steps_from_start(benchmark::State& state, const Scene& scene, int threads, 
 }
 
 void two_balls_together(benchmark::State& state) {
-    static const Scene s = two_balls(true);
+    static const std::vector<Scene> s{two_balls(true)};
     steps_from_start(state, s, 1, 1);
 }
 void two_balls_approaching(benchmark::State& state) {
-    static const Scene s = two_balls(false);
+    static const std::vector<Scene> s{two_balls(false)};
     steps_from_start(state, s, 1, 1);
 }
 // Eight such lines; the time and counters are a step's, the mean over the eight scenes.
 void two_balls_together_random_lines(benchmark::State& state) {
-    static const std::vector<Scene> scenes = two_balls_on_random_lines(8);
-    StepCounters sum;
-    for (auto _ : state) {
-        int64_t ns = 0;
-        for (const Scene& scene : scenes) {
-            Simulation sim(scene, scene.effects, 1);
-            const StepCounters& c = sim.step().counters;
-            ns += c.ns_depth + c.ns_response;
-            sum.node_pairs += c.node_pairs, sum.ns_depth += c.ns_depth, sum.ns_response += c.ns_response;
-        }
-        state.SetIterationTime(double(ns) * 1e-9 / double(scenes.size()));
-    }
-    const double per_step = 1.0 / double(state.iterations()) / double(scenes.size());
-    state.counters["node_pairs"] = double(sum.node_pairs) * per_step;
-    state.counters["depth_us"] = double(sum.ns_depth) * 1e-3 * per_step;
-    state.counters["response_us"] = double(sum.ns_response) * 1e-3 * per_step;
+    static const std::vector<Scene> s = two_balls_on_random_lines(8);
+    steps_from_start(state, s, 1, 1);
 }
 void thousand_balls_2_threads(benchmark::State& state) {
-    static const Scene s = thousand_balls();
+    static const std::vector<Scene> s{thousand_balls()};
     steps_from_start(state, s, 2, 20);
 }
 BENCHMARK(two_balls_together)->UseManualTime()->Unit(benchmark::kMicrosecond);

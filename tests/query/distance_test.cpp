@@ -247,7 +247,7 @@ TEST(Distance, EveryNodesSlabHoldsTheSpheresBelowIt) {
             const float* s = slab + detail::kSlabStride * i;
             if (!(s[3] >= 0)) continue;
             const Eigen::Vector3f n(s[0], s[1], s[2]), c(nodes[i].center[0], nodes[i].center[1], nodes[i].center[2]);
-            const auto shape = detail::NodeShape::of(c, nodes[i].bv_radius, s, n);
+            const auto shape = detail::NodeShape::of(nodes[i].bv_radius, slab, i);
             thin += s[3] + s[4] < 2 * nodes[i].bv_radius; // thinner than the ball
             EXPECT_NEAR(n.norm(), 1, 1e-5);
             // Directions to check the disc's support against: its normal, across it, and at random.

@@ -70,11 +70,8 @@ SphereSupport spheres_support(const CompactTree& tree, const float* slab, const 
     // A node's bound, widened by a hundred-thousandth of its radius for the floats' rounding.
     auto bound = [&](uint32_t i) {
         const CompactNode& n = nodes[i];
-        const float* row = slab ? slab + kSlabStride * i : nullptr;
-        const NodeShape shape = NodeShape::of(Eigen::Vector3f::Zero(), n.bv_radius, row,
-                                              row ? Eigen::Vector3f(row[0], row[1], row[2]) : Eigen::Vector3f::Zero());
         const Eigen::Vector3d c(n.center[0], n.center[1], n.center[2]);
-        return c.dot(u) + double(shape.support(uf)) + 1e-5 * double(n.bv_radius);
+        return c.dot(u) + double(NodeShape::of(n.bv_radius, slab, i).support(uf)) + 1e-5 * double(n.bv_radius);
     };
     heap.clear();
     heap.push_back({bound(0), 0});

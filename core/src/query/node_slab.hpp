@@ -17,10 +17,11 @@ constexpr size_t kSlabStride = 7;
 
 /// Per node of `tree`, kSlabStride floats: a unit normal n; how far the node's spheres reach
 /// along n and along -n from the node's centre; how far their centres lie from the line through
-/// that centre along n; the largest sphere radius (local frame, model units). Spheres spread over a face lie in a flat, round-edged disc far thinner than their
-/// bounding ball; with radii that differ (smaller spheres near edges sit nearer the surface) the
-/// reaches along n are those of the sphere surfaces, not of the centres. A reach along n < 0:
-/// no disc (the spheres' normals give no direction).
+/// that centre along n; the largest sphere radius (local frame, model units). Spheres spread over
+/// a face lie in a flat, round-edged disc far thinner than their bounding ball; with radii that
+/// differ (smaller spheres near edges sit nearer the surface) the reaches along n are those of the
+/// sphere surfaces, not of the centres. A reach along n < 0: no disc (the spheres' normals give no
+/// direction).
 std::vector<float> node_slabs(const CompactTree& tree);
 
 /// Per node of `tree`, the largest sampling-sphere radius below it (model units). No two spheres
@@ -28,26 +29,26 @@ std::vector<float> node_slabs(const CompactTree& tree);
 /// the nodes' balls, deep in each other, bound nothing. Unchanged by a pose (radii stay).
 std::vector<float> node_max_radii(const CompactTree& tree);
 
-/// A node's sampling spheres as the walks see them: inside the ball of radius `radius` about
-/// `centre` and, when it has a disc (node_slabs: unit normal, reaches along it and against it,
-/// width, largest radius), inside that. All in one frame, model units.
+/// A node's sampling spheres as the walks see them: inside its ball of radius `radius` and, when
+/// it has a disc (node_slabs: unit normal, reaches along it and against it, width, largest radius),
+/// inside that. Model units, in the frame of the node_slabs table (the model's local frame).
 struct NodeShape {
-    Eigen::Vector3f centre;
     float radius;
-    Eigen::Vector3f normal;
+    Eigen::Vector3f normal = Eigen::Vector3f::Zero();
     float out = -1, in = 0, wide = 0, sphere = 0;
-    /// The shape of a node from its row of node_slabs' table (`slab`, may be null), its centre and
-    /// normal given in the caller's frame.
-    static NodeShape of(const Eigen::Vector3f& centre, float radius, const float* slab, const Eigen::Vector3f& normal) {
-        NodeShape s{centre, radius, normal};
-        if (slab && slab[3] >= 0) s.out = slab[3], s.in = slab[4], s.wide = slab[5], s.sphere = slab[6];
+    /// The shape of node `i` with ball radius `radius`, from node_slabs' table `slab` (may be null).
+    static NodeShape of(float radius, const float* slab, size_t i) {
+        NodeShape s{radius};
+        const float* row = slab ? slab + kSlabStride * i : nullptr;
+        if (row && row[3] >= 0)
+            s.normal = Eigen::Vector3f(row[0], row[1], row[2]), s.out = row[3], s.in = row[4], s.wide = row[5],
+            s.sphere = row[6];
         return s;
     }
-    bool has_slab() const { return out >= 0; }
-    /// The largest (x - centre).u over every point x of the node's spheres, u a unit vector. With
-    /// u = a n + b e (e across n, a >= 0), a sphere's c.u + r = a (c.n + r) + b (c.e) + (1 - a) r:
-    /// at most a times the reach along n, b times the width and (1 - a) times the largest radius;
-    /// or the ball's support where that is less.
+    /// The largest (x - c).u over every point x of the node's spheres, c its centre and u a unit
+    /// vector. With u = a n + b e (e across n, a >= 0), a sphere's c.u + r = a (c.n + r) + b (c.e)
+    /// + (1 - a) r: at most a times the reach along n, b times the width and (1 - a) times the
+    /// largest radius; or the ball's support where that is less.
     float support(const Eigen::Vector3f& u) const {
         if (!(out >= 0)) return radius;
         const float a = normal.dot(u), abs_a = std::abs(a);

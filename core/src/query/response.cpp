@@ -177,10 +177,7 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     const float *slab_a = detail::node_slab_of(a), *slab_b = detail::node_slab_of(b);
     const Eigen::Vector3f back_a = back.cast<float>(), back_b = f.R.transpose() * -back_a; // each in its model's frame
     auto support = [](const CompactNode& n, const float* slab, uint32_t i, const Eigen::Vector3f& u) {
-        const float* row = slab ? slab + detail::kSlabStride * i : nullptr;
-        if (!row || !(row[3] >= 0)) return double(n.bv_radius);
-        return double(detail::NodeShape::of(Eigen::Vector3f::Zero(), n.bv_radius, row, Eigen::Vector3f(row[0], row[1], row[2]))
-                          .support(u));
+        return double(detail::NodeShape::of(n.bv_radius, slab, i).support(u));
     };
     // The bound of node pair (i, j), B's centre less A's w: the exit root of their balls, or -1
     // when they do not meet past the best root; and no later than their discs part along back (a
@@ -202,26 +199,27 @@ bool last_exit(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     // lies wholly beyond A along it every pair has parted, so that bounds every root, and it ends
     // the search as soon as the best root comes within the allowance of it (two convex-ish shapes
     // parted along the line of their deepest points: a walk of a few dozen node pairs).
+    // Where sphere a of A's active node `na` and sphere b of B's active node `nb` part, kept as
+    // the best root if they meet past s = 0: a start for the search.
+    auto start_from = [&](uint32_t na, uint32_t sa, uint32_t nb, uint32_t sb) {
+        const Eigen::Vector3d w =
+            f.Rd * tb.sphere_center(bn[nb], sb).cast<double>() + f.td - ta.sphere_center(an[na], sa).cast<double>();
+        const double reach = double(an[na].ss_radius + bn[nb].ss_radius);
+        if (meet_past(w, reach, back, 0.0)) detail::keep_exit(best, exit_of(w, reach, back), reach);
+    };
     double projected = std::numeric_limits<double>::infinity();
     if (allowance > 0) {
         const detail::SphereSupport sa = detail::spheres_support(ta, slab_a, back, s.support_heap);
         const detail::SphereSupport sb = detail::spheres_support(tb, slab_b, -(f.Rd.transpose() * back), s.support_heap);
         projected = sa.reach + sb.reach - f.td.dot(back) + 1e-6 * (a.extent() + b.extent());
         // The two spheres that reach furthest, A's along back and B's against it, part last when
-        // the shapes meet in line: their root starts the search near the answer.
-        const Eigen::Vector3d w = f.Rd * tb.sphere_center(bn[sb.node], sb.sphere).cast<double>() + f.td -
-                                  ta.sphere_center(an[sa.node], sa.sphere).cast<double>();
-        const double reach = double(an[sa.node].ss_radius + bn[sb.node].ss_radius);
-        if (meet_past(w, reach, back, 0.0)) detail::keep_exit(best, exit_of(w, reach, back), reach);
+        // the shapes meet in line.
+        start_from(sa.node, sa.sphere, sb.node, sb.sphere);
     }
     if (seed && seed->node_a < an.size() && seed->node_b < bn.size()) { // the caller's start
         const CompactNode &na = an[seed->node_a], &nb = bn[seed->node_b];
-        if (na.is_active() && nb.is_active() && seed->a - na.first < na.count && seed->b - nb.first < nb.count) {
-            const Eigen::Vector3d w = f.Rd * tb.sphere_center(nb, seed->b).cast<double>() + f.td -
-                                      ta.sphere_center(na, seed->a).cast<double>();
-            const double reach = double(na.ss_radius + nb.ss_radius);
-            if (meet_past(w, reach, back, 0.0)) detail::keep_exit(best, exit_of(w, reach, back), reach);
-        }
+        if (na.is_active() && nb.is_active() && seed->a - na.first < na.count && seed->b - nb.first < nb.count)
+            start_from(seed->node_a, seed->a, seed->node_b, seed->b);
     }
     std::vector<Eigen::Vector3d>& moved = s.exit_leaf_b;
     moved.resize(b.max_leaf());
