@@ -4,6 +4,7 @@
 #include "spt/error.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 #include <fstream>
 
 namespace spt {
@@ -59,6 +60,32 @@ TEST(RigImport, FbxClipStartsAtTheBindPoseAndListsItsJoints) {
     EXPECT_NE(m.imported.report.warnings.back().find("more than 4 joints"), std::string::npos);
     for (const VertexInfluences& in : m.rig.influences)
         EXPECT_NEAR(in.weight[0] + in.weight[1] + in.weight[2] + in.weight[3], 1, 1e-12);
+}
+
+// Half-Life MDL as assimp 5.2.5 reads it: every bone a child of one node, its real parent only in
+// mParent. Chained through their parents, the bones at rest give back the mesh, and the
+// `reference` clip, which turns only the root bone, moves the whole mesh rigidly (read as
+// siblings, its limbs came apart by 11.7 units on a 10.5 diagonal).
+TEST(RigImport, MdlBonesChainThroughTheirParentsSoTheReferenceClipMovesTheMeshRigidly) {
+    const AnimatedMesh m = import_animated_mesh(kModels + "MDL/MDL (HL1)/man.mdl");
+    ASSERT_TRUE(m.rig.skinned);
+    const std::vector<Eigen::Vector3d>& mesh = m.imported.mesh.positions;
+    const double diagonal = m.imported.mesh.diagonal();
+    std::vector<Eigen::Vector3d> p;
+    pose_vertices(m, nullptr, 0, p);
+    EXPECT_LT(largest_move(p, mesh), 1e-5 * diagonal);
+    const Clip* reference = nullptr;
+    for (const Clip& c : m.clips)
+        if (c.name == "reference") reference = &c;
+    ASSERT_NE(reference, nullptr);
+    pose_vertices(m, reference, 0, p);
+    Eigen::Matrix3Xd from(3, mesh.size()), to(3, mesh.size());
+    for (size_t v = 0; v < mesh.size(); ++v) from.col(Eigen::Index(v)) = mesh[v], to.col(Eigen::Index(v)) = p[v];
+    const Eigen::Matrix4d rigid = Eigen::umeyama(from, to, false);
+    std::vector<Eigen::Vector3d> moved(mesh.size());
+    for (size_t v = 0; v < mesh.size(); ++v) moved[v] = (rigid * mesh[v].homogeneous()).head<3>();
+    EXPECT_LT(largest_move(p, moved), 1e-5 * diagonal);
+    EXPECT_GT(largest_move(p, mesh), 0.1 * diagonal); // the clip does turn it
 }
 
 // Khronos' AnimatedMorphCube: two targets whose weights a clip drives.
