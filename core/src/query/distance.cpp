@@ -7,20 +7,15 @@
 #include "query/node_slab.hpp"
 #include "query/pending_pose.hpp"
 #include "query/query_run.hpp"
+#include "query/scratch.hpp"
 #include "spt/error.hpp"
 #include <algorithm>
 #include <limits>
 #include <cmath>
-#include <queue>
+#include <functional>
 
 namespace spt {
 namespace {
-
-struct NodePairGap {
-    double gap;     // lower bound of any gap below the pair, model units
-    uint32_t a, b;  // CompactTree node indices
-    bool operator>(const NodePairGap& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
-};
 
 // B's local point in A's local frame (both relative to their models' origins), in double.
 struct FrameBToA {
@@ -119,12 +114,21 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     Eigen::Vector3d best_a, best_b; // nearest sphere centres, A's local frame
     double best_ra = 0, best_rb = 0;
     bool found = false;
-    std::priority_queue<NodePairGap, std::vector<NodePairGap>, std::greater<NodePairGap>> open;
-    if (const double g = lower_bound(0, 0); g < best) open.push({g, 0, 0});
+    // A heap of node pairs by the least gap below them (a lower bound, model units), kept in the
+    // scratch so that a query allocates nothing once it has grown.
+    using Bound = detail::ScratchBuffers::SphereGapBound;
+    auto& open = detail::buffers_of(scratch).sphere_gap_heap;
+    open.clear();
+    auto push = [&](double g, uint32_t i, uint32_t j) {
+        open.push_back({g, i, j});
+        std::push_heap(open.begin(), open.end(), std::greater<Bound>());
+    };
+    if (const double g = lower_bound(0, 0); g < best) push(g, 0, 0);
     auto children = [](const CompactTree& t, uint32_t i) { return std::array<uint32_t, 2>{i + 1, t.nodes()[i].first}; };
     while (!open.empty()) {
-        const NodePairGap top = open.top();
-        open.pop();
+        std::pop_heap(open.begin(), open.end(), std::greater<Bound>());
+        const Bound top = open.back();
+        open.pop_back();
         if (!worth(top.gap) && !(top.gap < 0)) break;
         ++res.counters.node_pairs;
         const CompactNode& na = ta.nodes()[top.a];
@@ -152,7 +156,7 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
         for (uint32_t c : side_a ? children(ta, top.a) : children(tb, top.b)) {
             const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
             ++res.counters.bound_tests;
-            if (const double g = lower_bound(i, j); worth(g) || g < 0) open.push({g, i, j});
+            if (const double g = lower_bound(i, j); worth(g) || g < 0) push(g, i, j);
         }
     }
     if (!found) {

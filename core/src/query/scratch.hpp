@@ -97,6 +97,13 @@ struct ScratchBuffers {
         bool operator>(const GapBound& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
     };
     std::vector<GapBound> gap_heap;
+    // The sphere levels' distance (distance.cpp): the same, its gaps in double.
+    struct SphereGapBound {
+        double gap;
+        uint32_t a, b;
+        bool operator>(const SphereGapBound& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
+    };
+    std::vector<SphereGapBound> sphere_gap_heap;
     std::vector<Eigen::Vector3d> exit_leaf_b;
     SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
 };
