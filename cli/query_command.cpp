@@ -82,7 +82,7 @@ int run_query(const QueryArgs& args) {
         throw Error(ErrorKind::Usage, "--max-distance goes with --mode distance");
     if (args.no_depth && args.mode != "distance") throw Error(ErrorKind::Usage, "--no-depth goes with --mode distance");
     QueryOptions o;
-    o.level = args.level == "bounds" ? QueryLevel::Bounds : args.level == "exact" ? QueryLevel::Exact : QueryLevel::Spheres;
+    o.level = query_level_named(args.level).value_or(QueryLevel::Spheres); // the parser checked the name
     o.mode = args.mode == "all" ? QueryMode::All : args.mode == "deepest" ? QueryMode::Deepest : QueryMode::Any;
     o.normal_culling = args.culling;
     o.solids = !args.surfaces;

@@ -57,7 +57,6 @@ double percentile(std::vector<double> v, double q) {
     return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
 }
 
-const char* level_name(QueryLevel l) { return l == QueryLevel::Bounds ? "bounds" : l == QueryLevel::Spheres ? "spheres" : "exact"; }
 
 std::string fmt(double v, int prec) {
     char b[64];
@@ -102,7 +101,7 @@ struct Built {
 };
 
 std::string config_name(const Config& c, double diag) {
-    std::string s = std::string(level_name(c.level)) + ", " + (c.bounds == BoundsMethod::Paper ? "paper" : "tight") +
+    std::string s = std::string(query_level_name(c.level)) + ", " + (c.bounds == BoundsMethod::Paper ? "paper" : "tight") +
                     ", cull " + (c.culling ? "on" : "off") + ", ";
     s += c.eps > 0 ? "ε " + fmt(c.eps * 100, 1) + "%" : std::string("vertices");
     if (c.radius_eps) s += " r=ε";

@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
         for (QueryLevel level : {QueryLevel::Exact, QueryLevel::Spheres, QueryLevel::Bounds}) {
             QueryOptions o;
             o.level = level;
-            Row r{level == QueryLevel::Exact ? "exact" : level == QueryLevel::Spheres ? "spheres" : "bounds", {}, {}};
+            Row r{query_level_name(level), {}, {}};
             for (const Pose& p : pose) {
                 double ns = 0;
                 r.answers.push_back(timed([&] { return collide_relative(a, b, p, o, scratch).collide; }, repeat, ns));

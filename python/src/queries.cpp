@@ -16,9 +16,7 @@ namespace {
 
 // The level `spt query --level` names; anything else is the caller's mistake (ValueError).
 QueryLevel level_of(const std::string& level) {
-    if (level == "bounds") return QueryLevel::Bounds;
-    if (level == "spheres") return QueryLevel::Spheres;
-    if (level == "exact") return QueryLevel::Exact;
+    if (const std::optional<QueryLevel> named = query_level_named(level)) return *named;
     throw py::value_error("level: expected 'bounds', 'spheres' or 'exact', got '" + level + "'");
 }
 

@@ -379,3 +379,18 @@ TEST(Query, ThreadsWithTheirOwnScratchAgreeWithOneThread) {
 
 } // namespace
 } // namespace spt
+
+namespace spt {
+namespace {
+
+// One spelling of the levels for the command line, scenes and Python: each name gives its level
+// and back; a name in another case or with spaces is none.
+TEST(QueryLevelNames, EachNameGivesItsLevelAndBackAndNothingElseIsALevel) {
+    for (QueryLevel level : {QueryLevel::Bounds, QueryLevel::Spheres, QueryLevel::Exact})
+        EXPECT_EQ(query_level_named(query_level_name(level)), level);
+    EXPECT_STREQ(query_level_name(QueryLevel::Spheres), "spheres");
+    for (const char* wrong : {"", "Spheres", " exact", "sphere", "triangles"}) EXPECT_FALSE(query_level_named(wrong)) << wrong;
+}
+
+} // namespace
+} // namespace spt

@@ -12,6 +12,8 @@
 #include "spt/pose.hpp"
 #include "spt/query_scratch.hpp"
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 namespace spt {
 
@@ -21,6 +23,11 @@ enum class QueryLevel {
     Spheres, ///< sampling spheres (the paper)
     Exact,   ///< triangles, exact predicates; needs the mesh in both models
 };
+
+/// The level the command line, scenes and Python call `name` ("bounds", "spheres", "exact"), or none.
+std::optional<QueryLevel> query_level_named(std::string_view name);
+/// The name of `level` as the command line, scenes and Python spell it.
+const char* query_level_name(QueryLevel level);
 
 /// What a query reports.
 enum class QueryMode {

@@ -220,9 +220,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::s
     }
     if (j.contains("level")) {
         const std::string level = r.text(j["level"], "/level");
-        if (level == "bounds") s.level = QueryLevel::Bounds;
-        else if (level == "spheres") s.level = QueryLevel::Spheres;
-        else if (level == "exact") s.level = QueryLevel::Exact;
+        if (const std::optional<QueryLevel> named = query_level_named(level)) s.level = *named;
         else r.fail("/level", "must be 'bounds', 'spheres' or 'exact', not '" + level + "'");
         if (s.level != QueryLevel::Spheres && s.effects.has(Effect::Dynamics))
             r.fail("/level", "effect 'dynamics' takes its contact manifolds from the sampling spheres: the level must be 'spheres'");
