@@ -1,5 +1,6 @@
 // Writing and checked reading of the builds from motion a tree records.
 #include "io/motion_codec.hpp"
+#include "io/tree_refs.hpp"
 
 namespace spt::detail {
 namespace {
@@ -28,13 +29,8 @@ std::vector<MotionBuildStep> get_motion_builds(Reader& r, const SamplingTree& tr
     std::vector<MotionBuildStep> builds(count);
     uint32_t last_after = 0;
     for (MotionBuildStep& b : builds) {
+        b.node = get_inner_node_id(r, tree, "motion build node", "motion build under node");
         size_t at = r.offset();
-        b.node = r.get<uint64_t>("motion build node");
-        const TreeNode* n = tree.find(b.node);
-        if (!n || n->active)
-            r.fail(at, "motion build under node " + std::to_string(b.node) + ": tree '" + tree.name() +
-                           "' has no inner node of that id");
-        at = r.offset();
         b.scene = r.get_string("motion build scene", kMaxMotionText);
         if (b.scene.empty()) r.fail(at, "motion build with an empty scene path");
         at = r.offset();

@@ -1,5 +1,6 @@
 // Writing and checked reading of authoring recipes: steps, strokes, view matrices, rectangles.
 #include "io/recipe_codec.hpp"
+#include "io/tree_refs.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -141,19 +142,14 @@ std::vector<RecipeStep> get_recipe(Reader& r, const SamplingTree& tree, uint32_t
     r.need(uint64_t(steps) * 12, std::to_string(steps) + " recipe steps");
     std::vector<RecipeStep> recipe(steps);
     for (RecipeStep& step : recipe) {
-        size_t at = r.offset();
-        step.node = r.get<uint64_t>("recipe node");
-        const TreeNode* n = tree.find(step.node);
-        if (!n || n->active)
-            r.fail(at, "recipe step for node " + std::to_string(step.node) + ": tree '" + tree.name() +
-                           "' has no split node with that id");
+        step.node = get_inner_node_id(r, tree, "recipe node", "recipe step for node");
         const auto strokes = r.get<uint32_t>("recipe stroke count");
         r.need(uint64_t(strokes) * kStrokeBytes, std::to_string(strokes) + " recipe strokes");
         step.strokes.resize(strokes);
         for (RecipeStroke& s : step.strokes) {
             s.view.view = get_matrix(r, "recipe view matrix");
             s.view.projection = get_matrix(r, "recipe projection matrix");
-            at = r.offset();
+            size_t at = r.offset();
             const auto perspective = r.get<uint8_t>("recipe stroke"), visible = r.get<uint8_t>("recipe stroke");
             const auto mode = r.get<uint8_t>("recipe stroke"), kind = r.get<uint8_t>("recipe stroke");
             if (perspective > 1 || visible > 1 || mode > 2 || kind > (version >= 5 ? kLastStrokeKind : 0))
