@@ -3,6 +3,7 @@
 /// cannot tell a flat patch or a thin rod from a ball; near contact only a box along the
 /// part's principal axes can prune such pairs, as FCL's OBB trees do (docs/queries.md).
 #include <Eigen/Core>
+#include <cmath>
 #include <vector>
 
 namespace spt {
@@ -34,7 +35,31 @@ Obb placed(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t);
 /// `margin`, told by a separating axis among the six face normals of the two boxes
 /// (conservative: a pair only an edge-edge axis separates is reported as overlapping).
 /// An empty box is disjoint from everything.
-bool obbs_disjoint(const Obb& a, const Obb& b, float margin);
+/// Inline: the exact level's walk calls it at most node pairs of elongated parts.
+inline bool obbs_disjoint(const Obb& a, const Obb& b, float margin) {
+    if (a.half[0] < 0 || b.half[0] < 0) return true;
+    const float* ea = a.half;
+    const float* eb = b.half;
+    const float d[3] = {b.center[0] - a.center[0], b.center[1] - a.center[1], b.center[2] - a.center[2]};
+    auto dot = [](const float* u, const float* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+    // C(i, j) = A_i . B_j and the centre offset along A's axes, a row at a time: most
+    // separated pairs are told apart by one of A's own axes before the rest is computed.
+    // Only the six face axes are tried: the nine edge-edge axes of the full test (Gottschalk
+    // et al. 1996) separated too few of the pairs the spheres and faces let through to pay
+    // for themselves (exact level, robot against environment: 5.8 -> 3.6 us median). The
+    // small allowance in |C| keeps the test conservative for rounded axes.
+    float C[3][3], Abs[3][3], T[3];
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) C[i][j] = dot(a.axis[i], b.axis[j]), Abs[i][j] = std::abs(C[i][j]) + 1e-6f;
+        T[i] = dot(a.axis[i], d);
+        if (std::abs(T[i]) > ea[i] + eb[0] * Abs[i][0] + eb[1] * Abs[i][1] + eb[2] * Abs[i][2] + margin) return true;
+    }
+    for (int j = 0; j < 3; ++j) {
+        const float s = T[0] * C[0][j] + T[1] * C[1][j] + T[2] * C[2][j];
+        if (std::abs(s) > ea[0] * Abs[0][j] + ea[1] * Abs[1][j] + ea[2] * Abs[2][j] + eb[j] + margin) return true;
+    }
+    return false;
+}
 
 /// Same with `b` given in B's frame, placed in A's by x -> R x + t.
 bool obbs_disjoint(const Obb& a, const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t, float margin);

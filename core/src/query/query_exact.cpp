@@ -4,6 +4,7 @@
 #include "query/exact_data.hpp"
 #include "geometry/obb.hpp"
 #include "geometry/tri_tri.hpp"
+#include <tuple>
 
 namespace spt {
 namespace {
@@ -56,10 +57,16 @@ void QueryRun::run_triangles() {
     };
     auto& stack = s.stack;
     stack.clear();
-    stack.push_back({0, 0});
-    while (!stack.empty()) {
-        const auto [i, j] = stack.back();
-        stack.pop_back();
+    // The nearer child pair is taken next without a trip through the stack.
+    uint32_t i = 0, j = 0;
+    bool carried = true;
+    for (;;) {
+        if (!carried) {
+            if (stack.empty()) break;
+            std::tie(i, j) = stack.back();
+            stack.pop_back();
+        }
+        carried = false;
         ++res.counters.node_pairs;
         const TriangleNode &na = an[i], &nb = bn[j];
         const Eigen::Vector3f ca = centre_a(i), cb = centre_b(j);
@@ -68,6 +75,10 @@ void QueryRun::run_triangles() {
         if ((ca - cb).squaredNorm() > prune * prune) continue;
         ++res.counters.bound_tests;
         if (na.boxed | nb.boxed) { // a rod or a sliver: only a box tells it from a ball
+            // Against a compact node, first its ball against the elongated one's box (three
+            // projections, in that box's own frame).
+            if (!nb.boxed && sphere_misses_box(na, cb, nb.radius + f.margin)) continue;
+            if (!na.boxed && sphere_misses_box(nb, f.R.transpose() * (ca - f.t), na.radius + f.margin)) continue;
             if (obbs_disjoint(na.box(), b_tri_box(j), f.margin)) continue;
         } else { // each node's slab (box axis 0) against the other's sphere, each in its own frame
             const Eigen::Vector3f d = cb - ca;
@@ -112,14 +123,14 @@ void QueryRun::run_triangles() {
                            (centre_a(near) - cb).squaredNorm() - an[near].radius * an[near].radius)
                 std::swap(near, far);
             stack.push_back({far, j});
-            stack.push_back({near, j});
+            i = near, carried = true;
         } else {
             uint32_t near = j + 1, far = nb.first;
             if (any && (centre_b(far) - ca).squaredNorm() - bn[far].radius * bn[far].radius <
                            (centre_b(near) - ca).squaredNorm() - bn[near].radius * bn[near].radius)
                 std::swap(near, far);
             stack.push_back({i, far});
-            stack.push_back({i, near});
+            j = near, carried = true;
         }
     }
 }
