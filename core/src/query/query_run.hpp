@@ -69,6 +69,17 @@ struct MovedB {
         }
         return out;
     }
+    // The centre and slab axis (axis 0) of node j of B's triangle tree (as tri_box's, without
+    // the other axes).
+    const ScratchBuffers::MovedNode& tri_node(uint32_t j) {
+        if (s.bcentre_stamp[j] != s.epoch) {
+            const TriangleNode& n = e.tri_nodes[j];
+            s.bcentre_stamp[j] = s.epoch;
+            s.bcentres[j] = {f.R * Eigen::Vector3f(n.center[0], n.center[1], n.center[2]) + f.t,
+                             f.R * Eigen::Vector3f(n.axis[0][0], n.axis[0][1], n.axis[0][2])};
+        }
+        return s.bcentres[j];
+    }
     // The box of node j of B's triangle tree.
     const Obb& tri_box(uint32_t j) {
         if (s.bbox_stamp[j] != s.epoch) s.bbox_stamp[j] = s.epoch, s.bboxes[j] = placed(e.tri_nodes[j].box(), f.R, f.t);

@@ -73,6 +73,11 @@ struct ScratchBuffers {
     std::vector<uint32_t> tri_stamp;
     std::vector<Obb> bboxes;                 // boxes of B's triangle-tree nodes in A's frame (lazy, box tests only)
     std::vector<uint32_t> bbox_stamp;
+    struct MovedNode {
+        Eigen::Vector3f centre, axis0; // a triangle-tree node's centre and its slab's axis
+    };
+    std::vector<MovedNode> bcentres;         // B's triangle-tree nodes in A's frame (lazy)
+    std::vector<uint32_t> bcentre_stamp;
     std::vector<float> d2;                   // distance matrix of one leaf pair
     std::vector<float> ga, gb;               // culled spheres gathered (x, y, z blocks)
     std::vector<uint32_t> ia, ib;            // their sphere indices
