@@ -23,6 +23,17 @@ bool sphere_misses_box(const TriangleNode& n, const Eigen::Vector3f& c, float r)
     return out2 > r * r;
 }
 
+// The same against a box in the sphere's frame (B's boxes once moved into A's).
+bool sphere_misses_box(const Obb& b, const Eigen::Vector3f& c, float r) {
+    const Eigen::Vector3f d = c - Eigen::Vector3f(b.center[0], b.center[1], b.center[2]);
+    float out2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        const float o = std::max(std::abs(b.axis[k][0] * d.x() + b.axis[k][1] * d.y() + b.axis[k][2] * d.z()) - b.half[k], 0.0f);
+        out2 += o * o;
+    }
+    return out2 > r * r;
+}
+
 } // namespace
 
 const Eigen::Vector3d& QueryRun::b_vertex(uint32_t v) { return detail::MovedB{s, EB, f}.vertex(v); }
@@ -82,8 +93,9 @@ void QueryRun::run_triangles() {
             // Against a compact node, first its ball against the elongated one's box (three
             // projections, in that box's own frame).
             if (!nb.boxed && sphere_misses_box(na, cb, nb.radius + f.margin)) continue;
-            if (!na.boxed && sphere_misses_box(nb, f.R.transpose() * (ca - f.t), na.radius + f.margin)) continue;
-            if (obbs_disjoint(na.box(), b_tri_box(j), f.margin)) continue;
+            const Obb& box_b = b_tri_box(j);
+            if (!na.boxed && sphere_misses_box(box_b, ca, na.radius + f.margin)) continue;
+            if (obbs_disjoint(na.box(), box_b, f.margin)) continue;
         } else { // each node's slab (box axis 0) against the other's sphere, in A's frame
             const Eigen::Vector3f d = cb - ca;
             if (std::abs(na.axis[0][0] * d.x() + na.axis[0][1] * d.y() + na.axis[0][2] * d.z()) >
