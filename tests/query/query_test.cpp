@@ -41,25 +41,30 @@ QueryOptions opts(QueryLevel level, QueryMode mode) {
 }
 
 // Leaves of several compact triangles (a torus) against needle leaves (a fan's blades, an
-// open tube's strips): the needle-box prefilter of a leaf pair drops no triangle pair.
+// open tube's strips), each object as A and as B: neither the needle-box prefilter of a leaf
+// pair nor a compact node's ball tried against an elongated node's box drops a triangle pair.
 TEST(Query, ExactLeavesOfCompactTrianglesAgainstNeedlesMatchBruteForce) {
     std::mt19937 rng(13);
     QueryScratch s1, s2;
     const auto fan = test::make_object(make_fan(6));
     const auto tube = test::make_object(make_open_tube(0.02, 1.5, 8));
-    int collisions = 0;
-    for (const test::Object* b : {fan.get(), tube.get()})
-        for (int it = 0; it < 60; ++it) {
-            const Pose p = random_pose(rng, 0.3 + 0.02 * it);
-            const QueryResult any = collide_relative(torus().model, b->model, p, opts(QueryLevel::Exact, QueryMode::Any), s1);
-            const QueryResult ref = collide_brute_force(torus().model, b->model, p, opts(QueryLevel::Exact, QueryMode::All), s2);
-            ASSERT_EQ(any.collide, ref.collide) << "pose " << it;
-            collide_relative(torus().model, b->model, p, opts(QueryLevel::Exact, QueryMode::All), s1);
-            EXPECT_EQ(tri_pairs(s1), tri_pairs(s2)) << "pose " << it;
-            collisions += ref.collide;
-        }
-    EXPECT_GT(collisions, 10);
-    EXPECT_LT(collisions, 110);
+    for (const bool torus_is_a : {true, false}) {
+        int collisions = 0;
+        for (const test::Object* needles : {fan.get(), tube.get()})
+            for (int it = 0; it < 60; ++it) {
+                const Pose p = random_pose(rng, 0.3 + 0.02 * it);
+                const CollisionModel& a = torus_is_a ? torus().model : needles->model;
+                const CollisionModel& b = torus_is_a ? needles->model : torus().model;
+                const QueryResult any = collide_relative(a, b, p, opts(QueryLevel::Exact, QueryMode::Any), s1);
+                const QueryResult ref = collide_brute_force(a, b, p, opts(QueryLevel::Exact, QueryMode::All), s2);
+                ASSERT_EQ(any.collide, ref.collide) << "pose " << it << (torus_is_a ? ", torus as A" : ", torus as B");
+                collide_relative(a, b, p, opts(QueryLevel::Exact, QueryMode::All), s1);
+                EXPECT_EQ(tri_pairs(s1), tri_pairs(s2)) << "pose " << it << (torus_is_a ? ", torus as A" : ", torus as B");
+                collisions += ref.collide;
+            }
+        EXPECT_GT(collisions, 10);
+        EXPECT_LT(collisions, 110);
+    }
 }
 
 TEST(Query, EveryLevelAndModeMatchesBruteForceOnSmallMeshes) {
