@@ -42,8 +42,7 @@ struct Reader {
     Rig rig;
     std::vector<std::string> warnings;
     std::unordered_map<std::string, uint32_t> node_by_name; // the first node of each name
-    std::unordered_map<const aiNode*, uint32_t> node_by_pointer;
-    std::vector<const aiNode*> file_nodes; // per rig node
+    std::unordered_map<const aiNode*, uint32_t> node_by_pointer; // every node read so far
     std::vector<MeshInstance> instances;
     std::vector<Eigen::Vector3d> raw_local;     // per raw vertex, its mesh's space
     std::vector<VertexInfluences> raw_influence; // per raw vertex
@@ -57,12 +56,17 @@ struct Reader {
         return n.length ? "'" + std::string(n.C_Str()) + "'" : "number " + std::to_string(m);
     }
 
+    // assimp 5.2.5's Half-Life MDL reader lists every bone as a child of one `<MDL_bones>` node
+    // but sets each bone's mParent to its parent bone, whose transform its own is relative to
+    // (the vertices are bound with the chained transforms). So a node whose mParent is a node
+    // read before it hangs from that one, which keeps parents before their children.
     void read_nodes(const aiNode* n, int32_t parent, int depth) {
         if (depth > 1000) return; // a cyclic or absurd node graph, as import_mesh stops too
         const uint32_t index = uint32_t(rig.nodes.size());
         RigNode r;
         r.name = n->mName.C_Str();
-        r.parent = parent;
+        const auto declared = n->mParent ? node_by_pointer.find(n->mParent) : node_by_pointer.end();
+        r.parent = declared != node_by_pointer.end() ? int32_t(declared->second) : parent;
         r.rest_local = to_eigen(n->mTransformation);
         const Eigen::Affine3d a(r.rest_local);
         Eigen::Matrix3d rotation, scaling;
@@ -73,23 +77,9 @@ struct Reader {
         rig.nodes.push_back(std::move(r));
         node_by_name.emplace(rig.nodes.back().name, index);
         node_by_pointer.emplace(n, index);
-        file_nodes.push_back(n);
         for (unsigned i = 0; i < n->mNumMeshes; ++i)
             if (n->mMeshes[i] < scene->mNumMeshes) instances.push_back({index, n->mMeshes[i], 0, 0, 0});
         for (unsigned c = 0; c < n->mNumChildren; ++c) read_nodes(n->mChildren[c], int32_t(index), depth + 1);
-    }
-
-    // assimp 5.2.5's Half-Life MDL reader lists every bone as a child of one `<MDL_bones>` node
-    // but sets each bone's mParent to its parent bone, whose transform its own is relative to
-    // (the vertices are bound with the chained transforms). So a node whose mParent is another
-    // node read before it hangs from that one; the rig keeps parents before their children.
-    void follow_declared_parents() {
-        for (size_t i = 0; i < rig.nodes.size(); ++i) {
-            const aiNode* declared = file_nodes[i]->mParent;
-            if (!declared) continue;
-            const auto it = node_by_pointer.find(declared);
-            if (it != node_by_pointer.end() && it->second < i) rig.nodes[i].parent = int32_t(it->second);
-        }
     }
 
     // The rig's nodes are in depth-first order, but import_mesh visits meshes depth first too, so
@@ -262,9 +252,8 @@ void read_assimp_rig(const std::string& path, AnimatedMesh& out, std::vector<Mor
     // The flags import_mesh reads with, so that vertices come in the same order.
     const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
     if (!scene || !scene->mRootNode) throw_bad_input(path, "cannot be read again for its animation");
-    Reader r{scene, path, {}, {}, {}, {}, {}, {}, {}, {}, {}, 0};
+    Reader r{scene, path, {}, {}, {}, {}, {}, {}, {}, {}, 0};
     r.read_nodes(scene->mRootNode, -1, 0);
-    r.follow_declared_parents();
     for (MeshInstance& in : r.instances) r.read_instance(in);
     const std::vector<uint32_t>& welded = out.imported.mesh.welded_index;
     if (welded.size() != r.raw_local.size())
