@@ -94,20 +94,18 @@ struct ScratchBuffers {
     };
     std::vector<ExitBound> exit_stack;
     std::vector<std::pair<double, uint32_t>> support_heap; // detail::spheres_support's room
-    // The exact distance's branch and bound (distance_exact.cpp): a heap of node pairs by the
-    // least gap below them.
-    struct GapBound {
-        float gap;
+    // The distances' branch and bound: heaps of node pairs by the least gap below them, in float
+    // for the exact level's triangle trees (distance_exact.cpp), in double for the sphere levels
+    // (distance.cpp).
+    template <class Gap>
+    struct GapBoundOf {
+        Gap gap;
         uint32_t a, b;
-        bool operator>(const GapBound& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
+        bool operator>(const GapBoundOf& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
     };
+    using GapBound = GapBoundOf<float>;
+    using SphereGapBound = GapBoundOf<double>;
     std::vector<GapBound> gap_heap;
-    // The sphere levels' distance (distance.cpp): the same, its gaps in double.
-    struct SphereGapBound {
-        double gap;
-        uint32_t a, b;
-        bool operator>(const SphereGapBound& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
-    };
     std::vector<SphereGapBound> sphere_gap_heap;
     std::vector<Eigen::Vector3d> exit_leaf_b;
     SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
