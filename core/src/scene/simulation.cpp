@@ -355,12 +355,12 @@ void Simulation::run_contacts(StepCounters& c) {
             else
                 detail::deepest_contact(model(p.a), poses_[p.a], model(p.b), poses_[p.b], sphere_level, band,
                                         dynamic(p.a), dynamic(p.b), work[k], s);
-            // A deep overlap's pairs are not all of them: its backtrack makes its own first look,
-            // starting from its deepest pair (Simulation::respond_pair).
-            if (keep_pairs && band == 0 && work[k].deep && (dynamic(p.a) || dynamic(p.b)))
-                start_pairs_[j].assign(1, work[k].deepest);
-            else if (keep_pairs && band == 0 && (dynamic(p.a) || dynamic(p.b))) { // a response moves one of them
-                if (reuse)
+            if (keep_pairs && band == 0 && (dynamic(p.a) || dynamic(p.b))) { // a response moves one of them
+                // A deep overlap's pairs are not all of them: its backtrack makes its own first
+                // look, starting from its deepest pair (Simulation::respond_pair).
+                if (work[k].deep)
+                    start_pairs_[j].assign(1, work[k].deepest);
+                else if (reuse)
                     start_pairs_[j].assign(work[k].pairs.begin(), work[k].pairs.end());
                 else // taken from the scratch, which clears what it gets back at its next query
                     start_pairs_[j].swap(detail::buffers_of(s).pairs);
