@@ -57,7 +57,6 @@ double percentile(std::vector<double> v, double q) {
     return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
 }
 
-
 std::string fmt(double v, int prec) {
     char b[64];
     std::snprintf(b, sizeof b, "%.*f", prec, v);
