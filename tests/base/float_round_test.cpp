@@ -2,12 +2,14 @@
 #include "base/float_round.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
 namespace {
 
 using spt::detail::next_up;
+using spt::detail::round_up;
 
 TEST(FloatRound, NextUpIsNextafterTowardsInfinityForEveryKindOfFloat) {
     const float inf = std::numeric_limits<float>::infinity();
@@ -26,6 +28,26 @@ TEST(FloatRound, NextUpIsNextafterTowardsInfinityForEveryKindOfFloat) {
         if (std::isnan(f)) continue;
         const float a = next_up(f), e = std::nextafter(f, inf);
         ASSERT_EQ(std::memcmp(&a, &e, sizeof a), 0) << f;
+    }
+}
+
+TEST(FloatRound, RoundUpHoldsItsValueAndNeverGivesADenormal) {
+    // Zero (a flat patch's thickness) is exact in float and stays zero: products with it cost
+    // nothing, where the least denormal made every one a microcode assist.
+    EXPECT_EQ(round_up(0.0), 0.0f);
+    const float least_normal = std::numeric_limits<float>::min();
+    for (double r : {1e-320, 1e-45, 1e-40, 1.1e-38, double(least_normal)}) {
+        const float f = round_up(r);
+        EXPECT_GE(double(f), r) << r;
+        EXPECT_EQ(std::fpclassify(f), FP_NORMAL) << r;
+    }
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> exponent(-60, 30);
+    for (int i = 0; i < 100000; ++i) {
+        const double r = std::pow(10.0, exponent(rng));
+        const float f = round_up(r);
+        ASSERT_GE(double(f), r);
+        ASSERT_EQ(std::fpclassify(f), FP_NORMAL) << r;
     }
 }
 

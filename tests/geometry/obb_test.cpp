@@ -109,5 +109,21 @@ TEST(Obb, EmptyAndDegeneratePointSets) {
     EXPECT_TRUE(holds(line, {1, 1, 1}));
 }
 
+TEST(Obb, AnAxisAlignedFlatPatchIsExactlyZeroThickNotADenormalThick) {
+    // A wall of an architectural mesh: its box's thinnest extent is 0, which float holds exactly.
+    const std::vector<Eigen::Vector3d> wall = {{0, 0, 5}, {4, 0, 5}, {4, 3, 5}, {0, 3, 5}, {2, 1, 5}};
+    const Obb b = fit_obb(wall);
+    int zero = 0;
+    for (float h : b.half) {
+        EXPECT_NE(std::fpclassify(h), FP_SUBNORMAL);
+        zero += h == 0;
+    }
+    EXPECT_EQ(zero, 1);
+    for (const auto& p : wall) EXPECT_TRUE(holds(b, p));
+    // Two such walls in one plane still meet; one a hair above does not.
+    EXPECT_FALSE(obbs_disjoint(b, b, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero(), 0));
+    EXPECT_TRUE(obbs_disjoint(b, b, Eigen::Matrix3f::Identity(), Eigen::Vector3f(0, 0, 1e-3f), 0));
+}
+
 } // namespace
 } // namespace spt
