@@ -3,6 +3,8 @@
 #include "query_fixtures.hpp"
 #include "geometry/tri_tri.hpp"
 #include "query/exact_data.hpp"
+#include "query/node_slab.hpp"
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace spt {
@@ -103,6 +105,35 @@ TEST(TriangleTree, ZeroAreaTrianglesAreLeftOutAndCounted) {
     const CollisionModel model(doc, m);
     EXPECT_EQ(detail::exact_of(model).degenerate_triangles, 1u);
     EXPECT_EQ(detail::exact_of(model).tri_order.size(), n - 1);
+}
+
+TEST(TriangleTree, NoBoundOfFlatAxisAlignedPartsIsStoredAsADenormal) {
+    // Walls in the planes of the axes (as FCL's env.obj is made): their boxes are 0 thick. A
+    // denormal there made each product with it an x86 microcode assist, which was half the time
+    // of the exact distance on env/rob; 0 costs nothing. Default sampling, so face samples and
+    // two-sided discs are made too.
+    for (TriangleMesh m : {make_box({2, 1, 0.5}, 3), make_sheet(2.0, 4), make_bracket()}) {
+        const auto o = test::make_object(m, ConvertOptions{});
+        int denormals = 0;
+        auto scan = [&](const float* x, size_t n) {
+            for (size_t k = 0; k < n; ++k) denormals += std::fpclassify(x[k]) == FP_SUBNORMAL;
+        };
+        const ExactData& e = detail::exact_of(o->model);
+        ASSERT_FALSE(e.tri_nodes.empty());
+        for (const TriangleNode& n : e.tri_nodes) {
+            const Obb b = n.box();
+            scan(b.center, 3), scan(&b.axis[0][0], 9), scan(b.half, 3), scan(&n.radius, 1);
+        }
+        scan(e.tri_sphere.data(), e.tri_sphere.size());
+        const CompactTree& t = o->model.tree();
+        for (const CompactNode& n : t.nodes()) {
+            scan(n.center, 3), scan(&n.bv_radius, 1), scan(&n.ss_radius, 1);
+            if (n.is_active()) scan(t.centers(n), 3 * size_t(n.count));
+        }
+        if (const float* slab = detail::node_slab_of(o->model)) scan(slab, detail::kSlabStride * t.nodes().size());
+        if (const float* disc = t.node_disc()) scan(disc, 4 * t.nodes().size());
+        EXPECT_EQ(denormals, 0) << m.positions.size() << " vertices";
+    }
 }
 
 } // namespace
