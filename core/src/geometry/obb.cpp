@@ -55,17 +55,6 @@ Obb fit_obb(const std::vector<Eigen::Vector3d>& points) {
     return fit_obb_along(points, af);
 }
 
-Obb placed(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t) {
-    Obb out = b;
-    const Eigen::Vector3f c = R * Eigen::Vector3f(b.center[0], b.center[1], b.center[2]) + t;
-    for (int k = 0; k < 3; ++k) {
-        out.center[k] = c[k];
-        const Eigen::Vector3f u = R * Eigen::Vector3f(b.axis[k][0], b.axis[k][1], b.axis[k][2]);
-        for (int j = 0; j < 3; ++j) out.axis[k][j] = u[j];
-    }
-    return out;
-}
-
 bool obbs_disjoint(const Obb& a, const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t, float margin) {
     return obbs_disjoint(a, placed(b, R, t), margin);
 }

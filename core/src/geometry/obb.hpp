@@ -28,8 +28,25 @@ inline Eigen::Vector3f third_axis(const float u[3], const float v[3]) {
     return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
 }
 
+/// Box `b` moved by x -> R x + t (centre and axes; the half extents stay), written into `out`.
+/// Inline and in place: a box returned by value and then copied was read back whole before its
+/// narrower stores had landed (store forwarding failed), which cost the exact walk on env/rob
+/// more than the move itself.
+inline void place_into(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t, Obb& out) {
+    const Eigen::Vector3f c = R * Eigen::Vector3f(b.center[0], b.center[1], b.center[2]) + t;
+    for (int k = 0; k < 3; ++k) {
+        out.center[k] = c[k], out.half[k] = b.half[k];
+        const Eigen::Vector3f u = R * Eigen::Vector3f(b.axis[k][0], b.axis[k][1], b.axis[k][2]);
+        for (int j = 0; j < 3; ++j) out.axis[k][j] = u[j];
+    }
+}
+
 /// Box `b` moved by x -> R x + t (centre and axes; the half extents stay).
-Obb placed(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t);
+inline Obb placed(const Obb& b, const Eigen::Matrix3f& R, const Eigen::Vector3f& t) {
+    Obb out;
+    place_into(b, R, t, out);
+    return out;
+}
 
 /// True if boxes `a` and `b` (one frame) are disjoint even with every extent grown by
 /// `margin`, told by a separating axis among the six face normals of the two boxes

@@ -82,7 +82,7 @@ struct MovedB {
     }
     // The box of node j of B's triangle tree.
     const Obb& tri_box(uint32_t j) {
-        if (s.bbox_stamp[j] != s.epoch) s.bbox_stamp[j] = s.epoch, s.bboxes[j] = placed(e.tri_nodes[j].box(), f.R, f.t);
+        if (s.bbox_stamp[j] != s.epoch) s.bbox_stamp[j] = s.epoch, place_into(e.tri_nodes[j].box(), f.R, f.t, s.bboxes[j]);
         return s.bboxes[j];
     }
 };
