@@ -2,6 +2,7 @@
 // ordered by the gap their bounding spheres leave; overlapping models answer the deepest overlap.
 // Level exact hands the apart case to the triangles (distance_exact.cpp).
 #include "spt/distance.hpp"
+#include "query/best_first.hpp"
 #include "query/distance_exact.hpp"
 #include "query/model_access.hpp"
 #include "query/node_slab.hpp"
@@ -12,7 +13,6 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
-#include <functional>
 
 namespace spt {
 namespace {
@@ -114,21 +114,13 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     Eigen::Vector3d best_a, best_b; // nearest sphere centres, A's local frame
     double best_ra = 0, best_rb = 0;
     bool found = false;
-    // A heap of node pairs by the least gap below them (a lower bound, model units), kept in the
-    // scratch so that a query allocates nothing once it has grown.
+    // Node pairs by the least gap below them (a lower bound, model units), kept in the scratch so
+    // that a query allocates nothing once it has grown.
     using Bound = detail::ScratchBuffers::SphereGapBound;
-    auto& open = detail::buffers_of(scratch).sphere_gap_heap;
-    open.clear();
-    auto push = [&](double g, uint32_t i, uint32_t j) {
-        open.push_back({g, i, j});
-        std::push_heap(open.begin(), open.end(), std::greater<Bound>());
-    };
-    if (const double g = lower_bound(0, 0); g < best) push(g, 0, 0);
+    detail::BestFirst<double> open(detail::buffers_of(scratch).sphere_gap_heap);
+    if (const double g = lower_bound(0, 0); g < best) open.push(g, 0, 0);
     auto children = [](const CompactTree& t, uint32_t i) { return std::array<uint32_t, 2>{i + 1, t.nodes()[i].first}; };
-    while (!open.empty()) {
-        std::pop_heap(open.begin(), open.end(), std::greater<Bound>());
-        const Bound top = open.back();
-        open.pop_back();
+    for (Bound top; open.take(top);) {
         if (!worth(top.gap) && !(top.gap < 0)) break;
         ++res.counters.node_pairs;
         const CompactNode& na = ta.nodes()[top.a];
@@ -153,11 +145,14 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
         }
         // Descend the larger (a leaf never): both children of that side.
         const bool side_a = nb.is_active() || (!na.is_active() && radius_a(top.a) >= radius_b(top.b));
+        Bound kids[2];
+        int n = 0;
         for (uint32_t c : side_a ? children(ta, top.a) : children(tb, top.b)) {
             const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
             ++res.counters.bound_tests;
-            if (const double g = lower_bound(i, j); worth(g) || g < 0) push(g, i, j);
+            if (const double g = lower_bound(i, j); worth(g) || g < 0) kids[n++] = {g, i, j};
         }
+        open.push_children(kids, n);
     }
     if (!found) {
         res.beyond = true;

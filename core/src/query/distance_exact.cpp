@@ -3,6 +3,7 @@
 // boxes' gaps along a few separating directions (a flat patch's box is far tighter than its
 // sphere); leaves by triangle_gap after cheaper bounds of each triangle pair.
 #include "query/distance_exact.hpp"
+#include "query/best_first.hpp"
 #include "geometry/tri_distance.hpp"
 #include "query/exact_data.hpp"
 #include "query/model_access.hpp"
@@ -10,7 +11,6 @@
 #include "query/scratch.hpp"
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 namespace spt::detail {
 namespace {
@@ -101,18 +101,10 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
     Eigen::Vector3d best_a, best_b;
     bool found = false;
     using Bound = ScratchBuffers::GapBound;
-    auto& open = s.gap_heap;
-    open.clear();
-    auto push = [&](float g, uint32_t i, uint32_t j) {
-        open.push_back({g, i, j});
-        std::push_heap(open.begin(), open.end(), std::greater<Bound>());
-    };
+    BestFirst<float> open(s.gap_heap);
     ++res.counters.bound_tests;
-    if (const float g = lower_bound(0, 0, best); g < best) push(g, 0, 0);
-    while (!open.empty()) {
-        std::pop_heap(open.begin(), open.end(), std::greater<Bound>());
-        const Bound top = open.back();
-        open.pop_back();
+    if (const float g = lower_bound(0, 0, best); g < best) open.push(g, 0, 0);
+    for (Bound top; open.take(top);) {
         if (!worth(top.gap)) break;
         ++res.counters.node_pairs;
         const TriangleNode &na = an[top.a], &nb = bn[top.b];
@@ -150,11 +142,14 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         // Descend the larger sphere (a leaf never): both children of that side.
         const bool side_a = nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius);
         const uint32_t first = side_a ? top.a + 1 : top.b + 1, second = side_a ? na.first : nb.first;
+        Bound kids[2];
+        int n = 0;
         for (uint32_t c : {first, second}) {
             const uint32_t i = side_a ? c : top.a, j = side_a ? top.b : c;
             ++res.counters.bound_tests;
-            if (const float g = lower_bound(i, j, best * keep - options.absolute_error); worth(g)) push(g, i, j);
+            if (const float g = lower_bound(i, j, best * keep - options.absolute_error); worth(g)) kids[n++] = {g, i, j};
         }
+        open.push_children(kids, n);
     }
     if (!found) return;
     res.beyond = false;
