@@ -157,10 +157,10 @@ void QueryRun::run() {
     if (const float prune = ra + rb + pad; d2 > prune * prune) return;
     roots_overlap = true;
     // Mode deepest: the depth bound of the pair in hand, no more than its ancestors' (a child's
-    // ball can poke out of its parent's). With an allowance the descent takes the deepest-bounded
-    // child first, so that a pair near the deepest comes early and the allowance prunes the rest.
+    // ball can poke out of its parent's). The descent takes the deepest-bounded child first, so
+    // that a pair near the deepest comes early and its depth prunes the rest (and an allowance
+    // the near-ties).
     float cap = std::numeric_limits<float>::infinity();
-    const bool deepest_first = deepest && deepest_slack > 0;
     bool carried = true;
     for (;;) {
         if (!carried) {
@@ -282,7 +282,7 @@ void QueryRun::run() {
             // Modes all and deepest: the last lane pushed would be popped at once; carried instead,
             // the walk visits the same pairs in the same order.
             if (!any && bits) nearest = 31 - __builtin_clz(bits);
-            if (deepest_first && bits) { // the lane whose balls overlap most
+            if (deepest && bits) { // the lane whose balls overlap most
                 float most = -std::numeric_limits<float>::infinity();
                 const float other_r = side_a ? rb : ra;
                 for (unsigned b = bits; b; b &= b - 1) {
