@@ -44,13 +44,35 @@ public:
             return true;
         }
         if (heap_.empty()) return false;
-        std::pop_heap(heap_.begin(), heap_.end(), std::greater<Bound>());
-        top = heap_.back();
+        top = heap_.front();
+        const Bound last = heap_.back();
         heap_.pop_back();
+        const size_t n = heap_.size();
+        if (n == 0) return true;
+        // As std::pop_heap does: the hole at the root sinks to a leaf along the lesser child,
+        // then `last` rises from there. The lesser child is chosen without a branch (it is a coin
+        // toss to a predictor: a mispredicted branch a level was most of a pop).
+        size_t hole = 0;
+        for (size_t child = 1; child < n; child = 2 * hole + 1) {
+            if (child + 1 < n) child += after(heap_[child], heap_[child + 1]);
+            heap_[hole] = heap_[child];
+            hole = child;
+        }
+        while (hole > 0) {
+            const size_t parent = (hole - 1) / 2;
+            if (!after(heap_[parent], last)) break;
+            heap_[hole] = heap_[parent];
+            hole = parent;
+        }
+        heap_[hole] = last;
         return true;
     }
 
 private:
+    // x > y in the heap's order (gap, then a, then b), as bit operations.
+    static bool after(const Bound& x, const Bound& y) {
+        return (x.gap > y.gap) | ((x.gap == y.gap) & ((x.a > y.a) | ((x.a == y.a) & (x.b > y.b))));
+    }
     std::vector<Bound>& heap_;
     Bound carried_{};
     bool have_carried_ = false;
