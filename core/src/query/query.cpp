@@ -279,8 +279,8 @@ void QueryRun::run() {
             nearest = n > 0 ? order[n - 1] : -1;
         } else {
             unsigned bits = unsigned(movemask(pass));
-            // Modes all and deepest: the last lane pushed would be popped at once; carried instead,
-            // the walk visits the same pairs in the same order.
+            // Mode all: the last lane pushed would be popped at once; carried instead, the walk
+            // visits the same pairs in the same order. Mode deepest carries the deepest-bounded.
             if (!any && bits) nearest = 31 - __builtin_clz(bits);
             if (deepest && bits) { // the lane whose balls overlap most
                 float most = -std::numeric_limits<float>::infinity();
