@@ -54,13 +54,13 @@ public:
         // is, is a coin toss to a predictor (cachegrind: half the sphere distance's mispredicts).
         size_t hole = 0;
         for (size_t child = 1; child < n; child = 2 * hole + 1) {
-            if (child + 1 < n) child += after(heap_[child], heap_[child + 1]);
+            if (child + 1 < n) child += heap_[child] > heap_[child + 1];
             heap_[hole] = heap_[child];
             hole = child;
         }
         while (hole > 0) {
             const size_t parent = (hole - 1) / 2;
-            if (!after(heap_[parent], last)) break;
+            if (!(heap_[parent] > last)) break;
             heap_[hole] = heap_[parent];
             hole = parent;
         }
@@ -69,10 +69,6 @@ public:
     }
 
 private:
-    // x > y in the heap's order (gap, then a, then b), as bit operations.
-    static bool after(const Bound& x, const Bound& y) {
-        return (x.gap > y.gap) | ((x.gap == y.gap) & ((x.a > y.a) | ((x.a == y.a) & (x.b > y.b))));
-    }
     std::vector<Bound>& heap_;
     Bound carried_{};
     bool have_carried_ = false;

@@ -101,7 +101,11 @@ struct ScratchBuffers {
     struct GapBoundOf {
         Gap gap;
         uint32_t a, b;
-        bool operator>(const GapBoundOf& o) const { return gap != o.gap ? gap > o.gap : (a != o.a ? a > o.a : b > o.b); }
+        /// Later in the order (gap, then a, then b). Bit operations, not branches: a heap's pop
+        /// compares two children whose order is a coin toss to a predictor (query/best_first.hpp).
+        bool operator>(const GapBoundOf& o) const {
+            return (gap > o.gap) | ((gap == o.gap) & ((a > o.a) | ((a == o.a) & (b > o.b))));
+        }
     };
     using GapBound = GapBoundOf<float>;
     using SphereGapBound = GapBoundOf<double>;
