@@ -5,10 +5,12 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 namespace {
 
 using spt::detail::next_up;
+using spt::detail::round_half_away;
 using spt::detail::round_up;
 
 TEST(FloatRound, NextUpIsNextafterTowardsInfinityForEveryKindOfFloat) {
@@ -52,3 +54,18 @@ TEST(FloatRound, RoundUpHoldsItsValueAndNeverGivesADenormal) {
 }
 
 } // namespace
+
+TEST(FloatRound, RoundHalfAwayIsStdRoundOnFloatValuesOfEitherSignAndZeroOnNaN) {
+    // Halves of either sign, -0, the snorm scales' ends and values one ulp beside a half: the
+    // branch-free sign must round exactly as std::lround does.
+    std::vector<float> cases = {0.0f, -0.0f, 0.5f, -0.5f, 1.5f, -1.5f, 2.5f, -2.5f, 126.5f, -126.5f, 127.0f, -127.0f,
+                                32766.5f, -32766.5f, 32767.0f, -32767.0f, 1073741823.0f, -1073741823.0f};
+    for (float h : {0.5f, 1.5f, 63.5f, 126.5f, 32766.5f})
+        for (float s : {1.0f, -1.0f})
+            cases.push_back(std::nextafter(s * h, 0.0f)), cases.push_back(std::nextafter(s * h, s * 1e9f));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int k = 0; k < 100000; ++k) cases.push_back(u(rng) * (k % 2 ? 127.0f : 32767.0f));
+    for (float v : cases) EXPECT_EQ(round_half_away(double(v)), std::lround(v)) << v;
+    EXPECT_EQ(round_half_away(std::numeric_limits<double>::quiet_NaN()), 0);
+}

@@ -42,11 +42,13 @@ inline float to_float(double v) {
 }
 
 /// x rounded to the nearest integer, halves away from zero (std::round's and std::lround's
-/// value) for |x| < 2^30, without a library call: in double, x + 0.5 is exact for every
-/// float-valued x of that size, and truncation is then the rounding. NaN gives 0.
+/// value) for |x| < 2^30, without a library call: in double, x ± 0.5 is exact for every
+/// float-valued x of that size, and truncation is then the rounding. NaN gives 0. The half
+/// takes x's sign without a branch: the signs of normals' coordinates, rounded for every sphere
+/// of a deformed pose, are a coin toss to a predictor.
 inline int round_half_away(double x) {
     if (std::isnan(x)) return 0;
-    return x >= 0 ? int(x + 0.5) : -int(0.5 - x);
+    return int(x + std::copysign(0.5, x));
 }
 
 /// x rounded to float per coordinate (see to_float), read back as double.

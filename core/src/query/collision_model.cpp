@@ -134,13 +134,20 @@ void CollisionModel::measure(bool by_leaves) {
         extent_ = std::max(extent_, local_centre.norm() + radius);
         reach_ = std::max(reach_, (local_centre + o).norm() + radius);
     };
+    // By leaves, the loop over every node's ball below holds the active nodes' too. Else each
+    // active node's spheres, whose radius is one: the farthest centre's square root once a node
+    // (the square root is monotone and correctly rounded, so this is the largest norm bit for bit;
+    // a square root a sphere was a tenth of a deformed pose's time).
     for (const CompactNode& n : tree_.nodes()) {
-        if (!n.is_active()) continue;
-        if (by_leaves) { // the node's ball holds its spheres
-            grow(Eigen::Vector3d(n.center[0], n.center[1], n.center[2]), n.bv_radius);
-            continue;
+        if (!n.is_active() || by_leaves) continue;
+        double far_local = 0, far_object = 0;
+        for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+            const Eigen::Vector3d c = tree_.sphere_center(n, k).cast<double>();
+            far_local = std::max(far_local, c.squaredNorm());
+            far_object = std::max(far_object, (c + o).squaredNorm());
         }
-        for (uint32_t k = n.first; k < n.first + n.count; ++k) grow(tree_.sphere_center(n, k).cast<double>(), n.ss_radius);
+        extent_ = std::max(extent_, std::sqrt(far_local) + n.ss_radius);
+        reach_ = std::max(reach_, std::sqrt(far_object) + n.ss_radius);
     }
     const auto& nodes = tree_.nodes();
     bounds_reach_.assign(nodes.size(), 0);

@@ -55,10 +55,10 @@ void CompactTree::fit_active_ball(uint32_t i) {
         lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
     }
     const Eigen::Vector3d mid = 0.5 * (lo + hi);
-    double far = 0;
+    double far2 = 0; // one square root a node: it is monotone and correctly rounded
     for (uint32_t k = n.first; k < n.first + n.count; ++k)
-        far = std::max(far, (sphere_center(n, k).cast<double>() - mid).norm());
-    store_ball(n, mid, far + double(n.ss_radius));
+        far2 = std::max(far2, (sphere_center(n, k).cast<double>() - mid).squaredNorm());
+    store_ball(n, mid, std::sqrt(far2) + double(n.ss_radius));
     double* box = boxes_.data() + 6 * size_t(i);
     for (int a = 0; a < 3; ++a) box[a] = lo[a], box[3 + a] = hi[a];
 }
