@@ -868,8 +868,9 @@ int usage() {
     std::fprintf(stderr,
                  "usage: deforming_bench [--frames N] [--rounds R] [--figure GLTF] [--fbx FBX] [--out-dir DIR] [--stem NAME]\n"
                  "                       [--lazy-region SAMPLES]\n"
-                 "       deforming_bench --profile-update ITERATIONS [--profile-fbx] [--profile-spheres]\n"
-                 "                       (spt's update alone, for perf; --profile-spheres: without the triangles)\n");
+                 "       deforming_bench --profile-update ITERATIONS [--profile-fbx] [--profile-spheres] [--profile-tight]\n"
+                 "                       (spt's update alone, for perf; --profile-spheres: without the triangles;\n"
+                 "                       --profile-tight: set_tight_refit)\n");
     return 1;
 }
 
@@ -881,6 +882,7 @@ int main(int argc, char** argv) {
     long profile = 0;
     bool profile_fbx = false;
     bool profile_spheres = false; // the spheres level's pose: no triangle tree
+    bool profile_tight = false;   // DeformingModel::set_tight_refit
     std::string figure = SPT_SOURCE_DIR "/resources/models/walking_figure.gltf";
     std::string fbx = "/usr/share/assimp/models/FBX/animation_with_skeleton.fbx";
     std::string out_dir, stem = "deforming-bench";
@@ -908,6 +910,7 @@ int main(int argc, char** argv) {
         else if (a == "--profile-update") profile = number(1, 100000000);
         else if (a == "--profile-fbx") profile_fbx = true;
         else if (a == "--profile-spheres") profile_spheres = true;
+        else if (a == "--profile-tight") profile_tight = true;
         else if (a == "--lazy-region") g_lazy_region = uint32_t(number(1, 100000000));
         else return usage();
     }
@@ -923,6 +926,7 @@ int main(int argc, char** argv) {
             auto doc = profile_fbx ? std::make_shared<const SptDocument>(make_document(mesh->imported.mesh)) : fig_doc;
             const Animated an = profile_fbx ? animate(mesh, doc, "0", frames, 0) : walker;
             DeformingModel m(*doc, mesh, std::string(), !profile_spheres);
+            m.set_tight_refit(profile_tight);
             std::vector<double> ns;
             for (long k = 0; k < profile; ++k) {
                 const auto t0 = Clock::now();

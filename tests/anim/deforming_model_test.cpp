@@ -73,6 +73,32 @@ TEST(DeformingModel, ATightRefitHoldsItsSpheresIsTighterAndIsTheSameAfterAnyPose
     }
 }
 
+TEST(DeformingModel, ATightRefitSearchesOnlyNodesOfManySpheresAndKeepsTheMergedBallsBelow) {
+    DeformingModel loose(bar().doc, bar().mesh), tight(bar().doc, bar().mesh);
+    tight.set_tight_refit(true);
+    loose.pose(&bar().mesh->clips[0], 0.8), tight.pose(&bar().mesh->clips[0], 0.8);
+    const auto &a = loose.model().tree().nodes(), &b = tight.model().tree().nodes();
+    std::vector<uint32_t> below(a.size());
+    for (size_t i = a.size(); i-- > 0;) // children follow their parent
+        below[i] = a[i].is_active() ? a[i].count : below[i + 1] + below[a[i].first];
+    ASSERT_GE(below[0], 4 * CompactTree::kTightSearchFrom); // the search has nodes to work on
+    // Above, a node's ball need not be smaller (the smallest ball around two searched children
+    // can be larger than around two merged ones), but together they are.
+    int searched = 0;
+    double loose_sum = 0, tight_sum = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (below[i] < CompactTree::kTightSearchFrom) { // neither it nor any node below it is searched
+            ASSERT_EQ(a[i].bv_radius, b[i].bv_radius) << i;
+            for (int k = 0; k < 3; ++k) ASSERT_EQ(a[i].center[k], b[i].center[k]) << i;
+            continue;
+        }
+        ++searched, loose_sum += a[i].bv_radius, tight_sum += b[i].bv_radius;
+    }
+    EXPECT_GT(searched, 0);
+    EXPECT_LT(tight_sum, loose_sum);
+    expect_bounds_hold(tight.model().tree());
+}
+
 TEST(DeformingModel, VertexSpheresSitBehindTheirPosedVertexAlongItsNormal) {
     DeformingModel dm(bar().doc, bar().mesh);
     dm.pose(&bar().mesh->clips[0], 1.0);

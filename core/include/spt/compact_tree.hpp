@@ -81,14 +81,18 @@ public:
                         int threads = 1, TaskSystem* tasks = nullptr);
     /// Fits every node's bounding sphere to the spheres below it, bottom up: an active node's
     /// around the middle of its centres' box; an inner node's the smallest ball holding its two
-    /// children's or, with set_tight_refit, the ball around the middle of its centres' box
-    /// reaching its farthest sphere where that is smaller. A function of the centres alone:
+    /// children's or, with set_tight_refit and at least kTightSearchFrom spheres below it, the
+    /// ball around the middle of its centres' box reaching its farthest sphere where that is
+    /// smaller. A function of the centres alone:
     /// refitting after any sequence of poses gives what refitting a fresh layout at the last
     /// pose gives.
     void refit_bounds(int threads = 1, TaskSystem* tasks = nullptr);
-    /// Whether refits search the spheres below each inner node for a tighter ball (about as
-    /// tight as a build's, for about 1.6x the refit's time; docs/deforming.md, "Refit").
+    /// Whether refits search the spheres below each inner node of at least kTightSearchFrom
+    /// spheres for a tighter ball (queries then walk about the node pairs of a build's tree;
+    /// docs/deforming.md, "Refit").
     void set_tight_refit(bool tight) { tight_refit_ = tight; }
+    /// The fewest spheres below an inner node whose ball a tight refit searches for.
+    static constexpr uint32_t kTightSearchFrom = 256;
 
 private:
     friend class detail::LazyPose; // poses the layout part by part (anim/lazy_pose.hpp)
@@ -108,6 +112,7 @@ private:
     void ensure_boxes();
     std::vector<double> boxes_; // per node: the box of the sphere centres below it (lo xyz, hi xyz), set by a refit
     bool tight_refit_ = false;
+    std::vector<uint32_t> spheres_below_; // per node: how many spheres lie below it (set with boxes_)
     Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
     std::vector<CompactNode> nodes_;
     std::vector<float> centers_;

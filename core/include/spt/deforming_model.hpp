@@ -65,9 +65,10 @@ public:
     void settle();
     /// The most samples in a part of the tree a lazy pose poses in one go (default 512).
     void set_lazy_region(uint32_t samples);
-    /// Refits inner bounding spheres tight, by searching the spheres below each (default off):
-    /// a pose costs about 1.6x as much, and a query on it walks about as many node pairs as on
-    /// a tree built at the pose (docs/deforming.md, "Refit"). Applies from the next pose.
+    /// Refits inner bounding spheres tight, by searching the spheres below each that holds at
+    /// least CompactTree::kTightSearchFrom (default off): a pose costs about 1.15x as much, and a
+    /// query on it walks about as many node pairs as on a tree built at the pose
+    /// (docs/deforming.md, "Refit"). Applies from the next pose.
     void set_tight_refit(bool tight);
 
     /// The model at the current pose.

@@ -108,10 +108,13 @@ void CompactTree::fit_inner_ball(uint32_t i, bool search_below) {
     }
     // ...or, tight, the ball around the middle of the centres' box that reaches the farthest
     // sphere below (the builder's first candidate) when it is smaller, as it is at most nodes.
-    if (!search_below || !tight_refit_) return store_ball(n, centre, radius);
+    // Searched only above kTightSearchFrom spheres: lower down, the children's balls have
+    // gathered little slack, and searching there was most of the tight refit's time.
+    if (!tight_refit_) return store_ball(n, centre, radius);
     double* box = boxes_.data() + 6 * size_t(i);
     const double *ba = boxes_.data() + 6 * size_t(i + 1), *bb = boxes_.data() + 6 * size_t(n.first);
     for (int k = 0; k < 3; ++k) box[k] = std::min(ba[k], bb[k]), box[3 + k] = std::max(ba[3 + k], bb[3 + k]);
+    if (!search_below || spheres_below_[i] < kTightSearchFrom) return store_ball(n, centre, radius);
     const Eigen::Vector3d mid(0.5 * (box[0] + box[3]), 0.5 * (box[1] + box[4]), 0.5 * (box[2] + box[5]));
     const double far = farthest_below(i, mid);
     if (far >= 0 && far < radius) centre = mid, radius = far;
@@ -131,6 +134,11 @@ void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, con
 
 void CompactTree::ensure_boxes() {
     if (boxes_.size() != 6 * nodes_.size()) boxes_.assign(6 * nodes_.size(), 0.0);
+    if (spheres_below_.size() != nodes_.size()) { // children follow their parent
+        spheres_below_.assign(nodes_.size(), 0);
+        for (size_t i = nodes_.size(); i-- > 0;)
+            spheres_below_[i] = nodes_[i].is_active() ? nodes_[i].count : spheres_below_[i + 1] + spheres_below_[nodes_[i].first];
+    }
 }
 
 void CompactTree::refit_bounds(int threads, TaskSystem* tasks) {

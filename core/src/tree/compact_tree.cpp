@@ -152,7 +152,8 @@ size_t CompactTree::memory_bytes() const {
     return nodes_.capacity() * sizeof(CompactNode) + centers_.capacity() * sizeof(float) +
            (nx_.capacity() + ny_.capacity() + nz_.capacity()) + two_sided_.capacity() +
            node_disc_.capacity() * sizeof(float) + sample_index_.capacity() * sizeof(uint32_t) +
-           active_.capacity() * sizeof(uint32_t) + boxes_.capacity() * sizeof(double); // the last two: a deformed pose's
+           active_.capacity() * sizeof(uint32_t) + boxes_.capacity() * sizeof(double) +
+           spheres_below_.capacity() * sizeof(uint32_t); // the last three: a deformed pose's
 }
 
 } // namespace spt
