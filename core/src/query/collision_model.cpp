@@ -135,11 +135,12 @@ void CollisionModel::measure(bool by_leaves) {
         reach_ = std::max(reach_, (local_centre + o).norm() + radius);
     };
     // By leaves, the loop over every node's ball below holds the active nodes' too. Else each
-    // active node's spheres, whose radius is one: the farthest centre's square root once a node
-    // (the square root is monotone and correctly rounded, so this is the largest norm bit for bit;
-    // a square root a sphere was a tenth of a deformed pose's time).
+    // active node's spheres, which share one radius: the farthest centre's square root once a
+    // node (the square root is monotone and correctly rounded, so this is the largest norm bit
+    // for bit; a square root a sphere was a tenth of a deformed pose's time).
     for (const CompactNode& n : tree_.nodes()) {
-        if (!n.is_active() || by_leaves) continue;
+        if (by_leaves) break;
+        if (!n.is_active()) continue;
         double far_local = 0, far_object = 0;
         for (uint32_t k = n.first; k < n.first + n.count; ++k) {
             const Eigen::Vector3d c = tree_.sphere_center(n, k).cast<double>();
