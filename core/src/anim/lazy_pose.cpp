@@ -1,6 +1,7 @@
 // Lazy refit (lazy_pose.hpp).
 #include "anim/lazy_pose.hpp"
 #include "mesh/vertex_normals.hpp"
+#include "tree/spheres_below.hpp"
 #include "sampling/encoding.hpp"
 #include "spt/samples.hpp"
 #include <algorithm>
@@ -30,12 +31,9 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
     auto layout = std::make_shared<LazyLayout>();
     const size_t n = nodes.size();
     // Spheres and nodes below each node (children follow their parent in the layout).
-    std::vector<uint32_t> spheres(n), size(n);
-    for (size_t i = n; i-- > 0;) {
-        const CompactNode& c = nodes[i];
-        spheres[i] = c.is_active() ? c.count : spheres[i + 1] + spheres[c.first];
-        size[i] = c.is_active() ? 1 : 1 + size[i + 1] + size[c.first];
-    }
+    const std::vector<uint32_t> spheres = spheres_below(nodes);
+    std::vector<uint32_t> size(n);
+    for (size_t i = n; i-- > 0;) size[i] = nodes[i].is_active() ? 1 : 1 + size[i + 1] + size[nodes[i].first];
     // Frontier: the highest nodes of at most region_samples spheres (or active).
     std::vector<uint32_t> frontier, stack{0};
     while (!stack.empty()) {

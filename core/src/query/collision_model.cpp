@@ -138,18 +138,18 @@ void CollisionModel::measure(bool by_leaves) {
     // active node's spheres, which share one radius: the farthest centre's square root once a
     // node (the square root is monotone and correctly rounded, so this is the largest norm bit
     // for bit; a square root a sphere was a tenth of a deformed pose's time).
-    for (const CompactNode& n : tree_.nodes()) {
-        if (by_leaves) break;
-        if (!n.is_active()) continue;
-        double far_local = 0, far_object = 0;
-        for (uint32_t k = n.first; k < n.first + n.count; ++k) {
-            const Eigen::Vector3d c = tree_.sphere_center(n, k).cast<double>();
-            far_local = std::max(far_local, c.squaredNorm());
-            far_object = std::max(far_object, (c + o).squaredNorm());
+    if (!by_leaves)
+        for (const CompactNode& n : tree_.nodes()) {
+            if (!n.is_active()) continue;
+            double far_local = 0, far_object = 0;
+            for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+                const Eigen::Vector3d c = tree_.sphere_center(n, k).cast<double>();
+                far_local = std::max(far_local, c.squaredNorm());
+                far_object = std::max(far_object, (c + o).squaredNorm());
+            }
+            extent_ = std::max(extent_, std::sqrt(far_local) + n.ss_radius);
+            reach_ = std::max(reach_, std::sqrt(far_object) + n.ss_radius);
         }
-        extent_ = std::max(extent_, std::sqrt(far_local) + n.ss_radius);
-        reach_ = std::max(reach_, std::sqrt(far_object) + n.ss_radius);
-    }
     const auto& nodes = tree_.nodes();
     bounds_reach_.assign(nodes.size(), 0);
     for (size_t i = nodes.size(); i-- > 0;) { // children follow their parent

@@ -3,6 +3,7 @@
 #include "spt/compact_tree.hpp"
 #include "base/float_round.hpp"
 #include "base/parallel.hpp"
+#include "tree/spheres_below.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -134,11 +135,7 @@ void CompactTree::follow_samples(const std::vector<Eigen::Vector3f>& points, con
 
 void CompactTree::ensure_boxes() {
     if (boxes_.size() != 6 * nodes_.size()) boxes_.assign(6 * nodes_.size(), 0.0);
-    if (spheres_below_.size() != nodes_.size()) { // children follow their parent
-        spheres_below_.assign(nodes_.size(), 0);
-        for (size_t i = nodes_.size(); i-- > 0;)
-            spheres_below_[i] = nodes_[i].is_active() ? nodes_[i].count : spheres_below_[i + 1] + spheres_below_[nodes_[i].first];
-    }
+    if (spheres_below_.size() != nodes_.size()) spheres_below_ = detail::spheres_below(nodes_);
 }
 
 void CompactTree::refit_bounds(int threads, TaskSystem* tasks) {
