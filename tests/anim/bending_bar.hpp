@@ -25,9 +25,25 @@ inline Clip quarter_turn() {
     return c;
 }
 
-inline std::shared_ptr<AnimatedMesh> bending_bar() {
+// The bar's mesh; `open`: without its two end caps (a tube, open at x = -1 and x = 1, whose
+// samples are two-sided).
+inline meshgen::RawMesh bar_mesh(bool open) {
+    meshgen::RawMesh m = meshgen::box(2, 0.4, 0.4, 8);
+    if (open) {
+        std::vector<Triangle> kept;
+        for (const Triangle& t : m.triangles) {
+            bool cap = true;
+            for (int k = 0; k < 3; ++k) cap = cap && std::abs(std::abs(m.positions[t[k]].x()) - 1) < 1e-9;
+            if (!cap) kept.push_back(t);
+        }
+        m.triangles = kept;
+    }
+    return m;
+}
+
+inline std::shared_ptr<AnimatedMesh> bending_bar(bool open = false) {
     auto m = std::make_shared<AnimatedMesh>();
-    m->imported = meshgen::prepare(meshgen::box(2, 0.4, 0.4, 8), "bar.obj");
+    m->imported = meshgen::prepare(bar_mesh(open), open ? "tube.obj" : "bar.obj");
     Rig& rig = m->rig;
     RigNode root;
     root.name = "root";
@@ -53,12 +69,19 @@ inline std::shared_ptr<AnimatedMesh> bending_bar() {
 }
 
 struct Bar {
-    std::shared_ptr<AnimatedMesh> mesh = bending_bar();
-    SptDocument doc = make_document(mesh->imported.mesh);
+    explicit Bar(bool open = false) : mesh(bending_bar(open)), doc(make_document(mesh->imported.mesh)) {}
+    std::shared_ptr<AnimatedMesh> mesh;
+    SptDocument doc;
 };
 
 inline const Bar& bar() {
     static const Bar b;
+    return b;
+}
+
+// The bar without its end caps: an open tube, every sample two-sided (its tree has node discs).
+inline const Bar& open_bar() {
+    static const Bar b(true);
     return b;
 }
 

@@ -120,6 +120,8 @@ private:
     std::vector<uint8_t> two_sided_; // empty when no sphere is
     std::vector<float> node_disc_;   // empty when no sphere is two-sided
     void build_node_discs();
+    // Node i's disc as build_node_discs makes it (its children's first); h < 0 if it is none.
+    void fit_node_disc(uint32_t i);
     std::vector<uint32_t> sample_index_;
     size_t sphere_count_ = 0;
     std::vector<uint32_t> active_; // the active nodes, found at the first refit (a refit's jobs split them)

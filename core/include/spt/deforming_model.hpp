@@ -57,7 +57,8 @@ public:
     /// first, so answers are those of pose() (the pruning near the root is looser). Several
     /// threads may run `spheres` queries on it at once (with `solids` only on a model without
     /// triangles: containment asks the posed triangles and poses the rest); what poses the rest
-    /// must run alone. A tree of two-sided spheres is posed in full.
+    /// must run alone. Two-sided spheres (open parts): the nodes near the root are tested as balls
+    /// until a settle, those of a posed part as the discs a full pose fits.
     void pose_lazily(const Clip* clip, double time);
     /// As pose_lazily, on the mesh's welded vertices at `positions` (object frame, model units).
     void pose_lazily_on(const std::vector<Eigen::Vector3d>& positions);

@@ -1,6 +1,7 @@
 // Lazy refit (lazy_pose.hpp).
 #include "anim/lazy_pose.hpp"
 #include "mesh/vertex_normals.hpp"
+#include "query/exact_data.hpp"
 #include "tree/spheres_below.hpp"
 #include "sampling/encoding.hpp"
 #include "spt/samples.hpp"
@@ -27,7 +28,7 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
                                                    const std::vector<Eigen::Vector3d>& barycentric,
                                                    const std::vector<double>& offset, uint32_t region_samples) {
     const std::vector<CompactNode>& nodes = tree.nodes();
-    if (nodes.empty() || tree.two_sided()) return nullptr;
+    if (nodes.empty()) return nullptr;
     auto layout = std::make_shared<LazyLayout>();
     const size_t n = nodes.size();
     // Spheres and nodes below each node (children follow their parent in the layout).
@@ -193,6 +194,14 @@ void LazyPose::begin() {
         tree.set_ball(c.node, centre, r + 1e-6 * (centre.norm() + r));
     }
     for (uint32_t i : layout_->upper) tree.fit_inner_ball(i, false); // the spheres below may be unposed
+    // Two-sided spheres: a node's disc is fitted to the spheres below it, which may be unposed; the
+    // covers and the nodes above are balls until a settle (a walk tests a node without a disc by
+    // its ball), and a region fits its own nodes' discs when it is posed.
+    if (!tree.node_disc_.empty()) {
+        auto no_disc = [&](uint32_t i) { std::fill_n(tree.node_disc_.data() + 4 * size_t(i), 4, -1.0f); };
+        for (const LazyLayout::Cover& c : layout_->covers) no_disc(c.node);
+        for (uint32_t i : layout_->upper) no_disc(i);
+    }
     const CompactNode& root = tree.nodes()[0];
     const Eigen::Vector3d c(root.center[0], root.center[1], root.center[2]);
     model.extent_ = c.norm() + root.bv_radius;
@@ -200,6 +209,15 @@ void LazyPose::begin() {
     // Without the triangles a pose has no exact level and no containment, as a full pose has
     // none: nothing then needs the rest posed but an explicit settle.
     if (!owner_->triangles_) model.exact_.reset(), model.solid_.reset();
+    // Two-sided spheres answer with the faces their samples lie on (query/sample_piece.cpp): their
+    // corners are posed before any walk, whole (a region's would be shared with its neighbours'
+    // walks); the triangle tree, which only what settles reads, at the settle.
+    if (tree.two_sided() && model.exact_) {
+        auto e = model.exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(model.exact_)
+                                               : std::make_shared<ExactData>(*model.exact_);
+        for (size_t k = 0; k < e->positions.size(); ++k) e->positions[k] = v[k] - origin;
+        model.exact_ = std::move(e);
+    }
     model.pending_.pose = this;
 }
 
@@ -214,6 +232,7 @@ void LazyPose::settle() {
     for (const LazyLayout::Cover& c : layout_->covers)
         tree.nodes_[c.node].is_active() ? tree.fit_active_ball(c.node) : tree.fit_inner_ball(c.node);
     for (uint32_t i : layout_->upper) tree.fit_inner_ball(i);
+    if (!tree.node_disc_.empty()) tree.build_node_discs(); // as a full pose: every node's from the posed balls
     model.follow_triangles(owner_->vertices_, owner_->triangles_);
     owner_->vertex_normals_stale_ = true;
     model.pending_.pose = nullptr;
@@ -281,6 +300,10 @@ void LazyPose::pose_region_locked(uint32_t r) {
     for (uint32_t a : R.active) tree.place_spheres(a, d.points_.data(), d.normals_.data());
     for (uint32_t a : R.fit_active) tree.fit_active_ball(a);
     for (uint32_t i : R.fit_inner) tree.fit_inner_ball(i);
+    if (!tree.node_disc_.empty()) { // children before parents, as the balls
+        for (uint32_t a : R.fit_active) tree.fit_node_disc(a);
+        for (uint32_t i : R.fit_inner) tree.fit_node_disc(i);
+    }
     posed_flags_[r].store(1, std::memory_order_release);
 }
 

@@ -44,8 +44,7 @@ struct LazyLayout {
 
 /// The layout for `model`'s tree (bound to `mesh` with the per-sample `source`, `barycentric`
 /// and `offset` (the stored point's distance from its surface point at bind)), in regions of at
-/// most `region_samples` samples; null when the tree cannot be posed lazily (two-sided spheres,
-/// whose discs are refit whole).
+/// most `region_samples` samples; null for an empty tree.
 std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, const TriangleMesh& mesh,
                                                    const std::vector<uint32_t>& source,
                                                    const std::vector<Eigen::Vector3d>& barycentric,

@@ -98,54 +98,67 @@ CompactTree::CompactTree(const SamplingTree& tree, const SampleSet& samples) : o
     if (!two_sided_.empty()) build_node_discs();
 }
 
-// Bottom up (children follow their parent): a leaf from its spheres' discs, an inner node from
-// its children's. A node thicker than half its radius is left a ball: its disc would prune
-// little, and the walk would pay the test on every pair.
+// Bottom up (children follow their parent).
 void CompactTree::build_node_discs() {
     node_disc_.assign(4 * nodes_.size(), -1.0f);
+    for (size_t i = nodes_.size(); i-- > 0;) fit_node_disc(uint32_t(i));
+}
+
+// A leaf's disc from its spheres' discs, an inner node's from its children's. A node thicker
+// than half its radius is left a ball: its disc would prune little, and the walk would pay the
+// test on every pair.
+void CompactTree::fit_node_disc(uint32_t i) {
+    float* disc = node_disc_.data() + 4 * size_t(i);
+    disc[0] = disc[1] = disc[2] = disc[3] = -1.0f;
     auto centre = [&](const CompactNode& n) { return Eigen::Vector3f(n.center[0], n.center[1], n.center[2]); };
-    // A part of a node: centre, normal, radius and half-thickness of a disc.
+    // A part of a node: centre, normal, radius and half-thickness of a disc; read twice (for
+    // the axis, then the thickness) rather than gathered, so that a pose allocates nothing.
     struct Part {
         Eigen::Vector3f c, n;
         float r, t;
     };
-    std::vector<Part> parts;
-    // The parts of node i, or false if one is a ball.
-    auto parts_of = [&](size_t i) {
-        parts.clear();
-        const CompactNode& node = nodes_[i];
+    const CompactNode& node = nodes_[i];
+    const uint32_t count = node.is_active() ? node.count : 2;
+    auto part = [&](uint32_t p) -> Part {
         if (node.is_active()) {
-            for (uint32_t k = node.first; k < node.first + node.count; ++k) {
-                const Eigen::Vector3f n(nx_[k], ny_[k], nz_[k]);
-                if (!two_sided_[k] || !(n.squaredNorm() > 0)) return false; // a ball (QueryRun::shapes_touch)
-                parts.push_back({sphere_center(node, k), n.normalized(), node.ss_radius,
-                                 detail::kDiscHalfThickness * node.ss_radius});
-            }
-            return true;
+            const uint32_t k = node.first + p;
+            return {sphere_center(node, k), Eigen::Vector3f(nx_[k], ny_[k], nz_[k]).normalized(), node.ss_radius,
+                    detail::kDiscHalfThickness * node.ss_radius};
         }
-        for (uint32_t child : {uint32_t(i + 1), node.first}) {
-            const float* d = node_disc_.data() + 4 * size_t(child);
-            if (!(d[3] >= 0)) return false;
-            parts.push_back({centre(nodes_[child]), Eigen::Vector3f(d[0], d[1], d[2]), nodes_[child].bv_radius, d[3]});
-        }
-        return true;
+        const uint32_t child = p == 0 ? i + 1 : node.first;
+        const float* d = node_disc_.data() + 4 * size_t(child);
+        return {centre(nodes_[child]), Eigen::Vector3f(d[0], d[1], d[2]), nodes_[child].bv_radius, d[3]};
     };
-    for (size_t i = nodes_.size(); i-- > 0;) {
-        if (!parts_of(i)) continue;
-        // Normals as axes: each turned to agree with the first, weighted by its radius.
-        Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-        for (const Part& p : parts) sum += (p.n.dot(parts[0].n) >= 0 ? p.r : -p.r) * p.n;
-        if (!(sum.norm() > 0)) continue;
-        const Eigen::Vector3f n = sum.normalized(), c = centre(nodes_[i]);
-        // A part reaches off the plane by its centre's offset, its radius times the sine of its
-        // tilt, and its thickness; plus a relative margin for the rounding of these sums.
-        float h = 0;
-        for (const Part& p : parts) h = std::max(h, std::abs(n.dot(p.c - c)) + p.r * n.cross(p.n).norm() + p.t);
-        h = h * (1 + 1e-5f) + 1e-6f * nodes_[i].bv_radius;
-        if (!(h <= 0.5f * nodes_[i].bv_radius)) continue;
-        for (int k = 0; k < 3; ++k) node_disc_[4 * i + k] = n[k];
-        node_disc_[4 * i + 3] = h;
+    if (count == 0) return;
+    for (uint32_t p = 0; p < count; ++p) {
+        if (node.is_active()) {
+            const uint32_t k = node.first + p;
+            if (!two_sided_[k] || !(Eigen::Vector3f(nx_[k], ny_[k], nz_[k]).squaredNorm() > 0))
+                return; // a ball (QueryRun::shapes_touch)
+        } else if (!(node_disc_[4 * size_t(p == 0 ? i + 1 : node.first) + 3] >= 0)) {
+            return;
+        }
     }
+    // Normals as axes: each turned to agree with the first, weighted by its radius.
+    const Part first = part(0);
+    Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+    for (uint32_t p = 0; p < count; ++p) {
+        const Part q = part(p);
+        sum += (q.n.dot(first.n) >= 0 ? q.r : -q.r) * q.n;
+    }
+    if (!(sum.norm() > 0)) return;
+    const Eigen::Vector3f n = sum.normalized(), c = centre(node);
+    // A part reaches off the plane by its centre's offset, its radius times the sine of its
+    // tilt, and its thickness; plus a relative margin for the rounding of these sums.
+    float h = 0;
+    for (uint32_t p = 0; p < count; ++p) {
+        const Part q = part(p);
+        h = std::max(h, std::abs(n.dot(q.c - c)) + q.r * n.cross(q.n).norm() + q.t);
+    }
+    h = h * (1 + 1e-5f) + 1e-6f * node.bv_radius;
+    if (!(h <= 0.5f * node.bv_radius)) return;
+    for (int k = 0; k < 3; ++k) disc[k] = n[k];
+    disc[3] = h;
 }
 
 size_t CompactTree::memory_bytes() const {
