@@ -111,24 +111,13 @@ void CompactTree::fit_node_disc(uint32_t i) {
     float* disc = node_disc_.data() + 4 * size_t(i);
     disc[0] = disc[1] = disc[2] = disc[3] = -1.0f;
     auto centre = [&](const CompactNode& n) { return Eigen::Vector3f(n.center[0], n.center[1], n.center[2]); };
-    // A part of a node: centre, normal, radius and half-thickness of a disc; read twice (for
-    // the axis, then the thickness) rather than gathered, so that a pose allocates nothing.
+    // A part of a node: centre, normal, radius and half-thickness of a disc.
     struct Part {
         Eigen::Vector3f c, n;
         float r, t;
     };
     const CompactNode& node = nodes_[i];
     const uint32_t count = node.is_active() ? node.count : 2;
-    auto part = [&](uint32_t p) -> Part {
-        if (node.is_active()) {
-            const uint32_t k = node.first + p;
-            return {sphere_center(node, k), Eigen::Vector3f(nx_[k], ny_[k], nz_[k]).normalized(), node.ss_radius,
-                    detail::kDiscHalfThickness * node.ss_radius};
-        }
-        const uint32_t child = p == 0 ? i + 1 : node.first;
-        const float* d = node_disc_.data() + 4 * size_t(child);
-        return {centre(nodes_[child]), Eigen::Vector3f(d[0], d[1], d[2]), nodes_[child].bv_radius, d[3]};
-    };
     if (count == 0) return;
     for (uint32_t p = 0; p < count; ++p) {
         if (node.is_active()) {
@@ -139,11 +128,29 @@ void CompactTree::fit_node_disc(uint32_t i) {
             return;
         }
     }
+    auto part = [&](uint32_t p) -> Part {
+        if (node.is_active()) {
+            const uint32_t k = node.first + p;
+            return {sphere_center(node, k), Eigen::Vector3f(nx_[k], ny_[k], nz_[k]).normalized(), node.ss_radius,
+                    detail::kDiscHalfThickness * node.ss_radius};
+        }
+        const uint32_t child = p == 0 ? i + 1 : node.first;
+        const float* d = node_disc_.data() + 4 * size_t(child);
+        return {centre(nodes_[child]), Eigen::Vector3f(d[0], d[1], d[2]), nodes_[child].bv_radius, d[3]};
+    };
+    // Gathered on the stack (a pose allocates nothing); a larger active node's parts are made
+    // again for the second pass.
+    constexpr uint32_t kGathered = 32;
+    Part gathered[kGathered];
+    const bool kept = count <= kGathered;
+    if (kept)
+        for (uint32_t p = 0; p < count; ++p) gathered[p] = part(p);
+    auto part_at = [&](uint32_t p) { return kept ? gathered[p] : part(p); };
     // Normals as axes: each turned to agree with the first, weighted by its radius.
-    const Part first = part(0);
+    const Part first = part_at(0);
     Eigen::Vector3f sum = Eigen::Vector3f::Zero();
     for (uint32_t p = 0; p < count; ++p) {
-        const Part q = part(p);
+        const Part q = part_at(p);
         sum += (q.n.dot(first.n) >= 0 ? q.r : -q.r) * q.n;
     }
     if (!(sum.norm() > 0)) return;
@@ -152,7 +159,7 @@ void CompactTree::fit_node_disc(uint32_t i) {
     // tilt, and its thickness; plus a relative margin for the rounding of these sums.
     float h = 0;
     for (uint32_t p = 0; p < count; ++p) {
-        const Part q = part(p);
+        const Part q = part_at(p);
         h = std::max(h, std::abs(n.dot(q.c - c)) + q.r * n.cross(q.n).norm() + q.t);
     }
     h = h * (1 + 1e-5f) + 1e-6f * node.bv_radius;
