@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -587,6 +588,7 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
     };
     add("spt spheres", std::make_unique<SptRunner>(c, QueryLevel::Spheres), true, true);
     add("spt exact", std::make_unique<SptRunner>(c, QueryLevel::Exact), true, true);
+    add("spt exact, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Exact, 1, true), true, true);
     add("spt spheres, 2 threads", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 2), true, true);
     add("spt spheres, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true), true, true);
     add("spt spheres, tight refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, false, true), true, true);
@@ -867,7 +869,9 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
 int usage() {
     std::fprintf(stderr,
                  "usage: deforming_bench [--frames N] [--rounds R] [--figure GLTF] [--fbx FBX] [--out-dir DIR] [--stem NAME]\n"
-                 "                       [--lazy-region SAMPLES]\n"
+                 "                       [--lazy-region SAMPLES] [--open MODEL]\n"
+                 "       (--open: a case more, MODEL's first clip against a box, as the FBX model's; for an open\n"
+                 "       mesh, whose spheres are two-sided, e.g. /usr/share/assimp/models/X/BCN_Epileptic.X)\n"
                  "       deforming_bench --profile-update ITERATIONS [--profile-fbx] [--profile-spheres] [--profile-tight]\n"
                  "                       (spt's update alone, for perf; --profile-spheres: without the triangles;\n"
                  "                       --profile-tight: set_tight_refit)\n");
@@ -885,6 +889,7 @@ int main(int argc, char** argv) {
     bool profile_tight = false;   // DeformingModel::set_tight_refit
     std::string figure = SPT_SOURCE_DIR "/resources/models/walking_figure.gltf";
     std::string fbx = "/usr/share/assimp/models/FBX/animation_with_skeleton.fbx";
+    std::string open_model; // --open: a case more
     std::string out_dir, stem = "deforming-bench";
     std::string command = argv[0];
     for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
@@ -905,6 +910,7 @@ int main(int argc, char** argv) {
         else if (a == "--rounds") rounds = int(number(1, 1000));
         else if (a == "--figure") figure = value();
         else if (a == "--fbx") fbx = value();
+        else if (a == "--open") open_model = value();
         else if (a == "--out-dir") out_dir = value();
         else if (a == "--stem") stem = value();
         else if (a == "--profile-update") profile = number(1, 100000000);
@@ -974,22 +980,20 @@ int main(int argc, char** argv) {
             c.placement = "The tile's top at y = " + fixed(-c.s, 4) + " (0.5% of the diagonal above the soles' floor).";
             cases.push_back(std::move(c));
         }
-        auto fbx_mesh = load_mesh(fbx);
-        auto fbx_doc = std::make_shared<const SptDocument>(make_document(fbx_mesh->imported.mesh));
-        const Animated fbx_anim = animate(fbx_mesh, fbx_doc, "0", frames, 0);
-        {   // The FBX model and a box on the side its clip swings furthest to.
+        // A model and a box on the side its clip swings furthest to.
+        auto box_case = [&](const std::string& name, const std::string& title, const Animated& anim) {
             Case c;
-            c.name = "fbx-box";
-            c.title = "animation_with_skeleton.fbx and a box";
-            c.a.anim = &fbx_anim;
-            const double diag = fbx_mesh->imported.mesh.diagonal();
+            c.name = name;
+            c.title = title;
+            c.a.anim = &anim;
+            const double diag = anim.mesh->imported.mesh.diagonal();
             // The axis direction along which the clip's extreme point moves most over the frames.
             double best = -1;
             for (int axis = 0; axis < 3; ++axis)
                 for (double sign : {-1.0, 1.0}) {
                     const Eigen::Vector3d u = sign * Eigen::Vector3d::Unit(axis);
                     double lo = INFINITY, hi = -INFINITY;
-                    for (const Verts& v : fbx_anim.frames) {
+                    for (const Verts& v : anim.frames) {
                         const double e = along(v, u, true);
                         lo = std::min(lo, e), hi = std::max(hi, e);
                     }
@@ -1000,13 +1004,13 @@ int main(int argc, char** argv) {
             int axis = 0;
             while (c.u[axis] == 0) ++axis;
             Eigen::Vector3d across = Eigen::Vector3d::Zero();
-            for (const Verts& v : fbx_anim.frames) {
+            for (const Verts& v : anim.frames) {
                 size_t k = 0;
                 for (size_t i = 1; i < v.size(); ++i)
                     if (c.u.dot(v[i]) > c.u.dot(v[k])) k = i;
                 across += v[k] - c.u.dot(v[k]) * c.u;
             }
-            across /= double(fbx_anim.frames.size());
+            across /= double(anim.frames.size());
             const double side = diag / 3;
             Eigen::Vector3d blo = across - Eigen::Vector3d::Constant(side / 2), bhi = across + Eigen::Vector3d::Constant(side / 2);
             blo[axis] = c.u[axis] > 0 ? 0 : -side, bhi[axis] = c.u[axis] > 0 ? side : 0;
@@ -1016,6 +1020,17 @@ int main(int argc, char** argv) {
             c.b.fixed_doc = std::make_shared<const SptDocument>(make_document(*c.b.fixed_mesh));
             c.diag = diag, c.frames = frames;
             cases.push_back(std::move(c));
+        };
+        auto fbx_mesh = load_mesh(fbx);
+        auto fbx_doc = std::make_shared<const SptDocument>(make_document(fbx_mesh->imported.mesh));
+        const Animated fbx_anim = animate(fbx_mesh, fbx_doc, "0", frames, 0);
+        box_case("fbx-box", "animation_with_skeleton.fbx and a box", fbx_anim);
+        std::unique_ptr<Animated> open_anim;
+        if (!open_model.empty()) {
+            auto mesh = load_mesh(open_model);
+            auto doc = std::make_shared<const SptDocument>(make_document(mesh->imported.mesh));
+            open_anim = std::make_unique<Animated>(animate(mesh, doc, "0", frames, 0));
+            box_case("open-box", std::filesystem::path(open_model).filename().string() + " and a box", *open_anim);
         }
         // A second walker, half a cycle on, facing the first.
         const Animated walker2 = animate(fig_mesh, fig_doc, "walk", frames, 0.5 * walker.clip->duration);

@@ -50,10 +50,20 @@ DeformingModel small_regions(bool triangles = true, const bending::Bar& b = bar(
     return dm;
 }
 
-// A box of half-size 0.15 the queries move around the bar.
+// A box of half-size 0.15 the queries move around the bar (with its triangles, for the exact level).
 const CollisionModel& probe() {
-    static const SptDocument doc = make_document(meshgen::prepare(meshgen::box(0.3, 0.3, 0.3, 2), "probe.obj").mesh);
-    static const CollisionModel m(doc);
+    static const ImportedMesh mesh = meshgen::prepare(meshgen::box(0.3, 0.3, 0.3, 2), "probe.obj");
+    static const SptDocument doc = make_document(mesh.mesh);
+    static const CollisionModel m(doc, mesh.mesh);
+    return m;
+}
+
+// A box of half-size 0.05, for poses wholly inside the bar (0.15 from its walls, so that the walk
+// ends near the roots and containment answers).
+const CollisionModel& small_probe() {
+    static const ImportedMesh mesh = meshgen::prepare(meshgen::box(0.1, 0.1, 0.1, 1), "small.obj");
+    static const SptDocument doc = make_document(mesh.mesh);
+    static const CollisionModel m(doc, mesh.mesh);
     return m;
 }
 
@@ -254,16 +264,24 @@ TEST(LazyPose, SeveralThreadsMayWalkOneLazilyPosedModel) {
             full.pose(&m->mesh->clips[0], t);
             lazy.pose_lazily(&m->mesh->clips[0], t);
             std::vector<int> answer(poses.size(), -1);
-            auto walk = [&](size_t first) { // each thread its own half, the other half's regions meanwhile
+            // Each thread its own half, the other half's regions meanwhile; every third query at
+            // the exact level (the first of those on either thread refits the triangles), in mode
+            // deepest (whose contact walks the spheres).
+            auto options = [&](size_t k) {
+                QueryOptions q = o;
+                if (k % 3 == 2) q.level = QueryLevel::Exact, q.mode = QueryMode::Deepest, q.solids = true;
+                return q;
+            };
+            auto walk = [&](size_t first) {
                 QueryScratch scratch;
                 for (size_t k = first; k < poses.size(); k += 2)
-                    answer[k] = collide_relative(lazy.model(), probe(), poses[k], o, scratch).collide;
+                    answer[k] = collide_relative(lazy.model(), probe(), poses[k], options(k), scratch).collide;
             };
             std::thread a(walk, 0), b(walk, 1);
             a.join(), b.join();
             QueryScratch scratch;
             for (size_t k = 0; k < poses.size(); ++k)
-                ASSERT_EQ(answer[k], int(collide_relative(full.model(), probe(), poses[k], o, scratch).collide)) << k;
+                ASSERT_EQ(answer[k], int(collide_relative(full.model(), probe(), poses[k], options(k), scratch).collide)) << k;
             lazy.settle();
             expect_same_layout(lazy.model().tree(), full.model().tree());
         }
@@ -313,6 +331,67 @@ TEST(LazyPose, AnOpenTubesFacesArePosedBeforeAnyWalkSoItsSpheresAnswerAsOnTheFul
         expect_same_layout(lazy.model().tree(), full.model().tree());
     }
     EXPECT_GT(collisions, 6);
+}
+
+TEST(LazyPose, ExactQueriesAndContainmentRefitTheTrianglesAloneAndAnswerAsOnTheFullPose) {
+    for (const bending::Bar* m : bars()) {
+        DeformingModel lazy = small_regions(true, *m), full(m->doc, m->mesh);
+        QueryScratch ls, fs;
+        int collisions = 0, contained = 0;
+        for (double t : {0.2, 0.9}) {
+            full.pose(&m->mesh->clips[0], t);
+            // Random poses of the probe, and two of the small probe wholly inside the bar's fixed
+            // half (contained in the closed bar; inside the open tube, which holds nothing, apart).
+            std::vector<std::pair<const CollisionModel*, Pose>> poses;
+            for (const Pose& p : probe_poses(10, unsigned(t * 10))) poses.push_back({&probe(), p});
+            for (double x : {-0.6, -0.45})
+                poses.push_back({&small_probe(), Pose::from(Eigen::Vector3d(x, 0, 0), Eigen::Quaterniond::Identity())});
+            for (QueryLevel level : {QueryLevel::Spheres, QueryLevel::Exact})
+            for (QueryMode mode : {QueryMode::Any, QueryMode::All, QueryMode::Deepest})
+                for (bool solids : {false, true}) {
+                    // (Spheres without solids, and in the other modes: QueriesAnswerAsOnTheFullPoseInEveryMode.)
+                    if (level == QueryLevel::Spheres && (!solids || mode != QueryMode::Any)) continue;
+                    lazy.pose_lazily(&m->mesh->clips[0], t);
+                    for (const auto& [other, p] : poses) {
+                        QueryOptions o;
+                        o.level = level, o.solids = solids, o.mode = mode;
+                        const QueryResult a = collide_relative(lazy.model(), *other, p, o, ls);
+                        const QueryResult b = collide_relative(full.model(), *other, p, o, fs);
+                        ASSERT_EQ(a.collide, b.collide) << "t " << t << " level " << int(level) << " mode " << int(mode) << " solids " << solids;
+                        if (mode == QueryMode::All) ASSERT_EQ(ls.pairs().size(), fs.pairs().size());
+                        if (mode == QueryMode::Deepest && a.collide) ASSERT_EQ(a.deepest.depth, b.deepest.depth);
+                        collisions += a.collide;
+                        contained += a.collide && other == &small_probe();
+                    }
+                }
+            lazy.settle();
+            expect_same_layout(lazy.model().tree(), full.model().tree());
+        }
+        EXPECT_GT(collisions, 20);
+        if (m == &bar()) EXPECT_GT(contained, 0); // containment was asked and answered
+        else EXPECT_EQ(contained, 0);             // an open tube holds nothing
+        // Exact any and all leave every sampling sphere where the pose before left it (the bind
+        // here), containment among them; deepest poses the parts its contact's walk reads.
+        DeformingModel fresh = small_regions(true, *m);
+        const DeformingModel bind(m->doc, m->mesh);
+        fresh.pose_lazily(&m->mesh->clips[0], 0.6);
+        std::vector<std::pair<const CollisionModel*, Pose>> poses;
+        for (const Pose& p : probe_poses(10, 3)) poses.push_back({&probe(), p});
+        poses.push_back({&small_probe(), Pose::from(Eigen::Vector3d(-0.6, 0, 0), Eigen::Quaterniond::Identity())});
+        for (QueryMode mode : {QueryMode::Any, QueryMode::All})
+            for (bool solids : {false, true})
+                for (const auto& [other, p] : poses) {
+                    QueryOptions o;
+                    o.level = QueryLevel::Exact, o.solids = solids, o.mode = mode;
+                    collide_relative(fresh.model(), *other, p, o, ls);
+                }
+        const CompactTree &l = fresh.model().tree(), &b = bind.model().tree();
+        for (const CompactNode& n : l.nodes()) {
+            if (!n.is_active()) continue;
+            const CompactNode& q = b.nodes()[&n - l.nodes().data()];
+            for (uint32_t k = n.first; k < n.first + n.count; ++k) ASSERT_EQ(l.sphere_center(n, k), b.sphere_center(q, k));
+        }
+    }
 }
 
 } // namespace

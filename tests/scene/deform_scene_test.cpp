@@ -72,25 +72,38 @@ TEST(DeformScene, ResultsAreTheSameOnAnyNumberOfThreads) {
     }
 }
 
-TEST(DeformScene, ContactsAlonePoseLazilyWithTheSameAnswersOnAnyNumberOfThreads) {
-    // contacts alone: the walks pose what they read, on whichever thread meets it first; depth
-    // makes the scene pose whole objects, and finds the same colliding pairs.
+// A scene of the bar with `effects` (which pose it lazily), stepped on one thread and on two, and
+// with `whole` (which pose it whole): the same colliding pairs at every step.
+void expect_lazy_steps_as_whole(const char* effects, const char* whole) {
     const test::SceneDir dir;
-    const Scene s = load_scene(dir.write("s.json", bar_scene(R"({"clip": "step"})", R"("contacts", "deform")")));
+    const Scene s = load_scene(dir.write("s.json", bar_scene(R"({"clip": "step"})", effects)));
     Simulation one(s, s.effects, 1), two(s, s.effects, 2);
-    Simulation whole(s, parse_effect_list("contacts,depth,deform", "t"), 1);
+    Simulation posed_whole(s, parse_effect_list(whole, "t"), 1);
     uint64_t colliding = 0;
     for (int i = 0; i < 8; ++i) {
         const StepResult a = one.step();
         const StepResult b = two.step();
-        const StepResult& c = whole.step();
+        const StepResult& c = posed_whole.step();
         ASSERT_EQ(a.counters.node_pairs, b.counters.node_pairs) << i;
+        ASSERT_EQ(a.counters.triangle_tests, b.counters.triangle_tests) << i;
         ASSERT_EQ(a.counters.colliding_pairs, b.counters.colliding_pairs) << i;
         ASSERT_EQ(a.counters.colliding_pairs, c.counters.colliding_pairs) << i;
         ASSERT_EQ(a.state_hash, b.state_hash);
         colliding += a.counters.colliding_pairs;
     }
     EXPECT_GT(colliding, 0u);
+}
+
+TEST(DeformScene, ContactsAlonePoseLazilyWithTheSameAnswersOnAnyNumberOfThreads) {
+    // contacts alone: the walks pose what they read, on whichever thread meets it first; depth
+    // makes the scene pose whole objects, and finds the same colliding pairs.
+    expect_lazy_steps_as_whole(R"("contacts", "deform")", "contacts,depth,deform");
+}
+
+TEST(DeformScene, ContactsConfirmedByTheTrianglesPoseLazilyWithTheSameAnswers) {
+    // contacts with the exact effect: the triangles confirm each sphere contact, refit once a pose
+    // for the first walk that asks them.
+    expect_lazy_steps_as_whole(R"("contacts", "exact", "deform")", "contacts,exact,depth,deform");
 }
 
 TEST(DeformScene, AClipTheModelLacksIsRefusedNamingTheClipsItHas) {

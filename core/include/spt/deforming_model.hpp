@@ -53,12 +53,12 @@ public:
     /// Poses the model lazily at `time` seconds of `clip` (the paper's update of only what a test
     /// visits; docs/deforming.md, "Lazy refit"): the bounding spheres near the root are fitted
     /// now from the posed vertices, and each part of the tree below is posed when a `spheres`
-    /// query first descends into it. Every other query, and a copy of the model, poses the rest
-    /// first, so answers are those of pose() (the pruning near the root is looser). Several
-    /// threads may run `spheres` queries on it at once (with `solids` only on a model without
-    /// triangles: containment asks the posed triangles and poses the rest); what poses the rest
-    /// must run alone. Two-sided spheres (open parts): the nodes near the root are tested as balls
-    /// until a settle, those of a posed part as the discs a full pose fits.
+    /// query first descends into it; an `exact` query, and containment, refit the triangles alone.
+    /// Every other query, and a copy of the model, poses the rest first, so answers are those of
+    /// pose() (the pruning near the root is looser). Several threads may run `spheres` and `exact`
+    /// queries on it at once; what poses the rest must run alone. Two-sided spheres (open parts):
+    /// the nodes near the root are tested as balls until a settle, those of a posed part as the
+    /// discs a full pose fits.
     void pose_lazily(const Clip* clip, double time);
     /// As pose_lazily, on the mesh's welded vertices at `positions` (object frame, model units).
     void pose_lazily_on(const std::vector<Eigen::Vector3d>& positions);

@@ -1,7 +1,6 @@
 // Lazy refit (lazy_pose.hpp).
 #include "anim/lazy_pose.hpp"
 #include "mesh/vertex_normals.hpp"
-#include "query/exact_data.hpp"
 #include "tree/spheres_below.hpp"
 #include "sampling/encoding.hpp"
 #include "spt/samples.hpp"
@@ -209,15 +208,12 @@ void LazyPose::begin() {
     // Without the triangles a pose has no exact level and no containment, as a full pose has
     // none: nothing then needs the rest posed but an explicit settle.
     if (!owner_->triangles_) model.exact_.reset(), model.solid_.reset();
-    // Two-sided spheres answer with the faces their samples lie on (query/sample_piece.cpp): their
-    // corners are posed before any walk, whole (a region's would be shared with its neighbours'
-    // walks); the triangle tree, which only what settles reads, at the settle.
-    if (tree.two_sided() && model.exact_) {
-        auto e = model.exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(model.exact_)
-                                               : std::make_shared<ExactData>(*model.exact_);
-        for (size_t k = 0; k < e->positions.size(); ++k) e->positions[k] = v[k] - origin;
-        model.exact_ = std::move(e);
-    }
+    // The triangles' corners before any walk, whole (a region's would be shared with its
+    // neighbours' walks): two-sided spheres answer with the faces their samples lie on
+    // (query/sample_piece.cpp), and the exact level reads them. The triangles' balls and tree wait
+    // for the first exact walk (ensure_triangles) or the settle.
+    model.place_triangle_corners(v);
+    triangles_posed_.store(0, std::memory_order_relaxed);
     model.pending_.pose = this;
 }
 
@@ -236,6 +232,13 @@ void LazyPose::settle() {
     model.follow_triangles(owner_->vertices_, owner_->triangles_);
     owner_->vertex_normals_stale_ = true;
     model.pending_.pose = nullptr;
+}
+
+void LazyPose::pose_triangles() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (triangles_posed_.load(std::memory_order_relaxed)) return; // another walk did
+    owner_->model_.fit_triangle_tree();
+    triangles_posed_.store(1, std::memory_order_release);
 }
 
 void LazyPose::pose_region(uint32_t r) {

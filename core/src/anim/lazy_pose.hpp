@@ -64,6 +64,7 @@ public:
 
 protected:
     void pose_region(uint32_t r) override;
+    void pose_triangles() override;
 
 private:
     DeformingModel* owner_;

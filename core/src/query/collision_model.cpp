@@ -199,6 +199,28 @@ void CollisionModel::follow_triangles(const std::vector<Eigen::Vector3d>& positi
     measure(true);
 }
 
+void CollisionModel::place_triangle_corners(const std::vector<Eigen::Vector3d>& positions) {
+    if (!has_mesh()) return;
+    auto e = exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(exact_) : std::make_shared<ExactData>(*exact_);
+    for (size_t v = 0; v < e->positions.size(); ++v) e->positions[v] = positions[v] - origin();
+    exact_ = std::move(e);
+    if (solid_) { // as follow_triangles: the posed anchors, asked of the triangles
+        auto posed = std::make_shared<SolidData>();
+        posed->posed = true;
+        posed->anchor_vertex = solid_->anchor_vertex;
+        for (uint32_t v : posed->anchor_vertex) posed->anchors.push_back((positions[v] - origin()).cast<float>());
+        solid_ = std::move(posed);
+    }
+    measure_triangles(*exact_, origin(), extent_, reach_);
+}
+
+void CollisionModel::fit_triangle_tree() {
+    if (!has_mesh()) return;
+    ExactData& e = *std::const_pointer_cast<ExactData>(exact_);
+    fit_triangle_spheres(e);
+    detail::refit_triangle_tree(e);
+}
+
 namespace detail {
 
 PendingHandle::PendingHandle(const PendingHandle& other) {

@@ -22,11 +22,18 @@ public:
     }
     /// Poses the rest: the model becomes what a full pose makes, and is no longer pending.
     virtual void settle() = 0;
+    /// Readies the exact level: the triangles' balls and tree refit around the posed corners (at
+    /// most once a pose, under the pose's lock), the sampling spheres left as they are.
+    void ensure_triangles() {
+        if (!triangles_posed_.load(std::memory_order_acquire)) pose_triangles();
+    }
 
 protected:
     const uint32_t* need_ = nullptr; // per compact node: the region to pose before reading below it
     std::atomic<uint8_t>* posed_ = nullptr; // per region: posed at the current pose
     virtual void pose_region(uint32_t r) = 0;
+    virtual void pose_triangles() = 0;
+    std::atomic<uint8_t> triangles_posed_{0}; // the triangle tree refit at the current pose
 };
 
 /// The model's pending pose, or null when the model is posed throughout.

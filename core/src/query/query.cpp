@@ -319,9 +319,14 @@ namespace {
 // holding a deep pair and says so there.
 QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, const Pose& b_in_a,
                            const QueryOptions& options, QueryScratch& scratch, bool* deep, float slack = 0) {
-    // A lazy pose is posed where this walk descends at level spheres; elsewhere in full first.
+    // A lazy pose is posed where this walk descends at level spheres; at level exact its triangles
+    // are refit (and at mode deepest, the spheres where the walk for the contact descends);
+    // elsewhere in full first.
     const bool lazy = detail::pending_of(a) || detail::pending_of(b);
-    if (lazy && options.level != QueryLevel::Spheres) detail::settle(a), detail::settle(b);
+    if (lazy && options.level == QueryLevel::Bounds) detail::settle(a), detail::settle(b);
+    if (lazy && options.level == QueryLevel::Exact)
+        for (const CollisionModel* m : {&a, &b})
+            if (detail::PendingPose* p = detail::pending_of(*m)) p->ensure_triangles();
     QueryRun run(a, b, b_in_a, options, scratch);
     run.stop_when_deep = deep != nullptr;
     run.deepest_slack = slack;
@@ -337,14 +342,12 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
         }
         run.run();
         if (deep) *deep = run.stopped_deep;
-        // (A lazily posed model without triangles has no containment, as a full pose has none.)
-        auto posed_triangles_needed = [](const CollisionModel& m) { return detail::pending_of(m) && m.has_mesh(); };
-        if (lazy && options.solids && !run.stopped_deep && !run.res.collide && run.roots_overlap &&
-            (posed_triangles_needed(a) || posed_triangles_needed(b))) {
-            // Containment asks the posed triangles: pose the rest and ask again.
-            detail::settle(a), detail::settle(b);
-            return relative_query(a, b, b_in_a, options, scratch, deep, slack);
-        }
+        // Containment asks a posed model's triangles (its anchors were placed with the lazy
+        // pose): refit them where it will ask. (A lazily posed model without triangles has no
+        // containment, as a full pose has none.)
+        if (lazy && options.solids && !run.stopped_deep && !run.res.collide && run.roots_overlap)
+            for (const CollisionModel* m : {&a, &b})
+                if (detail::PendingPose* p = detail::pending_of(*m); p && m->has_mesh()) p->ensure_triangles();
         if (!run.stopped_deep) run.check_containment();
     } else {
         // Triangles decide; at deepest the contact then comes from the sampling spheres.

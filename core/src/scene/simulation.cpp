@@ -74,13 +74,13 @@ Simulation::Simulation(Scene scene, EffectSet effects, int threads, TaskSystem* 
             // Queries read the object's model: from now on, the deforming one's current pose.
             o.model = std::shared_ptr<const CollisionModel>(deforming_[i], &deforming_[i]->model());
         }
-        // Posed lazily when the step's only queries are `spheres` walks (no depth, pairs, response,
-        // continuous detection or exact level): those pose what they read, on any thread. Depth
-        // and the rest read the whole of a colliding object, and posing it part by part, then the
-        // rest, costs more than posing it at once (docs/deforming.md, "Scenes").
-        lazy_pose_ = scene_.level == QueryLevel::Spheres && !effects_.has(Effect::Depth) && !effects_.has(Effect::Dynamics) &&
-                     !effects_.has(Effect::Pairs) && !effects_.has(Effect::Response) && !effects_.has(Effect::Ccd) &&
-                     !effects_.has(Effect::Exact);
+        // Posed lazily when the step's only queries are contact walks (no depth, pairs, response or
+        // continuous detection): at `spheres` they pose what they read, at `exact` (the level, or
+        // the effect's confirmation) the triangles alone, on any thread. Depth and the rest read
+        // the whole of a colliding object, and posing it part by part, then the rest, costs more
+        // than posing it at once (docs/deforming.md, "Scenes").
+        lazy_pose_ = scene_.level != QueryLevel::Bounds && !effects_.has(Effect::Depth) && !effects_.has(Effect::Dynamics) &&
+                     !effects_.has(Effect::Pairs) && !effects_.has(Effect::Response) && !effects_.has(Effect::Ccd);
         deform(0); // the broad-phase spheres before the first step: the clips at time 0
     }
     if (effects_.has(Effect::Dynamics)) {
