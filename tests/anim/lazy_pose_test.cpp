@@ -77,26 +77,25 @@ std::vector<Pose> probe_poses(int count, unsigned seed) {
 }
 
 TEST(LazyPose, ASettledLazyPoseIsTheFullPoseBitForBit) {
-    for (const bending::Bar* m : bars()) {
+    for (const bending::Bar* m : bars())
         for (bool tight : {false, true}) {
-        DeformingModel lazy = small_regions(true, *m), full(m->doc, m->mesh);
-        lazy.set_tight_refit(tight), full.set_tight_refit(tight);
-        QueryScratch scratch;
-        QueryOptions o;
-        o.solids = false;
-        for (double t : {0.35, 0.8, 0.1}) {
-            lazy.pose_lazily(&m->mesh->clips[0], t);
-            // Some parts posed by queries first, the rest by settle.
-            for (const Pose& p : probe_poses(5, unsigned(t * 100))) collide_relative(lazy.model(), probe(), p, o, scratch);
-            lazy.settle();
-            full.pose(&m->mesh->clips[0], t);
-            expect_same_layout(lazy.model().tree(), full.model().tree());
-            EXPECT_EQ(lazy.model().extent(), full.model().extent());
-            EXPECT_EQ(lazy.sample_points(), full.sample_points());
-            EXPECT_EQ(lazy.vertex_normals(), full.vertex_normals());
+            DeformingModel lazy = small_regions(true, *m), full(m->doc, m->mesh);
+            lazy.set_tight_refit(tight), full.set_tight_refit(tight);
+            QueryScratch scratch;
+            QueryOptions o;
+            o.solids = false;
+            for (double t : {0.35, 0.8, 0.1}) {
+                lazy.pose_lazily(&m->mesh->clips[0], t);
+                // Some parts posed by queries first, the rest by settle.
+                for (const Pose& p : probe_poses(5, unsigned(t * 100))) collide_relative(lazy.model(), probe(), p, o, scratch);
+                lazy.settle();
+                full.pose(&m->mesh->clips[0], t);
+                expect_same_layout(lazy.model().tree(), full.model().tree());
+                EXPECT_EQ(lazy.model().extent(), full.model().extent());
+                EXPECT_EQ(lazy.sample_points(), full.sample_points());
+                EXPECT_EQ(lazy.vertex_normals(), full.vertex_normals());
+            }
         }
-        }
-    }
 }
 
 TEST(LazyPose, TheBallsNearTheRootHoldEveryPosedSphereBelowThem) {
@@ -116,28 +115,29 @@ TEST(LazyPose, TheBallsNearTheRootHoldEveryPosedSphereBelowThem) {
         o.solids = false;
         for (double t : {0.0, 0.25, 0.6, 1.0})
             for (int queries : {0, 6}) { // before any query, then after some posed parts and tightened balls
-            lazy.pose_lazily(&m->mesh->clips[0], t);
-            for (const Pose& p : probe_poses(queries, unsigned(t * 10))) collide_relative(lazy.model(), probe(), p, o, scratch);
-            full.pose(&m->mesh->clips[0], t);
-            const CompactTree &l = lazy.model().tree(), &f = full.model().tree();
-            for (uint32_t a = 0; a < l.nodes().size(); ++a) {
-                if (!near_root[a]) continue;
-                const CompactNode& n = l.nodes()[a];
-                const Eigen::Vector3f c(n.center[0], n.center[1], n.center[2]);
-                std::vector<uint32_t> stack{a};
-                while (!stack.empty()) {
-                    const uint32_t i = stack.back();
-                    stack.pop_back();
-                    const CompactNode& m = f.nodes()[i];
-                    if (!m.is_active()) {
-                        stack.push_back(i + 1), stack.push_back(m.first);
-                        continue;
+                lazy.pose_lazily(&m->mesh->clips[0], t);
+                for (const Pose& p : probe_poses(queries, unsigned(t * 10))) collide_relative(lazy.model(), probe(), p, o, scratch);
+                full.pose(&m->mesh->clips[0], t);
+                const CompactTree &l = lazy.model().tree(), &f = full.model().tree();
+                for (uint32_t a = 0; a < l.nodes().size(); ++a) {
+                    if (!near_root[a]) continue;
+                    const CompactNode& n = l.nodes()[a];
+                    const Eigen::Vector3f c(n.center[0], n.center[1], n.center[2]);
+                    std::vector<uint32_t> stack{a};
+                    while (!stack.empty()) {
+                        const uint32_t i = stack.back();
+                        stack.pop_back();
+                        const CompactNode& below = f.nodes()[i];
+                        if (!below.is_active()) {
+                            stack.push_back(i + 1), stack.push_back(below.first);
+                            continue;
+                        }
+                        for (uint32_t k = below.first; k < below.first + below.count; ++k)
+                            ASSERT_LE((f.sphere_center(below, k) - c).norm() + below.ss_radius, n.bv_radius)
+                                << "node " << a << " t " << t;
                     }
-                    for (uint32_t k = m.first; k < m.first + m.count; ++k)
-                        ASSERT_LE((f.sphere_center(m, k) - c).norm() + m.ss_radius, n.bv_radius) << "node " << a << " t " << t;
                 }
-            }
-            lazy.settle();
+                lazy.settle();
             }
     }
 }
