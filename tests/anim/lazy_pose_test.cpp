@@ -26,8 +26,9 @@ const Clip& bar_clip() { return bar().mesh->clips[0]; }
 void expect_same_layout(const CompactTree& a, const CompactTree& b) {
     ASSERT_EQ(a.nodes().size(), b.nodes().size());
     ASSERT_EQ(a.node_disc() == nullptr, b.node_disc() == nullptr);
-    if (a.node_disc())
+    if (a.node_disc()) {
         for (size_t k = 0; k < 4 * a.nodes().size(); ++k) ASSERT_EQ(a.node_disc()[k], b.node_disc()[k]) << "disc of node " << k / 4;
+    }
     for (size_t i = 0; i < a.nodes().size(); ++i) {
         const CompactNode &na = a.nodes()[i], &nb = b.nodes()[i];
         for (int k = 0; k < 3; ++k) ASSERT_EQ(na.center[k], nb.center[k]) << "node " << i;
@@ -324,7 +325,9 @@ TEST(LazyPose, AnOpenTubesFacesArePosedBeforeAnyWalkSoItsSpheresAnswerAsOnTheFul
                 const QueryResult a = collide_relative(lazy.model(), probe(), poses[k], o, ls);
                 const QueryResult b = collide_relative(full.model(), probe(), poses[k], o, fs);
                 ASSERT_EQ(a.collide, b.collide) << "t " << t << " pose " << k;
-                if (mode == QueryMode::Deepest && a.collide) ASSERT_EQ(a.deepest.depth, b.deepest.depth);
+                if (mode == QueryMode::Deepest && a.collide) {
+                    ASSERT_EQ(a.deepest.depth, b.deepest.depth);
+                }
                 collisions += a.collide;
             }
         lazy.settle();
@@ -358,8 +361,12 @@ TEST(LazyPose, ExactQueriesAndContainmentRefitTheTrianglesAloneAndAnswerAsOnTheF
                         const QueryResult a = collide_relative(lazy.model(), *other, p, o, ls);
                         const QueryResult b = collide_relative(full.model(), *other, p, o, fs);
                         ASSERT_EQ(a.collide, b.collide) << "t " << t << " level " << int(level) << " mode " << int(mode) << " solids " << solids;
-                        if (mode == QueryMode::All) ASSERT_EQ(ls.pairs().size(), fs.pairs().size());
-                        if (mode == QueryMode::Deepest && a.collide) ASSERT_EQ(a.deepest.depth, b.deepest.depth);
+                        if (mode == QueryMode::All) {
+                            ASSERT_EQ(ls.pairs().size(), fs.pairs().size());
+                        }
+                        if (mode == QueryMode::Deepest && a.collide) {
+                            ASSERT_EQ(a.deepest.depth, b.deepest.depth);
+                        }
                         collisions += a.collide;
                         contained += a.collide && other == &small_probe();
                     }

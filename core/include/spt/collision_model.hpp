@@ -77,10 +77,12 @@ private:
                         const std::vector<Eigen::Vector3f>& normals, bool triangles, int threads, TaskSystem* tasks);
     // follow_surface's part after the spheres: the triangles (or none), containment, measure.
     void follow_triangles(const std::vector<Eigen::Vector3d>& positions, bool triangles);
-    // A lazy pose's first step for the triangles (run alone): exact_ made this model's own, its
-    // corners at `positions` (object frame), containment's anchors there, and extent_ and reach_
-    // grown to hold them; the triangles' balls and tree are left for fit_triangle_tree.
+    // follow_triangles' first step, and a lazy pose's (run alone): exact_ made this model's own,
+    // its corners at `positions` (object frame), containment's anchors there; the triangles'
+    // balls and tree are left for fit_triangle_tree.
     void place_triangle_corners(const std::vector<Eigen::Vector3d>& positions);
+    // extent_ and reach_ grown to hold the triangles' corners (a lazy pose's bound until measure).
+    void grow_to_hold_triangles();
     // The triangles' balls and tree refit in place around the corners placed (exact_ this model's own).
     void fit_triangle_tree();
     detail::PendingHandle pending_; // first: copied (so the source is posed) before the rest

@@ -213,6 +213,7 @@ void LazyPose::begin() {
     // (query/sample_piece.cpp), and the exact level reads them. The triangles' balls and tree wait
     // for the first exact walk (ensure_triangles) or the settle.
     model.place_triangle_corners(v);
+    model.grow_to_hold_triangles();
     triangles_posed_.store(0, std::memory_order_relaxed);
     model.pending_.pose = this;
 }

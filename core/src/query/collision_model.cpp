@@ -178,40 +178,30 @@ void CollisionModel::follow_surface(const std::vector<Eigen::Vector3d>& position
 
 void CollisionModel::follow_triangles(const std::vector<Eigen::Vector3d>& positions, bool triangles) {
     if (!triangles) exact_.reset();
-    if (has_mesh()) {
-        // Shared with copies of this model: those keep the pose they had.
-        auto e = exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(exact_) : std::make_shared<ExactData>(*exact_);
-        for (size_t v = 0; v < e->positions.size(); ++v) e->positions[v] = positions[v] - origin();
-        fit_triangle_spheres(*e);
-        detail::refit_triangle_tree(*e);
-        exact_ = std::move(e);
-    }
-    // The grids were made for the bind pose; with the triangles, containment asks them instead.
-    if (has_mesh() && solid_) {
-        auto posed = std::make_shared<SolidData>();
-        posed->posed = true;
-        posed->anchor_vertex = solid_->anchor_vertex;
-        for (uint32_t v : posed->anchor_vertex) posed->anchors.push_back((positions[v] - origin()).cast<float>());
-        solid_ = std::move(posed);
-    } else {
-        solid_.reset();
-    }
+    if (!has_mesh()) solid_.reset(); // the grids were made for the bind pose: no containment without the triangles
+    place_triangle_corners(positions);
+    fit_triangle_tree();
     measure(true);
 }
 
 void CollisionModel::place_triangle_corners(const std::vector<Eigen::Vector3d>& positions) {
     if (!has_mesh()) return;
+    // Shared with copies of this model: those keep the pose they had.
     auto e = exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(exact_) : std::make_shared<ExactData>(*exact_);
     for (size_t v = 0; v < e->positions.size(); ++v) e->positions[v] = positions[v] - origin();
     exact_ = std::move(e);
-    if (solid_) { // as follow_triangles: the posed anchors, asked of the triangles
+    // The grids were made for the bind pose; with the triangles, containment asks them instead.
+    if (solid_) {
         auto posed = std::make_shared<SolidData>();
         posed->posed = true;
         posed->anchor_vertex = solid_->anchor_vertex;
         for (uint32_t v : posed->anchor_vertex) posed->anchors.push_back((positions[v] - origin()).cast<float>());
         solid_ = std::move(posed);
     }
-    measure_triangles(*exact_, origin(), extent_, reach_);
+}
+
+void CollisionModel::grow_to_hold_triangles() {
+    if (has_mesh()) measure_triangles(*exact_, origin(), extent_, reach_);
 }
 
 void CollisionModel::fit_triangle_tree() {

@@ -42,5 +42,10 @@ inline PendingPose* pending_of(const CollisionModel& m) { return ModelAccess::pe
 inline void settle(const CollisionModel& m) {
     if (PendingPose* p = pending_of(m)) p->settle();
 }
+/// Readies the triangles of a lazily posed `m` (PendingPose::ensure_triangles); a no-op for a
+/// model posed throughout or without triangles.
+inline void ensure_triangles(const CollisionModel& m) {
+    if (PendingPose* p = pending_of(m); p && m.has_mesh()) p->ensure_triangles();
+}
 
 } // namespace spt::detail

@@ -324,9 +324,7 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
     // elsewhere in full first.
     const bool lazy = detail::pending_of(a) || detail::pending_of(b);
     if (lazy && options.level == QueryLevel::Bounds) detail::settle(a), detail::settle(b);
-    if (lazy && options.level == QueryLevel::Exact)
-        for (const CollisionModel* m : {&a, &b})
-            if (detail::PendingPose* p = detail::pending_of(*m)) p->ensure_triangles();
+    if (lazy && options.level == QueryLevel::Exact) detail::ensure_triangles(a), detail::ensure_triangles(b);
     QueryRun run(a, b, b_in_a, options, scratch);
     run.stop_when_deep = deep != nullptr;
     run.deepest_slack = slack;
@@ -346,8 +344,7 @@ QueryResult relative_query(const CollisionModel& a, const CollisionModel& b, con
         // pose): refit them where it will ask. (A lazily posed model without triangles has no
         // containment, as a full pose has none.)
         if (lazy && options.solids && !run.stopped_deep && !run.res.collide && run.roots_overlap)
-            for (const CollisionModel* m : {&a, &b})
-                if (detail::PendingPose* p = detail::pending_of(*m); p && m->has_mesh()) p->ensure_triangles();
+            detail::ensure_triangles(a), detail::ensure_triangles(b);
         if (!run.stopped_deep) run.check_containment();
     } else {
         // Triangles decide; at deepest the contact then comes from the sampling spheres.
