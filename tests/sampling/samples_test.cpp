@@ -81,6 +81,23 @@ TEST(RadiusLimiter, SphereThroughAThinRodIsCaughtFromOutside) {
     EXPECT_GT(r, 0.04f);
 }
 
+TEST(RadiusLimiter, SphereOnAnEdgeOfAThinBarWhoseCentreLeavesByTheEndIsCaught) {
+    // A bar thinner than the allowance, sampled where its underside meets its end. The sphere's
+    // centre rises in the end face's plane, and a rounded normal tips it a hair out of the bar
+    // (regr01.obj's beams: spheres of 348 units on a lip 1 unit thick). Started at the sample,
+    // the segment to the centre then leaves the bar at its start and crosses no face, and the end
+    // face is too small to come near the centre: the whole radius passed. Started a little inside
+    // the sample's face, the segment crosses the top.
+    const double thickness = 0.004, allowance = 0.01;
+    const ImportedMesh m = meshgen::prepare(meshgen::box(2, 0.3, thickness, 4), "bar");
+    const RadiusLimiter limiter(m.mesh, allowance);
+    const Eigen::Vector3f tipped = Eigen::Vector3f(-1e-7f, 0, -1).normalized(); // -n leans out of the end x = 1
+    for (double y : {-0.15, -0.075, 0.0, 0.0375, 0.15}) {
+        const Eigen::Vector3d p(1.0, y, -thickness / 2), inside_face(0.5, 0.0, -thickness / 2);
+        EXPECT_LE(limiter.limit(p, tipped, 1.0f, false, ~0u, &inside_face), allowance * 1.01) << "y " << y;
+    }
+}
+
 TEST(Samples, VerticesWithoutNormalAreLeftOut) {
     auto raw = meshgen::box(1, 1, 1, 1);
     raw.positions.push_back({9, 9, 9});

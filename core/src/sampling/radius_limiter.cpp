@@ -6,6 +6,14 @@
 #include <limits>
 
 namespace spt {
+namespace {
+
+// How far the segment test starts from an edge sample towards its face's inside point: far
+// above the rounding of coordinates and the tilt of a stored normal (a tenth of a milliradian)
+// over the segment's length, and small enough to stay on the sample's face.
+constexpr double kInsideFaceStep = 1e-3;
+
+} // namespace
 
 RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion, double two_sided_radius)
     : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion),
@@ -21,7 +29,8 @@ RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion, double
 
 RadiusLimiter::~RadiusLimiter() = default;
 
-bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex) const {
+bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex,
+                              const Eigen::Vector3d& start) const {
     if (r <= protrusion_) return false;
     const Eigen::Vector3d c = p - r * n;
     // The tangent point p is at distance r; a surface nearer than r - allowance means the
@@ -30,17 +39,17 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     // the tangent point to the centre then crosses the surface. A crossing deeper than twice
     // the allowance lies in the ball above with a margin of an allowance, so the segment is
     // searched only that far: one walk of the tree near p answers both. The start is skipped
-    // so the faces at p itself do not count: p lies on them only up to the rounding of its
-    // coordinates, which grows with their distance from the file's origin, not with r (a
+    // so the faces at the start itself do not count: it lies on them only up to the rounding of
+    // its coordinates, which grows with their distance from the file's origin, not with r (a
     // 1e-4 mesh 1e6 away is rounded to 1e-10, a sizeable fraction of its small spheres).
-    const double rounding = 64 * std::numeric_limits<double>::epsilon() * p.cwiseAbs().maxCoeff();
-    const detail::BallSegmentProbe probe{c, (r - protrusion_) * (r - protrusion_), p, c - p,
+    const double rounding = 64 * std::numeric_limits<double>::epsilon() * start.cwiseAbs().maxCoeff();
+    const detail::BallSegmentProbe probe{c, (r - protrusion_) * (r - protrusion_), start, c - start,
                                          std::max(1e-6, rounding / r), std::min(1.0, 2 * protrusion_ / r), vertex};
     return bvh_->touches(probe);
 }
 
 float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, bool two_sided,
-                           uint32_t vertex) const {
+                           uint32_t vertex, const Eigen::Vector3d* inside_face) const {
     // Where inside and outside are not defined, no solid may be invented: a sphere of an open
     // part is centred on its surface and stays within the allowance of it, on both sides.
     if (two_sided) {
@@ -54,13 +63,19 @@ float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, 
         return float(top * std::exp2(-0.5 * k));
     }
     const Eigen::Vector3d n = nf.cast<double>();
+    // On a face's edge the centre's direction can run along the neighbouring face (a box's edge)
+    // and, tipped a hair outwards by the normal's rounding, leave the solid at p itself: past the
+    // skipped start, the segment then crosses nothing, and a neighbour smaller than the sphere
+    // (the end of a thin bar) never comes near the centre either. From a point of the face a
+    // little inside its edges the segment lies inside the solid until it crosses a wall.
+    const Eigen::Vector3d start = inside_face ? p + kInsideFaceStep * (*inside_face - p) : p;
     // Protrusion grows with r (a centre that passes through a thin part counts as outside),
     // so the largest allowed radius is found by bisection.
-    if (!protrudes(p, n, r_max, vertex)) return r_max;
+    if (!protrudes(p, n, r_max, vertex, start)) return r_max;
     double lo = std::min<double>(protrusion_, r_max), hi = r_max;
     for (int i = 0; i < 20 && hi > lo * 1.01; ++i) {
         const double mid = (lo + hi) / 2;
-        (protrudes(p, n, mid, vertex) ? hi : lo) = mid;
+        (protrudes(p, n, mid, vertex, start) ? hi : lo) = mid;
     }
     return float(lo);
 }

@@ -31,8 +31,11 @@ public:
     /// is centred at p, so every point of it is within r of the surface: the largest of
     /// two_sided_radius() x 2^(-k/2), k >= 0, that is at most r_max (a short ladder of radii).
     /// `vertex`: the mesh vertex p is (~0u if none), whose faces the segment test can skip.
+    /// `inside_face`: for a sample on a face, a point inside that face (its centroid): the segment
+    /// test starts a little towards it, so that a sample on the face's edge is not tested from a
+    /// point where the centre's direction only grazes the solid (object frame, model units).
     float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, bool two_sided,
-                uint32_t vertex = ~0u) const;
+                uint32_t vertex = ~0u, const Eigen::Vector3d* inside_face = nullptr) const;
     /// True if `vertex` belongs to an open part (one of its faces does; TriangleMesh::on_open_part,
     /// unknown counts as open).
     bool on_open_part(uint32_t vertex) const { return vertex >= open_part_.size() || open_part_[vertex]; }
@@ -48,7 +51,8 @@ public:
     const TriangleMesh& mesh() const { return mesh_; }
 
 private:
-    bool protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex) const;
+    bool protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex,
+                   const Eigen::Vector3d& start) const;
     const TriangleMesh& mesh_;
     std::unique_ptr<detail::TriangleBvh> bvh_;
     double protrusion_;

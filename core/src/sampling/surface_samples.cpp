@@ -133,6 +133,7 @@ struct FaceSampler {
     uint32_t face;
     Eigen::Vector3d a, b, c;
     Eigen::Vector3f normal;
+    Eigen::Vector3d centroid;
     bool two_sided; // the face is on an open part: spheres centred on it, which must cover it
     float spacing;
     RadiusRule rule;
@@ -150,7 +151,7 @@ struct FaceSampler {
         // One face can ask for more samples than memory holds (a tolerance far below its size).
         if (radius_at.size() >= room) throw TooManySamples{radius_at.size() + 1};
         const Eigen::Vector3d p = point(i, j); // on the face: limited there, stored local in float
-        const float cap = limiter.limit(p, normal, search_radius(rule, spacing, two_sided), two_sided);
+        const float cap = limiter.limit(p, normal, search_radius(rule, spacing, two_sided), two_sided, ~0u, &centroid);
         out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit | (two_sided ? kTwoSidedBit : 0), spacing, cap);
         // An active node of two-sided samples keeps their own radius (radius_class.hpp).
         const float r = (two_sided ? 1.0f : factor) * rule.for_sample(spacing, out.max_radius.back());
@@ -201,7 +202,7 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     const Eigen::Vector3d fn = (b - a).cross(c - a);
     if (!(fn.norm() > 0)) return;
     const float spacing = face_spacing(a, b, c);
-    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), limiter.face_on_open_part(face),
+    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), (a + b + c) / 3, limiter.face_on_open_part(face),
                    spacing, rule, radius_factor, eps, room, {}};
     const int64_t g = FaceSampler::kGrid;
     fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
