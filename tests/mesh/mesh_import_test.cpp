@@ -110,6 +110,35 @@ TEST(MeshPrepare, InconsistentWindingIsFixed) {
     EXPECT_FALSE(m.report.fixes.empty());
 }
 
+TEST(MeshPrepare, AClosedPartWhoseWallsLieOnOneAnotherIsSampledAsAnOpenSheet) {
+    // A flat closed shell (a sheet exported as a box 1e-7 thick, its top slid along it so that
+    // no vertex welds to one below, as assimp's OBJ/regr01.obj's trims are) encloses no volume:
+    // each face's winding would put its one-sided spheres outside the part on one wall or the
+    // other. It is an open sheet: two-sided spheres within the allowance, no solid. A box 1e-4
+    // thick beside it stays a closed solid.
+    meshgen::RawMesh raw = meshgen::box(1, 0.5, 1, 2);
+    for (Eigen::Vector3d& v : raw.positions) v.x() += v.z() > 0 ? 0.01 : 0, v.z() *= 1e-7;
+    raw.append(meshgen::box(1, 0.5, 1e-4, 2), Eigen::Vector3d(0, 2, 0));
+    const ImportedMesh m = meshgen::prepare(raw, "flat shell and thin box");
+    EXPECT_TRUE(m.report.closed);
+    EXPECT_EQ(m.report.flat_closed_parts, 1u);
+    size_t open = 0, closed = 0;
+    for (uint32_t f = 0; f < m.mesh.triangles.size(); ++f) {
+        const bool on_flat = m.mesh.positions[m.mesh.triangles[f][0]].y() < 1;
+        EXPECT_EQ(bool(m.mesh.on_open_part[f]), on_flat) << "face " << f;
+        (m.mesh.on_open_part[f] ? open : closed) += 1;
+    }
+    EXPECT_GT(open, 0u);
+    EXPECT_GT(closed, 0u);
+    const SptDocument doc = make_document(m.mesh);
+    const double allowance = kDefaultProtrusion * m.mesh.diagonal();
+    for (size_t i = 0; i < doc.samples.size(); ++i) {
+        const bool on_flat = doc.samples.position(i).y() < 1;
+        EXPECT_EQ(doc.samples.is_two_sided(i), on_flat) << "sample " << i;
+        EXPECT_LE(doc.samples.max_radius[i], allowance * 1.01) << "sample " << i;
+    }
+}
+
 TEST(MeshPrepare, InsideOutClosedMeshIsTurnedAround) {
     auto raw = meshgen::icosphere(1.0, 2);
     for (auto& t : raw.triangles) std::swap(t[1], t[2]);

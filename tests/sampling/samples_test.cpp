@@ -5,6 +5,7 @@
 #include "mesh/shapes.hpp"
 #include "sampling/encoding.hpp"
 #include "sampling/surface_samples.hpp"
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -96,6 +97,41 @@ TEST(RadiusLimiter, SphereOnAnEdgeOfAThinBarWhoseCentreLeavesByTheEndIsCaught) {
         const Eigen::Vector3d p(1.0, y, -thickness / 2), inside_face(0.5, 0.0, -thickness / 2);
         EXPECT_LE(limiter.limit(p, tipped, 1.0f, false, ~0u, &inside_face), allowance * 1.01) << "y " << y;
     }
+}
+
+TEST(RadiusLimiter, NoSphereOfAClosedPartOfRegr01PokesOutOfTheModelsBox) {
+    // assimp's OBJ/regr01.obj, a building of thin beams and lips with flat closed trims. A sphere
+    // tangent at a corner of a face of a closed part lies within the model's box grown by twice
+    // the allowance (a sphere at the allowance's floor may poke out that far, by design). The
+    // ends of its beams gave spheres of 348 units whose centres sat 300 units above the model,
+    // and its flat trims (closed parts of no volume, now sampled as sheets) spheres of 181 units
+    // 200 units beside it.
+    const ImportedMesh m = import_mesh(test::assimp_models() + "/OBJ/regr01.obj");
+    const TriangleMesh& mesh = m.mesh;
+    EXPECT_GE(m.report.flat_closed_parts, 1u);
+    const double allowance = kDefaultProtrusion * mesh.diagonal();
+    const RadiusLimiter limiter(mesh, allowance);
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& v : mesh.positions) box.extend(v);
+    box.min().array() -= 2 * allowance, box.max().array() += 2 * allowance;
+    size_t tested = 0;
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+        if (mesh.on_open_part[f] || mesh.copies_earlier_face(f)) continue;
+        const auto& t = mesh.triangles[f];
+        const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+        const Eigen::Vector3d normal = (b - a).cross(c - a);
+        if (!(normal.norm() > 0)) continue;
+        const Eigen::Vector3f n = normal.normalized().cast<float>();
+        const Eigen::Vector3d centroid = (a + b + c) / 3;
+        for (const Eigen::Vector3d& p : {a, b, c}) {
+            const float r = limiter.limit(p, n, 1000.0f, false, ~0u, &centroid);
+            const Eigen::Vector3d centre = p - double(r) * n.cast<double>(), reach = Eigen::Vector3d::Constant(r);
+            ++tested;
+            EXPECT_TRUE(box.contains(centre - reach) && box.contains(centre + reach))
+                << "face " << f << " corner " << p.transpose() << ": radius " << r << ", centre " << centre.transpose();
+        }
+    }
+    EXPECT_GT(tested, 1000u);
 }
 
 TEST(Samples, VerticesWithoutNormalAreLeftOut) {

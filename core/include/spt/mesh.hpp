@@ -71,6 +71,7 @@ struct ImportReport {
     bool closed = false;              ///< no boundary and no non-manifold edges
     size_t flipped_faces = 0;         ///< faces re-wound to agree with their neighbours
     size_t inverted_components = 0;   ///< closed components turned right side out
+    size_t flat_closed_parts = 0;     ///< closed parts that enclose no volume, sampled as open sheets
     size_t vertices_without_normal = 0; ///< left out of sampling
     std::vector<std::string> fixes;   ///< one sentence per fix applied
     std::vector<std::string> warnings; ///< one sentence per problem left in place

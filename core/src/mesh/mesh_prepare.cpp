@@ -114,6 +114,35 @@ double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) 
     return v / 6.0;
 }
 
+// A closed part whose walls lie on one another (a sheet modelled as a flat closed shell: assimp's
+// OBJ/regr01.obj's trims, their walls 3e-5 apart) encloses no volume and has no inside to fill:
+// each of its faces would hang its spheres on whichever side its winding says, outside the part
+// on one wall or the other. Such a part is marked open, so that it is sampled as a sheet
+// (two-sided spheres) and walls in no solid. "No volume": a mean thickness, twice the volume
+// over the area, below kFlatPartThickness of the mesh's diagonal, far below anything a float
+// layout resolves.
+constexpr double kFlatPartThickness = 1e-6;
+
+void mark_flat_parts_open(TriangleMesh& m, const std::vector<std::vector<uint32_t>>& part_faces,
+                          const std::vector<uint32_t>& copy_of, ImportReport& r) {
+    const double diagonal = m.diagonal();
+    for (const std::vector<uint32_t>& part : part_faces) {
+        if (m.on_open_part[part[0]] || m.copies_earlier_face(part[0])) continue;
+        double area = 0;
+        for (uint32_t f : part) {
+            const auto& t = m.triangles[f];
+            area += 0.5 * (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).norm();
+        }
+        if (!(2 * std::abs(signed_volume(m, part)) < kFlatPartThickness * diagonal * area)) continue;
+        for (uint32_t f : part) m.on_open_part[f] = 1;
+        ++r.flat_closed_parts;
+    }
+    if (r.flat_closed_parts == 0) return;
+    for (uint32_t f = 0; f < copy_of.size(); ++f) m.on_open_part[f] = m.on_open_part[copy_of[f]];
+    r.warnings.push_back(std::to_string(r.flat_closed_parts) +
+                         " closed part(s) enclose no volume (walls on one another): sampled as open sheets");
+}
+
 // Per face, the first face with the same three vertices (either winding): itself for all
 // but the later copies. Counts the copies and the vertices no face uses into `r`.
 std::vector<uint32_t> find_duplicates(const TriangleMesh& m, ImportReport& r) {
@@ -367,6 +396,8 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
                                  " edges disagree after re-winding)");
     }
     stop_if_cancelled();
+    // (A volume is read only from windings that agree: a part left with disagreeing ones can sum to none.)
+    if (options.fix_orientation || inconsistent == 0) mark_flat_parts_open(m, parts.groups(), copy_of, r);
     if (options.fix_orientation) {
         // A closed part faces out of the solid: positive volume, unless it is the inner wall
         // of a hollow (inside an odd number of other closed parts), which faces the cavity.
