@@ -8,9 +8,10 @@
 namespace spt {
 namespace {
 
-// How far the segment test starts from an edge sample towards its face's inside point: far
-// above the rounding of coordinates and the tilt of a stored normal (a tenth of a milliradian)
-// over the segment's length, and small enough to stay on the sample's face.
+// How far the segment test starts from an edge sample towards its face's inside point, as a
+// share of the way: far above the rounding of coordinates, and (on a face not far smaller than
+// the allowance) above the drift that a normal's rounding gives the segment over the two
+// allowances searched; small enough to stay on the sample's face.
 constexpr double kInsideFaceStep = 1e-3;
 
 } // namespace
