@@ -124,8 +124,7 @@ double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) 
 constexpr double kFlatPartThickness = 1e-6;
 
 void mark_flat_parts_open(TriangleMesh& m, const std::vector<std::vector<uint32_t>>& part_faces,
-                          const std::vector<uint32_t>& copy_of, ImportReport& r) {
-    const double diagonal = m.diagonal();
+                          const std::vector<uint32_t>& copy_of, double diagonal, ImportReport& r) {
     for (const std::vector<uint32_t>& part : part_faces) {
         if (m.on_open_part[part[0]] || m.copies_earlier_face(part[0])) continue;
         double area = 0;
@@ -397,7 +396,7 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
     }
     stop_if_cancelled();
     // (A volume is read only from windings that agree: a part left with disagreeing ones can sum to none.)
-    if (options.fix_orientation || inconsistent == 0) mark_flat_parts_open(m, parts.groups(), copy_of, r);
+    if (options.fix_orientation || inconsistent == 0) mark_flat_parts_open(m, parts.groups(), copy_of, diag, r);
     if (options.fix_orientation) {
         // A closed part faces out of the solid: positive volume, unless it is the inner wall
         // of a hollow (inside an odd number of other closed parts), which faces the cavity.
