@@ -221,6 +221,34 @@ TEST(DistanceExact, MaxDistanceAndRelativeErrorHoldOnTheTriangles) {
     EXPECT_GT(within, 2);
 }
 
+// Two sheets in one plane (or a hair off it), side by side: every corner lies on the other's
+// plane, so the planes' gaps bound nothing and the line of the triangles' centroids tells the
+// pairs apart; it must never drop the nearest pair.
+TEST(DistanceExact, SheetsSideBySideInOnePlaneGiveTheGapOfTheirNearestTriangles) {
+    const auto sheet = make_object(make_sheet(1.0, 10));
+    QueryScratch scratch;
+    DistanceOptions exact;
+    exact.level = QueryLevel::Exact;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> turn(-kPi, kPi), lift(-1e-3, 1e-3), tilt(-0.05, 0.05);
+    int apart = 0;
+    for (int k = 0; k < 50; ++k) {
+        const double a = turn(rng);
+        const Eigen::Vector3d across(std::cos(a), std::sin(a), 0);
+        const Eigen::Quaterniond spin(Eigen::AngleAxisd(turn(rng), Eigen::Vector3d::UnitZ()) *
+                                      Eigen::AngleAxisd(k % 3 == 0 ? tilt(rng) : 0, Eigen::Vector3d::UnitX()));
+        const Pose p = Pose::from(1.6 * across + Eigen::Vector3d(0, 0, k % 2 ? lift(rng) : 0), spin);
+        const double truth = every_triangle_pair(*sheet, *sheet, p);
+        if (truth == 0) continue;
+        ++apart;
+        const DistanceResult d = distance_relative(sheet->model, sheet->model, p, exact, scratch);
+        ASSERT_FALSE(d.beyond);
+        EXPECT_NEAR(d.distance, truth, 1e-12) << "pose " << k;
+        EXPECT_NEAR((d.point_a - d.point_b).norm(), d.distance, 1e-12);
+    }
+    EXPECT_GT(apart, 30);
+}
+
 TEST(DistanceExact, NeedsTheMeshesOfBothModels) {
     const Object& t = torus();
     const CollisionModel no_mesh(t.doc);

@@ -14,7 +14,6 @@ namespace {
 // Why these values (docs/queries.md, "How exact decides"): a walk over small compact nodes
 // with cheap tests (sphere, one slab) is fastest on finely meshed surfaces; thin rods and
 // needle triangles (FCL's env/rob pair) need whole boxes and a triangle a leaf.
-constexpr uint32_t kLeafTriangles = 4; // most triangles in a leaf, all of them compact
 constexpr double kCompactTriangle = 0.25; // compact: twice the area >= this * longest edge^2 (height >= 1/4 of it)
 constexpr float kElongatedNode = 0.3f;    // elongated: the box's middle half extent < this * the sphere's radius
 constexpr float kFlatLeaf = 0.1f;         // several triangles a leaf only if the box's thinnest half extent < this * radius

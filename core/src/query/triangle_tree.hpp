@@ -4,6 +4,9 @@
 
 namespace spt::detail {
 
+/// Most triangles in a leaf (all of them compact, docs/queries.md); most leaves hold one.
+constexpr uint32_t kLeafTriangles = 4;
+
 /// Fills e.tri_nodes and e.tri_order from e.positions and e.triangles, leaving out
 /// zero-area triangles (counted in e.degenerate_triangles).
 void build_triangle_tree(ExactData& e);
