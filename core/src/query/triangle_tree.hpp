@@ -4,7 +4,8 @@
 
 namespace spt::detail {
 
-/// Most triangles in a leaf (all of them compact, docs/queries.md); most leaves hold one.
+/// Most triangles in a leaf: more than one only when all are compact and lie on one flat patch
+/// (docs/queries.md, "How exact decides").
 constexpr uint32_t kLeafTriangles = 4;
 
 /// Fills e.tri_nodes and e.tri_order from e.positions and e.triangles, leaving out
