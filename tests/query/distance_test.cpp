@@ -158,6 +158,29 @@ double every_triangle_pair(const Object& a, const Object& b, const Pose& b_in_a)
 
 } // namespace
 
+TEST(Distance, BoxesFaceToFaceGiveTheGapOfTheirNearestSpheres) {
+    // Flat faces nearly parallel: each node's disc bounds the pair together with the other's disc
+    // (its reach back along the first's normal), not its ball; neither may overshoot.
+    const auto box = make_object(make_box(Eigen::Vector3d(1.0, 1.0, 0.25), 6));
+    QueryScratch scratch;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> gap(0.001, 0.2), slide(-0.8, 0.8), tilt(-0.03, 0.03), turn(-kPi, kPi);
+    int apart = 0;
+    for (int k = 0; k < 30; ++k) {
+        const Eigen::Quaterniond q(Eigen::AngleAxisd(turn(rng), Eigen::Vector3d::UnitZ()) *
+                                   Eigen::AngleAxisd(tilt(rng), Eigen::Vector3d::UnitX()) *
+                                   Eigen::AngleAxisd(tilt(rng), Eigen::Vector3d::UnitY()));
+        const Pose p = Pose::from(Eigen::Vector3d(slide(rng), slide(rng), 0.5 + gap(rng)), q);
+        const Nearest n = every_pair(box->model, box->model, p);
+        if (!(n.gap > 0)) continue;
+        ++apart;
+        const DistanceResult d = distance_relative(box->model, box->model, p, DistanceOptions{}, scratch);
+        ASSERT_FALSE(d.collide);
+        EXPECT_NEAR(d.distance, n.gap, 1e-6) << "pose " << k;
+    }
+    EXPECT_GT(apart, 15);
+}
+
 TEST(DistanceExact, IsTheSmallestGapOfAnyTrianglePairWithPointsOnTheSurfaces) {
     const Object& t = torus();
     QueryScratch scratch;

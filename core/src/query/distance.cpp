@@ -88,22 +88,38 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     // sampled face the slab's gap is far nearer the distance than the balls'.
     const float* slab_a = bounds ? nullptr : detail::node_slab_of(a);
     const float* slab_b = bounds ? nullptr : detail::node_slab_of(b);
+    // Node i's row of its model's node_slabs table, or null where it has no disc.
+    auto disc_of = [](const float* slab, uint32_t i) {
+        const float* s = slab ? slab + detail::kSlabStride * i : nullptr;
+        return s && s[3] >= 0 ? s : nullptr;
+    };
+    // How far a node's spheres reach along a unit vector at cosine a to its disc's normal (s a
+    // node_slabs row; b the sine): NodeShape::support, with the angle both discs of a pair share.
+    auto support = [](const float* s, double radius, double a, double b) {
+        const double abs_a = std::abs(a);
+        return std::min(radius, abs_a * double(a >= 0 ? s[3] : s[4]) + double(s[5]) * b + (1 - abs_a) * double(s[6]));
+    };
     auto lower_bound = [&](uint32_t i, uint32_t j) {
         const Eigen::Vector3d ca = centre(ta.nodes()[i]), cb = centre_b(j), d = cb - ca;
-        double gap = d.norm() - radius_a(i) - radius_b(j);
+        const double ra = radius_a(i), rb = radius_b(j);
+        double gap = d.norm() - ra - rb;
+        const float *sa = disc_of(slab_a, i), *sb = disc_of(slab_b, j);
+        if (!sa && !sb) return gap;
         // The gap beyond a disc's face towards the other node's centre (its reach along its normal,
-        // or against it), then beyond the other's ball.
-        auto beyond_disc = [](const float* s, const Eigen::Vector3d& n, const Eigen::Vector3d& to_other) {
-            const double along = n.dot(to_other);
-            return along >= 0 ? along - s[3] : -along - s[4];
-        };
-        if (slab_a && slab_a[detail::kSlabStride * i + 3] >= 0) {
-            const float* s = slab_a + detail::kSlabStride * i;
-            gap = std::max(gap, beyond_disc(s, Eigen::Vector3d(s[0], s[1], s[2]), d) - radius_b(j));
+        // or against it), then beyond the other's reach back along that normal: its ball's, or
+        // with a disc too, its disc's at the angle between the two normals.
+        const Eigen::Vector3d na = sa ? Eigen::Vector3d(sa[0], sa[1], sa[2]) : Eigen::Vector3d::Zero();
+        const Eigen::Vector3d nb = sb ? Eigen::Vector3d(to_a.r * Eigen::Vector3d(sb[0], sb[1], sb[2])) : Eigen::Vector3d::Zero();
+        const double cosine = std::clamp(na.dot(nb), -1.0, 1.0), sine = sa && sb ? std::sqrt(1 - cosine * cosine) : 0;
+        if (sa) {
+            const double along = na.dot(d);
+            const double beyond = std::abs(along) - (along >= 0 ? sa[3] : sa[4]);
+            gap = std::max(gap, beyond - (sb ? support(sb, rb, along >= 0 ? -cosine : cosine, sine) : rb));
         }
-        if (slab_b && slab_b[detail::kSlabStride * j + 3] >= 0) {
-            const float* s = slab_b + detail::kSlabStride * j;
-            gap = std::max(gap, beyond_disc(s, to_a.r * Eigen::Vector3d(s[0], s[1], s[2]), -d) - radius_a(i));
+        if (sb) {
+            const double along = -nb.dot(d);
+            const double beyond = std::abs(along) - (along >= 0 ? sb[3] : sb[4]);
+            gap = std::max(gap, beyond - (sa ? support(sa, ra, along >= 0 ? -cosine : cosine, sine) : ra));
         }
         return gap;
     };
