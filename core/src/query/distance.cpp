@@ -134,6 +134,7 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     // that a query allocates nothing once it has grown.
     using Bound = detail::ScratchBuffers::SphereGapBound;
     detail::BestFirst<double> open(detail::buffers_of(scratch).sphere_gap_heap);
+    std::vector<Eigen::Vector3d>& leaf_b = detail::buffers_of(scratch).distance_leaf_b;
     if (const double g = lower_bound(0, 0); g < best) open.push(g, 0, 0);
     auto children = [](const CompactTree& t, uint32_t i) { return std::array<uint32_t, 2>{i + 1, t.nodes()[i].first}; };
     for (Bound top; open.take(top);) {
@@ -148,13 +149,20 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
                 if (g < best) best = g, best_a = centre(na), best_b = centre_b(top.b), best_ra = na.bv_radius, best_rb = nb.bv_radius, found = true;
                 continue;
             }
+            // B's spheres moved once a leaf pair, not once an A sphere; a pair's root taken only
+            // where its squared distance may beat the best (widened: the root decides as before).
+            std::vector<Eigen::Vector3d>& moved = leaf_b;
+            if (moved.size() < nb.count) moved.resize(nb.count);
+            for (uint32_t l = 0; l < nb.count; ++l) moved[l] = to_a(tb.sphere_center(nb, nb.first + l));
+            const double reach = double(na.ss_radius) + double(nb.ss_radius);
+            res.counters.sphere_tests += uint64_t(na.count) * nb.count;
             for (uint32_t k = na.first; k < na.first + na.count; ++k) {
                 const Eigen::Vector3d ca = ta.sphere_center(na, k).cast<double>();
-                for (uint32_t l = nb.first; l < nb.first + nb.count; ++l) {
-                    ++res.counters.sphere_tests;
-                    const Eigen::Vector3d cb = to_a(tb.sphere_center(nb, l));
-                    const double g = (ca - cb).norm() - na.ss_radius - nb.ss_radius;
-                    if (g < best) best = g, best_a = ca, best_b = cb, best_ra = na.ss_radius, best_rb = nb.ss_radius, found = true;
+                for (uint32_t l = 0; l < nb.count; ++l) {
+                    const double limit = best + reach, d2 = (ca - moved[l]).squaredNorm();
+                    if (!(limit > 0 && d2 <= limit * limit * (1 + 1e-9))) continue;
+                    const double g = std::sqrt(d2) - na.ss_radius - nb.ss_radius;
+                    if (g < best) best = g, best_a = ca, best_b = moved[l], best_ra = na.ss_radius, best_rb = nb.ss_radius, found = true;
                 }
             }
             continue;

@@ -112,6 +112,7 @@ struct ScratchBuffers {
     std::vector<GapBound> gap_heap;
     std::vector<SphereGapBound> sphere_gap_heap;
     std::vector<Eigen::Vector3d> exit_leaf_b;
+    std::vector<Eigen::Vector3d> distance_leaf_b; // distance.cpp: B's leaf spheres in A's frame, a leaf pair
     SphereMemo<Eigen::Matrix<double, 3, 2>> memo_ca, memo_cb; // two values of A's and of B's spheres (a centre and a normal)
 };
 
