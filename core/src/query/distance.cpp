@@ -134,7 +134,7 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
     // that a query allocates nothing once it has grown.
     using Bound = detail::ScratchBuffers::SphereGapBound;
     detail::BestFirst<double> open(detail::buffers_of(scratch).sphere_gap_heap);
-    std::vector<Eigen::Vector3d>& leaf_b = detail::buffers_of(scratch).distance_leaf_b;
+    std::vector<Eigen::Vector3d>& moved = detail::buffers_of(scratch).distance_leaf_b; // B's leaf spheres
     if (const double g = lower_bound(0, 0); g < best) open.push(g, 0, 0);
     auto children = [](const CompactTree& t, uint32_t i) { return std::array<uint32_t, 2>{i + 1, t.nodes()[i].first}; };
     for (Bound top; open.take(top);) {
@@ -151,7 +151,6 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
             }
             // B's spheres moved once a leaf pair, not once an A sphere; a pair's root taken only
             // where its squared distance may beat the best (widened: the root decides as before).
-            std::vector<Eigen::Vector3d>& moved = leaf_b;
             if (moved.size() < nb.count) moved.resize(nb.count);
             for (uint32_t l = 0; l < nb.count; ++l) moved[l] = to_a(tb.sphere_center(nb, nb.first + l));
             const double reach = double(na.ss_radius) + double(nb.ss_radius);
