@@ -29,7 +29,7 @@ test: build
 # directory (docs/fuzzing.md).
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= spt_loader pose_file mesh_prepare query scene
+FUZZ_TARGETS ?= spt_loader pose_file mesh_prepare query scene animated_import
 fuzz: deps
 	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPT_FUZZ=ON \
 	  -DSPT_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all" > /dev/null
