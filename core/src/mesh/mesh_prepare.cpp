@@ -124,15 +124,17 @@ double signed_volume(const TriangleMesh& m, const std::vector<uint32_t>& faces) 
 constexpr double kFlatPartThickness = 1e-6;
 
 void mark_flat_parts_open(TriangleMesh& m, const std::vector<std::vector<uint32_t>>& part_faces,
-                          const std::vector<uint32_t>& copy_of, double diagonal, ImportReport& r) {
-    for (const std::vector<uint32_t>& part : part_faces) {
-        if (m.on_open_part[part[0]] || m.copies_earlier_face(part[0])) continue;
+                          const std::vector<double>& volume, const std::vector<uint32_t>& copy_of, double diagonal,
+                          ImportReport& r) {
+    for (size_t c = 0; c < part_faces.size(); ++c) {
+        const std::vector<uint32_t>& part = part_faces[c];
+        if (m.on_open_part[part[0]]) continue;
         double area = 0;
         for (uint32_t f : part) {
             const auto& t = m.triangles[f];
             area += 0.5 * (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).norm();
         }
-        if (!(2 * std::abs(signed_volume(m, part)) < kFlatPartThickness * diagonal * area)) continue;
+        if (!(2 * std::abs(volume[c]) < kFlatPartThickness * diagonal * area)) continue;
         for (uint32_t f : part) m.on_open_part[f] = 1;
         ++r.flat_closed_parts;
     }
@@ -395,20 +397,28 @@ ImportedMesh prepare_mesh(std::string name, std::vector<Eigen::Vector3d> positio
                                  " edges disagree after re-winding)");
     }
     stop_if_cancelled();
-    // (A volume is read only from windings that agree: a part left with disagreeing ones can sum to none.)
-    if (options.fix_orientation || inconsistent == 0) mark_flat_parts_open(m, parts.groups(), copy_of, diag, r);
-    if (options.fix_orientation) {
-        // A closed part faces out of the solid: positive volume, unless it is the inner wall
-        // of a hollow (inside an odd number of other closed parts), which faces the cavity.
-        std::vector<std::vector<uint32_t>> part_faces = parts.groups();
-        // A copy is a part of its own (no edges): its face's part decides.
+    // The parts (a copy is a part of its own, with no edges: its face's part decides) and each
+    // closed one's signed volume, summed once for the flat check and the orientation step. (A
+    // volume is read only from windings that agree: a part left with disagreeing ones can sum to none.)
+    std::vector<std::vector<uint32_t>> part_faces;
+    std::vector<double> volume;
+    if (options.fix_orientation || inconsistent == 0) {
+        part_faces = parts.groups();
         part_faces.erase(std::remove_if(part_faces.begin(), part_faces.end(),
                                         [&](const std::vector<uint32_t>& p) { return m.copies_earlier_face(p[0]); }),
                          part_faces.end());
+        volume.resize(part_faces.size());
+        for (size_t c = 0; c < part_faces.size(); ++c)
+            volume[c] = m.on_open_part[part_faces[c][0]] ? 0 : signed_volume(m, part_faces[c]);
+        mark_flat_parts_open(m, part_faces, volume, copy_of, diag, r);
+    }
+    if (options.fix_orientation) {
+        // A closed part faces out of the solid: positive volume, unless it is the inner wall
+        // of a hollow (inside an odd number of other closed parts), which faces the cavity.
         const std::vector<int> nesting = detail::nesting_depths(m, part_faces);
         for (size_t c = 0; c < part_faces.size(); ++c) {
             const auto& comp = part_faces[c];
-            if (!m.on_open_part[comp[0]] && (signed_volume(m, comp) < 0) != (nesting[c] % 2 == 1)) {
+            if (!m.on_open_part[comp[0]] && (volume[c] < 0) != (nesting[c] % 2 == 1)) {
                 for (uint32_t f : comp) std::swap(m.triangles[f][1], m.triangles[f][2]);
                 ++r.inverted_components;
             }
