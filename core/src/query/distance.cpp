@@ -93,11 +93,10 @@ DistanceResult distance_relative(const CollisionModel& a, const CollisionModel& 
         const float* s = slab ? slab + detail::kSlabStride * i : nullptr;
         return s && s[3] >= 0 ? s : nullptr;
     };
-    // How far a node's spheres reach along a unit vector at cosine a to its disc's normal (s a
-    // node_slabs row; b the sine): NodeShape::support, with the angle both discs of a pair share.
+    // How far a node's spheres reach along a unit vector at cosine a (sine b) to its disc's normal,
+    // s its node_slabs row: the angle is the one both discs of a pair share, found once.
     auto support = [](const float* s, double radius, double a, double b) {
-        const double abs_a = std::abs(a);
-        return std::min(radius, abs_a * double(a >= 0 ? s[3] : s[4]) + double(s[5]) * b + (1 - abs_a) * double(s[6]));
+        return detail::disc_support<double>(radius, s[3], s[4], s[5], s[6], a, b);
     };
     auto lower_bound = [&](uint32_t i, uint32_t j) {
         const Eigen::Vector3d ca = centre(ta.nodes()[i]), cb = centre_b(j), d = cb - ca;

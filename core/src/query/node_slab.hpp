@@ -29,6 +29,15 @@ std::vector<float> node_slabs(const CompactTree& tree);
 /// the nodes' balls, deep in each other, bound nothing. Unchanged by a pose (radii stay).
 std::vector<float> node_max_radii(const CompactTree& tree);
 
+/// How far a disc's spheres reach from its centre along a unit vector at cosine `a` and sine `b`
+/// to its normal (NodeShape::support's bound): at most |a| times its reach that way (`out` along
+/// the normal, `in` against it), b times its width and (1 - |a|) times its largest radius, and
+/// never more than its ball's `radius`. Model units.
+template <class T> T disc_support(T radius, T out, T in, T wide, T sphere, T a, T b) {
+    const T abs_a = std::abs(a);
+    return std::min(radius, abs_a * (a >= 0 ? out : in) + wide * b + (1 - abs_a) * sphere);
+}
+
 /// A node's sampling spheres as the walks see them: inside its ball of radius `radius` and, when
 /// it has a disc (node_slabs: unit normal, reaches along it and against it, width, largest radius),
 /// inside that. Model units, in the frame of the node_slabs table (the model's local frame).
@@ -51,9 +60,8 @@ struct NodeShape {
     /// largest radius; or the ball's support where that is less.
     float support(const Eigen::Vector3f& u) const {
         if (!(out >= 0)) return radius;
-        const float a = normal.dot(u), abs_a = std::abs(a);
-        const float b = std::sqrt(std::max(0.0f, 1 - a * a));
-        return std::min(radius, abs_a * (a >= 0 ? out : in) + wide * b + (1 - abs_a) * sphere);
+        const float a = normal.dot(u);
+        return disc_support(radius, out, in, wide, sphere, a, std::sqrt(std::max(0.0f, 1 - a * a)));
     }
 };
 
