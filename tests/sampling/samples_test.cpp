@@ -99,6 +99,38 @@ TEST(RadiusLimiter, SphereOnAnEdgeOfAThinBarWhoseCentreLeavesByTheEndIsCaught) {
     }
 }
 
+TEST(RadiusLimiter, SegmentThroughTheEdgeTwoBackTrianglesShareIsCaught) {
+    // A wall 9 units thick (FCL's env.obj: 995.5 <= x <= 1004.5), its two large faces split along
+    // opposite diagonals. A face sample on the line where the front face's bisection meets the
+    // back face's diagonal sends its segment exactly through the back triangles' shared edge,
+    // which rounding put just outside both: spheres of 1,672 units passed the allowance of
+    // 22.5, and `spheres` agreed with `exact` on 365 of 600 FCL-style poses.
+    const double x0 = 995.5, x1 = 1004.5, y0 = -2987.5, y1 = 2987.5, z0 = 2012.5, z1 = 2987.5;
+    std::vector<Eigen::Vector3d> v;
+    for (double x : {x0, x1})
+        for (double y : {y0, y1})
+            for (double z : {z0, z1}) v.emplace_back(x, y, z);
+    auto at = [](int ix, int iy, int iz) { return uint32_t(4 * ix + 2 * iy + iz); };
+    const std::vector<Triangle> t = {
+        {at(1, 0, 1), at(1, 0, 0), at(1, 1, 1)}, {at(1, 1, 1), at(1, 0, 0), at(1, 1, 0)}, // front, x = x1
+        {at(0, 0, 0), at(0, 0, 1), at(0, 1, 0)}, {at(0, 1, 0), at(0, 0, 1), at(0, 1, 1)}, // back, x = x0
+        {at(0, 0, 0), at(1, 0, 0), at(0, 0, 1)}, {at(0, 0, 1), at(1, 0, 0), at(1, 0, 1)}, // y = y0
+        {at(0, 1, 0), at(0, 1, 1), at(1, 1, 0)}, {at(1, 1, 0), at(0, 1, 1), at(1, 1, 1)}, // y = y1
+        {at(0, 0, 0), at(0, 1, 0), at(1, 0, 0)}, {at(1, 0, 0), at(0, 1, 0), at(1, 1, 0)}, // z = z0
+        {at(0, 0, 1), at(1, 0, 1), at(0, 1, 1)}, {at(1, 0, 1), at(1, 1, 1), at(0, 1, 1)}, // z = z1
+    };
+    const ImportedMesh m = prepare_mesh("wall", v, t);
+    ASSERT_TRUE(m.report.closed);
+    const double allowance = 22.5;
+    const RadiusLimiter limiter(m.mesh, allowance);
+    const Eigen::Vector3d a(x1, y0, z1), b(x1, y1, z0), inside_face = (a + Eigen::Vector3d(x1, y0, z0) + Eigen::Vector3d(x1, y1, z1)) / 3;
+    for (int k = 1; k < 64; ++k) {
+        const Eigen::Vector3d p = a + (k / 64.0) * (b - a); // on the back diagonal's line, seen from the front
+        // Tangent at the front with its centre past the back, a sphere pokes out of the back by 2r - 9.
+        EXPECT_LE(limiter.limit(p, {1, 0, 0}, 1672.0f, false, ~0u, &inside_face), allowance * 1.01) << "k " << k;
+    }
+}
+
 TEST(RadiusLimiter, NoSphereOfAClosedPartOfRegr01PokesOutOfTheModelsBox) {
     // assimp's OBJ/regr01.obj, a building of thin beams and lips with flat closed trims. A sphere
     // tangent at a corner of a face of a closed part lies within the model's box grown by twice

@@ -321,11 +321,15 @@ bool TriangleBvh::triangle_crossed(uint32_t triangle, const Eigen::Vector3d& a, 
     const double det = e1x * pvx + e1y * pvy + e1z * pvz;
     if (std::abs(det) < 1e-300) return false;
     const double tx = a[0] - v0[0], ty = a[1] - v0[1], tz = a[2] - v0[2];
+    // A segment through the edge two triangles share can round just outside both: the
+    // barycentric bounds are widened so that such a crossing counts (the test may only find
+    // more crossings than exact arithmetic, so a radius it allows never pokes out further).
+    constexpr double kEdge = 1e-9;
     const double u = (tx * pvx + ty * pvy + tz * pvz) / det;
-    if (u < 0 || u > 1) return false;
+    if (u < -kEdge || u > 1 + kEdge) return false;
     const double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
     const double v = (d[0] * qx + d[1] * qy + d[2] * qz) / det;
-    if (v < 0 || u + v > 1) return false;
+    if (v < -kEdge || u + v > 1 + kEdge) return false;
     const double s = (e2x * qx + e2y * qy + e2z * qz) / det;
     return s > skip && s <= end;
 }
