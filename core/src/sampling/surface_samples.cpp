@@ -194,15 +194,23 @@ struct FaceSampler {
 
 } // namespace
 
-void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
-                      const RadiusRule& rule, float radius_factor, size_t room) {
-    const TriangleMesh& mesh = limiter.mesh();
+std::optional<FaceFrame> face_frame(const TriangleMesh& mesh, uint32_t face) {
     const auto& t = mesh.triangles[face];
     const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const Eigen::Vector3d fn = (b - a).cross(c - a);
-    if (!(fn.norm() > 0)) return;
+    if (!(fn.norm() > 0)) return std::nullopt;
+    return FaceFrame{fn.normalized().cast<float>(), (a + b + c) / 3};
+}
+
+void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
+                      const RadiusRule& rule, float radius_factor, size_t room) {
+    const TriangleMesh& mesh = limiter.mesh();
+    const std::optional<FaceFrame> frame = face_frame(mesh, face);
+    if (!frame) return;
+    const auto& t = mesh.triangles[face];
+    const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const float spacing = face_spacing(a, b, c);
-    FaceSampler fs{samples, limiter, face, a, b, c, fn.normalized().cast<float>(), (a + b + c) / 3, limiter.face_on_open_part(face),
+    FaceSampler fs{samples, limiter, face, a, b, c, frame->normal, frame->centroid, limiter.face_on_open_part(face),
                    spacing, rule, radius_factor, eps, room, {}};
     const int64_t g = FaceSampler::kGrid;
     fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);

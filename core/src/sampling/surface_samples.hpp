@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 namespace spt {
 
@@ -33,6 +34,15 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
 /// face samples are placed so that every point of a face is within this fraction of a
 /// sphere's radius from its centre (the rest is a margin for rounding).
 constexpr double kTwoSidedCoverage = 0.9;
+
+/// What a face sample of triangle `face` takes from its face: the unit face normal (float, as
+/// stored) and the centroid (object frame, model units), where the radius limiter's segment
+/// test starts. Empty for a degenerate face, which gets no face samples.
+struct FaceFrame {
+    Eigen::Vector3f normal;
+    Eigen::Vector3d centroid;
+};
+std::optional<FaceFrame> face_frame(const TriangleMesh& mesh, uint32_t face);
 
 /// Thrown by add_face_samples and face_samples when the samples would pass their limit.
 struct TooManySamples {
