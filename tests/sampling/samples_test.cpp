@@ -137,31 +137,35 @@ TEST(RadiusLimiter, NoSphereOfAClosedPartOfRegr01PokesOutOfTheModelsBox) {
     // the allowance (a sphere at the allowance's floor may poke out that far, by design). The
     // ends of its beams gave spheres of 348 units whose centres sat 300 units above the model,
     // and its flat trims (closed parts of no volume, now sampled as sheets) spheres of 181 units
-    // 200 units beside it.
+    // 200 units beside it. At 8 times the allowance, sliver faces (two corners 0.01 apart) sent
+    // spheres of 171 units out of the box: their centre's way left the solid at once.
     const ImportedMesh m = import_mesh(test::assimp_models() + "/OBJ/regr01.obj");
     const TriangleMesh& mesh = m.mesh;
     EXPECT_GE(m.report.flat_closed_parts, 1u);
-    const double allowance = kDefaultProtrusion * mesh.diagonal();
-    const RadiusLimiter limiter(mesh, allowance);
-    Eigen::AlignedBox3d box;
-    for (const Eigen::Vector3d& v : mesh.positions) box.extend(v);
-    box.min().array() -= 2 * allowance, box.max().array() += 2 * allowance;
     size_t tested = 0;
-    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-        if (mesh.on_open_part[f] || mesh.copies_earlier_face(f)) continue;
-        const std::optional<FaceFrame> frame = face_frame(mesh, f); // as a face sample asks the limiter
-        if (!frame) continue;
-        const auto& t = mesh.triangles[f];
-        const Eigen::Vector3f n = frame->normal;
-        for (const Eigen::Vector3d& p : {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]}) {
-            const float r = limiter.limit(p, n, 1000.0f, false, ~0u, &frame->centroid);
-            const Eigen::Vector3d centre = p - double(r) * n.cast<double>(), reach = Eigen::Vector3d::Constant(r);
-            ++tested;
-            EXPECT_TRUE(box.contains(centre - reach) && box.contains(centre + reach))
-                << "face " << f << " corner " << p.transpose() << ": radius " << r << ", centre " << centre.transpose();
+    for (const double share : {kDefaultProtrusion, 8 * kDefaultProtrusion}) {
+        const double allowance = share * mesh.diagonal();
+        const RadiusLimiter limiter(mesh, allowance);
+        Eigen::AlignedBox3d box;
+        for (const Eigen::Vector3d& v : mesh.positions) box.extend(v);
+        box.min().array() -= 2 * allowance, box.max().array() += 2 * allowance;
+        for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+            if (mesh.on_open_part[f] || mesh.copies_earlier_face(f)) continue;
+            const std::optional<FaceFrame> frame = face_frame(mesh, f); // as a face sample asks the limiter
+            if (!frame) continue;
+            const auto& t = mesh.triangles[f];
+            const Eigen::Vector3f n = frame->normal;
+            for (const Eigen::Vector3d& p : {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]}) {
+                const float r = limiter.limit(p, n, 1000.0f, false, ~0u, &frame->centroid);
+                const Eigen::Vector3d centre = p - double(r) * n.cast<double>(), reach = Eigen::Vector3d::Constant(r);
+                ++tested;
+                EXPECT_TRUE(box.contains(centre - reach) && box.contains(centre + reach))
+                    << "allowance " << allowance << ", face " << f << " corner " << p.transpose() << ": radius " << r
+                    << ", centre " << centre.transpose();
+            }
         }
     }
-    EXPECT_GT(tested, 1000u);
+    EXPECT_GT(tested, 2000u);
 }
 
 TEST(Samples, VerticesWithoutNormalAreLeftOut) {

@@ -19,6 +19,8 @@ constexpr double kInsideFaceStep = 1e-3;
 RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion, double two_sided_radius)
     : mesh_(mesh), bvh_(std::make_unique<detail::TriangleBvh>(mesh)), protrusion_(protrusion),
       two_sided_radius_(two_sided_radius > 0 ? two_sided_radius : protrusion) {
+    const auto [lo, hi] = mesh.bounds();
+    reach_ = Eigen::AlignedBox3d(lo.array() - protrusion, hi.array() + protrusion);
     // A vertex is on an open part if one of its faces is (prepare_mesh found the parts).
     const size_t nv = mesh.positions.size();
     const bool known = mesh.on_open_part.size() == mesh.triangles.size();
@@ -34,6 +36,12 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
                               const Eigen::Vector3d& start) const {
     if (r <= protrusion_) return false;
     const Eigen::Vector3d c = p - r * n;
+    // Whatever the walls near p say, a sphere that leaves the mesh's box by more than the
+    // allowance pokes out of the mesh by more. The tests below assume that the centre's way
+    // enters the solid at p; on the edge face of a wall thinner than rounding can tell apart
+    // (assimp's regr01.obj: slivers 0.01 wide on a gable 0.01 thick), it may not, and at eight
+    // times the default allowance spheres of 172 units stood beside the model.
+    if (((c.array() - r) < reach_.min().array()).any() || ((c.array() + r) > reach_.max().array()).any()) return true;
     // The tangent point p is at distance r; a surface nearer than r - allowance means the
     // sphere pokes out there by more than the allowance.
     // A centre beyond a wall thinner than the allowance passes that test; the segment from

@@ -2,6 +2,7 @@
 // Caps sampling-sphere radii so that no sphere pokes out of the mesh by more than an allowance.
 #include "spt/mesh.hpp"
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <memory>
 #include <vector>
 
@@ -57,6 +58,7 @@ private:
     std::unique_ptr<detail::TriangleBvh> bvh_;
     double protrusion_;
     double two_sided_radius_;
+    Eigen::AlignedBox3d reach_;      // the mesh's box grown by the allowance: no sphere may leave it
     std::vector<uint8_t> open_part_; // per vertex: one of its faces is on an open part (TriangleMesh::on_open_part)
 };
 
