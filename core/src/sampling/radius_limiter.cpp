@@ -28,6 +28,41 @@ RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion, double
     for (size_t f = 0; known && f < mesh.triangles.size(); ++f)
         if (mesh.on_open_part[f])
             for (uint32_t v : mesh.triangles[f]) open_part_[v] = 1;
+    // The faces around each vertex, as offsets into one list (counted, then filled).
+    auto in_fan = [&](size_t f) { return known && !mesh.on_open_part[f] && !mesh.copies_earlier_face(uint32_t(f)); };
+    fan_start_.assign(nv + 1, 0);
+    for (size_t f = 0; f < mesh.triangles.size(); ++f)
+        if (in_fan(f))
+            for (uint32_t v : mesh.triangles[f]) ++fan_start_[v + 1];
+    for (size_t v = 0; v < nv; ++v) fan_start_[v + 1] += fan_start_[v];
+    fan_faces_.resize(fan_start_[nv]);
+    std::vector<uint32_t> fill(fan_start_.begin(), fan_start_.end() - 1);
+    for (size_t f = 0; f < mesh.triangles.size(); ++f)
+        if (in_fan(f))
+            for (uint32_t v : mesh.triangles[f]) fan_faces_[fill[v]++] = uint32_t(f);
+}
+
+bool RadiusLimiter::enters_solid(uint32_t v, const Eigen::Vector3d& n) const {
+    if (v + 1 >= fan_start_.size() || fan_start_[v] == fan_start_[v + 1]) return true; // nothing to tell by
+    const Eigen::Vector3d& p = mesh_.positions[v];
+    // A step far below every edge at v: the faces around it then look, from there, as the
+    // infinite cone they span at v, whose signed solid angle is in (0, 4 pi) inside and in
+    // (-4 pi, 0) outside (faces wound counter-clockwise seen from outside).
+    double shortest = std::numeric_limits<double>::infinity();
+    for (uint32_t k = fan_start_[v]; k < fan_start_[v + 1]; ++k)
+        for (uint32_t w : mesh_.triangles[fan_faces_[k]])
+            if (w != v) shortest = std::min(shortest, (mesh_.positions[w] - p).norm());
+    if (!(shortest > 0) || !std::isfinite(shortest)) return true;
+    const Eigen::Vector3d q = p - 1e-4 * shortest * n;
+    double angle = 0;
+    for (uint32_t k = fan_start_[v]; k < fan_start_[v + 1]; ++k) {
+        const Triangle& t = mesh_.triangles[fan_faces_[k]];
+        // Van Oosterom and Strackee: tan(omega / 2) = a.(b x c) / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|).
+        const Eigen::Vector3d a = mesh_.positions[t[0]] - q, b = mesh_.positions[t[1]] - q, c = mesh_.positions[t[2]] - q;
+        const double la = a.norm(), lb = b.norm(), lc = c.norm();
+        angle += 2 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la);
+    }
+    return angle > 0;
 }
 
 RadiusLimiter::~RadiusLimiter() = default;
@@ -78,6 +113,11 @@ float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, 
     // (the end of a thin bar) never comes near the centre either. From a point of the face a
     // little inside its edges the segment lies inside the solid until it crosses a wall.
     const Eigen::Vector3d start = inside_face ? p + kInsideFaceStep * (*inside_face - p) : p;
+    // Both tests assume that the way to the centre enters the solid at p. A vertex's normal, the
+    // mean of its faces', need not where faces fold about the vertex (regr01's needles, faces
+    // 10^-5 wide with opposite normals, gave a vertex sphere poking out by 3.5 allowances): its
+    // sphere then keeps the floor, the allowance.
+    if (vertex != ~0u && !enters_solid(vertex, n)) return std::min(float(protrusion_), r_max);
     // Protrusion grows with r (a centre that passes through a thin part counts as outside),
     // so the largest allowed radius is found by bisection.
     if (!protrudes(p, n, r_max, vertex, start)) return r_max;

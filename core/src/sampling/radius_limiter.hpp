@@ -54,11 +54,15 @@ public:
 private:
     bool protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex,
                    const Eigen::Vector3d& start) const;
+    // Whether the way from vertex v's point along -n enters its closed part's solid: the signed
+    // solid angle of the faces around v, seen from a point a little along that way, is positive.
+    bool enters_solid(uint32_t v, const Eigen::Vector3d& n) const;
     const TriangleMesh& mesh_;
     std::unique_ptr<detail::TriangleBvh> bvh_;
     double protrusion_;
     double two_sided_radius_;
     Eigen::AlignedBox3d reach_;      // the mesh's box grown by the allowance: no sphere may leave it
+    std::vector<uint32_t> fan_start_, fan_faces_; // per vertex, its faces of closed parts (copies left out)
     std::vector<uint8_t> open_part_; // per vertex: one of its faces is on an open part (TriangleMesh::on_open_part)
 };
 

@@ -135,6 +135,9 @@ struct FaceSampler {
     Eigen::Vector3f normal;
     Eigen::Vector3d centroid;
     bool two_sided; // the face is on an open part: spheres centred on it, which must cover it
+    // A one-sided face narrower than the allowance (a needle between two walls): its normal tells
+    // nothing of where the solid lies, so its spheres keep the allowance's floor.
+    bool needle;
     float spacing;
     RadiusRule rule;
     float factor;
@@ -151,7 +154,9 @@ struct FaceSampler {
         // One face can ask for more samples than memory holds (a tolerance far below its size).
         if (radius_at.size() >= room) throw TooManySamples{radius_at.size() + 1};
         const Eigen::Vector3d p = point(i, j); // on the face: limited there, stored local in float
-        const float cap = limiter.limit(p, normal, search_radius(rule, spacing, two_sided), two_sided, ~0u, &centroid);
+        const float search = search_radius(rule, spacing, two_sided);
+        const float cap = limiter.limit(p, normal, needle ? std::min(search, float(limiter.protrusion())) : search,
+                                        two_sided, ~0u, &centroid);
         out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit | (two_sided ? kTwoSidedBit : 0), spacing, cap);
         // An active node of two-sided samples keeps their own radius (radius_class.hpp).
         const float r = (two_sided ? 1.0f : factor) * rule.for_sample(spacing, out.max_radius.back());
@@ -210,7 +215,10 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     const auto& t = mesh.triangles[face];
     const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const float spacing = face_spacing(a, b, c);
-    FaceSampler fs{samples, limiter, face, a, b, c, frame->normal, frame->centroid, limiter.face_on_open_part(face),
+    const bool two_sided = limiter.face_on_open_part(face);
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const bool needle = !two_sided && (b - a).cross(c - a).norm() / longest < limiter.protrusion(); // 2 area / longest edge: its width
+    FaceSampler fs{samples, limiter, face, a, b, c, frame->normal, frame->centroid, two_sided, needle,
                    spacing, rule, radius_factor, eps, room, {}};
     const int64_t g = FaceSampler::kGrid;
     fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
