@@ -73,9 +73,9 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
     const Eigen::Vector3d c = p - r * n;
     // Whatever the walls near p say, a sphere that leaves the mesh's box by more than the
     // allowance pokes out of the mesh by more. The tests below assume that the centre's way
-    // enters the solid at p; on the edge face of a wall thinner than rounding can tell apart
-    // (assimp's regr01.obj: slivers 0.01 wide on a gable 0.01 thick), it may not, and at eight
-    // times the default allowance spheres of 172 units stood beside the model.
+    // enters the solid at p; on a sliver it may not (assimp's regr01.obj: faces 0.01 wide edging
+    // a gable 0.01 thick), and at eight times the default allowance spheres of 172 units stood
+    // beside the model.
     if (((c.array() - r) < reach_.min().array()).any() || ((c.array() + r) > reach_.max().array()).any()) return true;
     // The tangent point p is at distance r; a surface nearer than r - allowance means the
     // sphere pokes out there by more than the allowance.

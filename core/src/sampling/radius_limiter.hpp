@@ -31,7 +31,8 @@ public:
     /// p in the mesh's object frame. `two_sided`: the sample is on an open part and its sphere
     /// is centred at p, so every point of it is within r of the surface: the largest of
     /// two_sided_radius() x 2^(-k/2), k >= 0, that is at most r_max (a short ladder of radii).
-    /// `vertex`: the mesh vertex p is (~0u if none), whose faces the segment test can skip.
+    /// `vertex`: the mesh vertex p is (~0u if none), whose faces the segment test can skip; where
+    /// -n does not enter the solid at it (folded faces), the answer is min(allowance, r_max).
     /// `inside_face`: for a sample on a face, a point inside that face (its centroid): the segment
     /// test starts a little towards it, so that a sample on the face's edge is not tested from a
     /// point where the centre's direction only grazes the solid (object frame, model units).
