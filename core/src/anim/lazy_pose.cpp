@@ -1,5 +1,6 @@
 // Lazy refit (lazy_pose.hpp).
 #include "anim/lazy_pose.hpp"
+#include "geometry/vertex_faces.hpp"
 #include "mesh/vertex_normals.hpp"
 #include "tree/spheres_below.hpp"
 #include "sampling/encoding.hpp"
@@ -53,16 +54,8 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
     std::vector<uint8_t> kept(n, 1);
     // Vertex to faces, for the faces whose normals a vertex sums.
     const size_t nv = mesh.positions.size();
-    std::vector<uint32_t> face_start(nv + 1, 0), faces;
-    for (const Triangle& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) ++face_start[t[k] + 1];
-    for (size_t v = 0; v < nv; ++v) face_start[v + 1] += face_start[v];
-    faces.resize(face_start[nv]);
-    {
-        std::vector<uint32_t> at(face_start.begin(), face_start.end() - 1);
-        for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
-            for (int k = 0; k < 3; ++k) faces[at[mesh.triangles[f][k]]++] = f;
-    }
+    const detail::VertexFaces around = detail::vertex_faces(nv, mesh.triangles);
+    const std::vector<uint32_t>&face_start = around.start, &faces = around.faces;
     auto each_sample = [&](uint32_t first, uint32_t last, auto&& f) {
         for (uint32_t i = first; i < last; ++i)
             if (nodes[i].is_active())

@@ -8,6 +8,7 @@
 #include "query/solid.hpp"
 #include "query/node_slab.hpp"
 #include "query/triangle_tree.hpp"
+#include "geometry/vertex_faces.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -101,14 +102,9 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
     if (tree_.two_sided()) { // the faces two-sided spheres stand for (query/sample_piece.cpp)
         e.sphere_source.resize(tree_.sphere_count());
         for (size_t k = 0; k < e.sphere_source.size(); ++k) e.sphere_source[k] = doc.samples.sources[tree_.sample_index()[k]];
-        e.vertex_face_start.assign(e.positions.size() + 1, 0);
-        for (const Triangle& t : e.triangles)
-            for (uint32_t v : t) ++e.vertex_face_start[v + 1];
-        for (size_t v = 0; v < e.positions.size(); ++v) e.vertex_face_start[v + 1] += e.vertex_face_start[v];
-        e.vertex_faces.resize(e.vertex_face_start.back());
-        std::vector<uint32_t> fill(e.vertex_face_start.begin(), e.vertex_face_start.end() - 1);
-        for (uint32_t f = 0; f < nt; ++f)
-            for (uint32_t v : e.triangles[f]) e.vertex_faces[fill[v]++] = f;
+        detail::VertexFaces around = detail::vertex_faces(e.positions.size(), e.triangles);
+        e.vertex_face_start = std::move(around.start);
+        e.vertex_faces = std::move(around.faces);
     }
     exact_ = std::move(data);
     solid_ = std::make_shared<SolidData>(SolidData::build(tree_, *exact_, wall));

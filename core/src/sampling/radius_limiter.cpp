@@ -1,6 +1,7 @@
 // Caps sampling-sphere radii so that no sphere pokes out of the mesh by more than an allowance.
 #include "sampling/radius_limiter.hpp"
 #include "geometry/triangle_bvh.hpp"
+#include "geometry/vertex_faces.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,35 +29,27 @@ RadiusLimiter::RadiusLimiter(const TriangleMesh& mesh, double protrusion, double
     for (size_t f = 0; known && f < mesh.triangles.size(); ++f)
         if (mesh.on_open_part[f])
             for (uint32_t v : mesh.triangles[f]) open_part_[v] = 1;
-    // The faces around each vertex, as offsets into one list (counted, then filled).
-    auto in_fan = [&](size_t f) { return known && !mesh.on_open_part[f] && !mesh.copies_earlier_face(uint32_t(f)); };
-    fan_start_.assign(nv + 1, 0);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f)
-        if (in_fan(f))
-            for (uint32_t v : mesh.triangles[f]) ++fan_start_[v + 1];
-    for (size_t v = 0; v < nv; ++v) fan_start_[v + 1] += fan_start_[v];
-    fan_faces_.resize(fan_start_[nv]);
-    std::vector<uint32_t> fill(fan_start_.begin(), fan_start_.end() - 1);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f)
-        if (in_fan(f))
-            for (uint32_t v : mesh.triangles[f]) fan_faces_[fill[v]++] = uint32_t(f);
+    // The faces that make the solid around each vertex.
+    fan_ = detail::vertex_faces(nv, mesh.triangles, [&](uint32_t f) {
+        return known && !mesh.on_open_part[f] && !mesh.copies_earlier_face(f);
+    });
 }
 
 bool RadiusLimiter::enters_solid(uint32_t v, const Eigen::Vector3d& n) const {
-    if (v + 1 >= fan_start_.size() || fan_start_[v] == fan_start_[v + 1]) return true; // nothing to tell by
+    if (v + 1 >= fan_.start.size() || fan_.start[v] == fan_.start[v + 1]) return true; // nothing to tell by
     const Eigen::Vector3d& p = mesh_.positions[v];
     // A step far below every edge at v: the faces around it then look, from there, as the
     // infinite cone they span at v, whose signed solid angle is in (0, 4 pi) inside and in
     // (-4 pi, 0) outside (faces wound counter-clockwise seen from outside).
     double shortest = std::numeric_limits<double>::infinity();
-    for (uint32_t k = fan_start_[v]; k < fan_start_[v + 1]; ++k)
-        for (uint32_t w : mesh_.triangles[fan_faces_[k]])
+    for (uint32_t k = fan_.start[v]; k < fan_.start[v + 1]; ++k)
+        for (uint32_t w : mesh_.triangles[fan_.faces[k]])
             if (w != v) shortest = std::min(shortest, (mesh_.positions[w] - p).norm());
     if (!(shortest > 0) || !std::isfinite(shortest)) return true;
     const Eigen::Vector3d q = p - 1e-4 * shortest * n;
     double angle = 0;
-    for (uint32_t k = fan_start_[v]; k < fan_start_[v + 1]; ++k) {
-        const Triangle& t = mesh_.triangles[fan_faces_[k]];
+    for (uint32_t k = fan_.start[v]; k < fan_.start[v + 1]; ++k) {
+        const Triangle& t = mesh_.triangles[fan_.faces[k]];
         // Van Oosterom and Strackee: tan(omega / 2) = a.(b x c) / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|).
         const Eigen::Vector3d a = mesh_.positions[t[0]] - q, b = mesh_.positions[t[1]] - q, c = mesh_.positions[t[2]] - q;
         const double la = a.norm(), lb = b.norm(), lc = c.norm();

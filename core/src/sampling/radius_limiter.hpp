@@ -1,6 +1,7 @@
 #pragma once
 // Caps sampling-sphere radii so that no sphere pokes out of the mesh by more than an allowance.
 #include "spt/mesh.hpp"
+#include "geometry/vertex_faces.hpp"
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <memory>
@@ -63,7 +64,7 @@ private:
     double protrusion_;
     double two_sided_radius_;
     Eigen::AlignedBox3d reach_;      // the mesh's box grown by the allowance: no sphere may leave it
-    std::vector<uint32_t> fan_start_, fan_faces_; // per vertex, its faces of closed parts (copies left out)
+    detail::VertexFaces fan_;        // per vertex, its faces of closed parts (copies left out)
     std::vector<uint8_t> open_part_; // per vertex: one of its faces is on an open part (TriangleMesh::on_open_part)
 };
 
