@@ -201,9 +201,8 @@ TEST(RadiusLimiter, Regr01sNeedlesAndTheVerticesTheyFoldKeepTheirCentresInTheSol
     for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
         if (mesh.on_open_part[f] || mesh.copies_earlier_face(f)) continue;
         closed.push_back(f);
-        const auto& t = mesh.triangles[f];
-        const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
-        needle[f] = (b - a).cross(c - a).norm() / std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) < allowance;
+        const std::optional<FaceFrame> frame = face_frame(mesh, f);
+        needle[f] = frame && frame->width < allowance;
     }
     const SampleSet& s = doc.samples;
     size_t needles = 0, vertices = 0;

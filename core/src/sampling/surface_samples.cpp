@@ -204,7 +204,8 @@ std::optional<FaceFrame> face_frame(const TriangleMesh& mesh, uint32_t face) {
     const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const Eigen::Vector3d fn = (b - a).cross(c - a);
     if (!(fn.norm() > 0)) return std::nullopt;
-    return FaceFrame{fn.normalized().cast<float>(), (a + b + c) / 3};
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    return FaceFrame{fn.normalized().cast<float>(), (a + b + c) / 3, fn.norm() / longest};
 }
 
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
@@ -216,8 +217,7 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     const Eigen::Vector3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const float spacing = face_spacing(a, b, c);
     const bool two_sided = limiter.face_on_open_part(face);
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    const bool needle = !two_sided && (b - a).cross(c - a).norm() / longest < limiter.protrusion(); // 2 area / longest edge: its width
+    const bool needle = !two_sided && frame->width < limiter.protrusion();
     FaceSampler fs{samples, limiter, face, a, b, c, frame->normal, frame->centroid, two_sided, needle,
                    spacing, rule, radius_factor, eps, room, {}};
     const int64_t g = FaceSampler::kGrid;

@@ -36,11 +36,14 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
 constexpr double kTwoSidedCoverage = 0.9;
 
 /// What a face sample of triangle `face` takes from its face: the unit face normal (float, as
-/// stored) and the centroid (object frame, model units), where the radius limiter's segment
-/// test starts. Empty for a degenerate face, which gets no face samples.
+/// stored), the centroid (object frame, model units), where the radius limiter's segment test
+/// starts, and the face's width (twice its area over its longest edge, model units): a one-sided
+/// face narrower than the allowance is a needle, whose spheres keep the limiter's floor. Empty
+/// for a degenerate face, which gets no face samples.
 struct FaceFrame {
     Eigen::Vector3f normal;
     Eigen::Vector3d centroid;
+    double width;
 };
 std::optional<FaceFrame> face_frame(const TriangleMesh& mesh, uint32_t face);
 
