@@ -210,13 +210,16 @@ TEST(DeformingModel, DistanceSeesTheDeformedPoseFullOrLazy) {
 }
 
 // The exact level's triangle tree is refit, not rebuilt: every triangle corner stays inside the
-// box and the ball of every node above it, in the float the walk tests.
+// box and the ball of every node above it, in the float the walk tests. The bind pose's triangle
+// planes (the distance walk's bound of a leaf) are dropped, never left behind.
 TEST(DeformingModel, TheTriangleTreeHoldsItsTrianglesAtEveryPose) {
     DeformingModel dm(bar().doc, bar().mesh);
+    EXPECT_EQ(detail::exact_of(dm.model()).tri_plane.size(), 4 * detail::exact_of(dm.model()).triangles.size());
     for (double t : {0.25, 1.0}) {
         dm.pose(&bar().mesh->clips[0], t);
         const ExactData& e = detail::exact_of(dm.model());
         ASSERT_FALSE(e.tri_nodes.empty());
+        EXPECT_TRUE(e.tri_plane.empty()) << t;
         for (size_t i = 0; i < e.tri_nodes.size(); ++i) {
             // The leaves below node i: the next nodes up to the end of its subtree.
             std::vector<size_t> stack{i};

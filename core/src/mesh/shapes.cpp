@@ -60,6 +60,26 @@ TriangleMesh make_torus(double ring, double tube, int nu, int nv) {
     return finish("torus", std::move(p), std::move(t));
 }
 
+TriangleMesh make_ball(double radius, int nu, int nv) {
+    std::vector<Eigen::Vector3d> p{{0, 0, radius}, {0, 0, -radius}}; // the poles
+    std::vector<Triangle> t;
+    for (int j = 1; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
+            const double u = 2 * kPi * i / nu, v = kPi * j / nv;
+            p.emplace_back(radius * std::sin(v) * std::cos(u), radius * std::sin(v) * std::sin(u), radius * std::cos(v));
+        }
+    auto id = [&](int i, int j) { return uint32_t(2 + (j - 1) * nu + (i + nu) % nu); }; // ring j = 1 .. nv - 1
+    for (int i = 0; i < nu; ++i) {
+        t.push_back({0, id(i, 1), id(i + 1, 1)});
+        t.push_back({1, id(i + 1, nv - 1), id(i, nv - 1)});
+        for (int j = 1; j + 1 < nv; ++j) {
+            t.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+            t.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+        }
+    }
+    return finish("ball", std::move(p), std::move(t));
+}
+
 TriangleMesh make_box(const Eigen::Vector3d& half, int n) {
     std::vector<Eigen::Vector3d> p;
     std::vector<Triangle> t;

@@ -10,6 +10,9 @@ inline constexpr double kPi = 3.14159265358979323846;
 
 /// Torus around the z axis: ring radius `ring`, tube radius `tube`, 2*nu*nv triangles.
 TriangleMesh make_torus(double ring, double tube, int nu, int nv);
+/// Ball of radius `radius` about the origin, faceted as a globe: nu meridians, nv bands from
+/// pole to pole (2 nu (nv - 1) triangles).
+TriangleMesh make_ball(double radius, int nu, int nv);
 /// Axis-aligned box of the given half extents, each face an n x n grid (12 n^2 triangles).
 TriangleMesh make_box(const Eigen::Vector3d& half, int n);
 /// Open square sheet in the plane z = 0, side `size`, facing +z, an n x n grid (2 n^2 triangles).

@@ -34,6 +34,28 @@ void fit_triangle_spheres(ExactData& e) {
     }
 }
 
+// Per triangle, its plane in float, and how far off it the corners lie at most (the distance
+// walk bounds a leaf by its triangles' planes).
+void fit_triangle_planes(ExactData& e) {
+    const size_t nt = e.triangles.size();
+    e.tri_plane.assign(nt * 4, 0);
+    double pad = 0;
+    for (uint32_t f = 0; f < nt; ++f) {
+        const auto& t = e.triangles[f];
+        const Eigen::Vector3d &a = e.positions[t[0]], &b = e.positions[t[1]], &c = e.positions[t[2]];
+        const Eigen::Vector3d n = (b - a).cross(c - a);
+        const double length = n.norm();
+        if (!(length > 0) || !std::isfinite(length)) continue; // no plane: a gap of 0 (prunes nothing)
+        // The stored values, read back (float_rounded: a cast there and back can be folded away).
+        const Eigen::Vector3d nf = detail::float_rounded(n / length);
+        const double d = double(detail::to_float(nf.dot((a + b + c) / 3.0)));
+        for (int k = 0; k < 3; ++k) e.tri_plane[4 * f + k] = float(nf[k]);
+        e.tri_plane[4 * f + 3] = float(d);
+        for (const Eigen::Vector3d* p : {&a, &b, &c}) pad = std::max(pad, std::abs(nf.dot(*p) - d));
+    }
+    e.plane_pad = round_up(pad);
+}
+
 // Grows extent and reach to hold every triangle (local positions, `o` the local origin).
 void measure_triangles(const ExactData& e, const Eigen::Vector3d& o, double& extent, double& reach) {
     for (const Triangle& t : e.triangles)
@@ -84,6 +106,7 @@ CollisionModel::CollisionModel(const SptDocument& doc, const TriangleMesh& mesh,
         if (mesh.copies_earlier_face(f)) e.closed[f] = 0;
     const size_t nt = e.triangles.size();
     fit_triangle_spheres(e);
+    fit_triangle_planes(e);
     measure_triangles(e, o, extent_, reach_);
     detail::build_triangle_tree(e);
     // Only the spheres of closed parts wall in a solid at the sphere levels, as only closed
@@ -185,6 +208,9 @@ void CollisionModel::place_triangle_corners(const std::vector<Eigen::Vector3d>& 
     // Shared with copies of this model: those keep the pose they had.
     auto e = exact_.use_count() == 1 ? std::const_pointer_cast<ExactData>(exact_) : std::make_shared<ExactData>(*exact_);
     for (size_t v = 0; v < e->positions.size(); ++v) e->positions[v] = positions[v] - origin();
+    // The triangles' planes are only a tighter bound for the distance walk; fitted at every pose
+    // they cost a third of a lazy exact update (deforming_bench), so a posed mesh goes without.
+    e->tri_plane.clear(), e->plane_pad = 0;
     exact_ = std::move(e);
     // The grids were made for the bind pose; with the triangles, containment asks them instead.
     if (solid_) {
@@ -226,7 +252,7 @@ size_t CollisionModel::memory_bytes() const {
     return tree_.memory_bytes() + (node_slab_.capacity() + node_max_radius_.capacity()) * sizeof(float) + e.positions.capacity() * sizeof(Eigen::Vector3d) +
            e.triangles.capacity() * sizeof(Triangle) +
            e.tri_nodes.capacity() * sizeof(TriangleNode) + e.tri_order.capacity() * sizeof(uint32_t) +
-           e.tri_sphere.capacity() * sizeof(float) + e.closed.capacity() +
+           e.tri_sphere.capacity() * sizeof(float) + e.tri_plane.capacity() * sizeof(float) + e.closed.capacity() +
            (e.sphere_source.capacity() + e.vertex_face_start.capacity() + e.vertex_faces.capacity()) * sizeof(uint32_t) +
            detail::solid_of(*this).memory_bytes();
 }

@@ -12,6 +12,7 @@
 #include "query/triangle_tree.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace spt::detail {
 namespace {
@@ -83,6 +84,36 @@ double centroid_gap(const Eigen::Vector3d* t, const Eigen::Vector3d* u) {
     return n > 0 ? (u_near - t_far) / n : 0;
 }
 
+// A lower bound of the distance between box `other` and a leaf's triangles, each triangle lying
+// in its plane (`plane_of`: unit normal and offset, ExactData::tri_plane; `pad`: how far off
+// it): the least of the box's gaps from those planes, or `floor` if that is more. A curved
+// patch's triangles tilt away from its box's slab, so their planes bound it more tightly.
+template <class PlaneOf>
+float planes_gap(const ExactData& e, const TriangleNode& leaf, const Obb& other, float pad, float floor,
+                 PlaneOf&& plane_of) {
+    const Eigen::Vector3f c = v3(other.center);
+    float least = std::numeric_limits<float>::infinity();
+    for (uint32_t k = 0; k < leaf.count && least > floor; ++k) {
+        const float* p = plane_of(e.tri_order[leaf.first + k]);
+        const Eigen::Vector3f n(p[0], p[1], p[2]);
+        least = std::min(least, std::abs(n.dot(c) - p[3]) - shadow(other, n) - pad);
+    }
+    return std::max(floor, least);
+}
+
+// A lower bound of the distance between triangle-tree nodes na (A's) and nb (B's, box bb in A's
+// frame) that the boxes leave in doubt (`gap` below `stop`), from a leaf's triangles' planes
+// (where its model has them: not at a deformed pose). Out of line, so that the bound's common path stays small enough to inline. A leaf's planes
+// tighten its slab by at most about the slab's thickness; where more is needed they are not made.
+[[gnu::noinline]] float leaf_planes_gap(const ExactData& ea, const TriangleNode& na, const ExactData& eb,
+                                        const TriangleNode& nb, const Obb& bb, MovedB& moved, float gap, float stop) {
+    if (nb.is_leaf() && !eb.tri_plane.empty() && stop - gap < 2 * bb.half[0])
+        gap = planes_gap(eb, nb, na.box(), eb.plane_pad, gap, [&](uint32_t t) { return moved.tri_plane(t); });
+    if (gap < stop && na.is_leaf() && !ea.tri_plane.empty() && stop - gap < 2 * na.half[0])
+        gap = planes_gap(ea, na, bb, ea.plane_pad, gap, [&](uint32_t t) { return &ea.tri_plane[4 * size_t(t)]; });
+    return gap;
+}
+
 // A leaf's triangles, their corners (one frame), unit normals and bounding spheres.
 struct LeafTriangles {
     static constexpr int kMost = int(kLeafTriangles);
@@ -122,7 +153,9 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         const float centres = (v3(an[i].center) - v3(bb.center)).norm() - an[i].radius - bn[j].radius;
         const float stop = float(std::min(enough, 1e30)) + f.margin;
         if (centres >= stop) return centres - f.margin;
-        return box_gap(an[i].box(), bb, centres, stop) - f.margin;
+        const float gap = box_gap(an[i].box(), bb, centres, stop);
+        if (gap >= stop || !(an[i].is_leaf() || bn[j].is_leaf())) return gap - f.margin;
+        return leaf_planes_gap(ea, an[i], eb, bn[j], moved.tri_box(j), moved, gap, stop) - f.margin;
     };
     double best = options.max_distance;
     // A pair is worth a visit while it could beat the best by more than the allowances.

@@ -46,6 +46,10 @@ struct ExactData {
     std::vector<TriangleNode> tri_nodes;      ///< root first, depth-first (the left child follows its parent)
     std::vector<uint32_t> tri_order;          ///< triangle indices; a leaf holds tri_order[first, first + count)
     std::vector<float> tri_sphere;            ///< per triangle: centre xyz and radius of a bounding sphere
+    /// Per triangle: its plane, unit normal xyz and offset d (n . x = d), in float; a zero normal
+    /// for a triangle without area. Empty at a deformed pose (the distance walk then goes without).
+    std::vector<float> tri_plane;
+    float plane_pad = 0;                      ///< the farthest any corner lies off its float plane
     size_t degenerate_triangles = 0;
     // The sphere level's patches of two-sided samples (query/sample_piece.cpp); empty when no
     // sphere is two-sided.

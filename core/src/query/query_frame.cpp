@@ -79,6 +79,7 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
     if (exact) {
         const size_t nt = detail::exact_of(b).triangles.size();
         if (s.btri.size() < 4 * nt) s.btri.resize(4 * nt), s.tri_stamp.resize(nt, 0);
+        if (s.bplane.size() < 4 * nt) s.bplane.resize(4 * nt), s.plane_stamp.resize(nt, 0);
         const size_t nn = detail::exact_of(b).tri_nodes.size();
         if (s.bboxes.size() < nn) s.bboxes.resize(nn), s.bbox_stamp.resize(nn, 0);
         if (s.bcentres.size() < nn) s.bcentres.resize(nn), s.bcentre_stamp.resize(nn, 0);
@@ -86,6 +87,7 @@ void prepare_scratch(detail::ScratchBuffers& s, const CollisionModel& a, const C
     if (++s.epoch == 0) { // wrapped: forget every stamp
         std::fill(s.vert_stamp.begin(), s.vert_stamp.end(), 0);
         std::fill(s.tri_stamp.begin(), s.tri_stamp.end(), 0);
+        std::fill(s.plane_stamp.begin(), s.plane_stamp.end(), 0);
         std::fill(s.bbox_stamp.begin(), s.bbox_stamp.end(), 0);
         std::fill(s.bcentre_stamp.begin(), s.bcentre_stamp.end(), 0);
         std::fill(s.leaf_stamp.begin(), s.leaf_stamp.end(), 0);

@@ -69,6 +69,17 @@ struct MovedB {
         }
         return out;
     }
+    // The plane of B's triangle `tri`: unit normal xyz, offset (ExactData::tri_plane).
+    const float* tri_plane(uint32_t tri) {
+        float* out = &s.bplane[4 * size_t(tri)];
+        if (s.plane_stamp[tri] != s.epoch) {
+            s.plane_stamp[tri] = s.epoch;
+            const float* in = &e.tri_plane[4 * size_t(tri)];
+            const Eigen::Vector3f n = f.R * Eigen::Vector3f(in[0], in[1], in[2]);
+            out[0] = n.x(), out[1] = n.y(), out[2] = n.z(), out[3] = in[3] + n.dot(f.t);
+        }
+        return out;
+    }
     // The centre and slab axis (axis 0) of node j of B's triangle tree (as tri_box's, without
     // the other axes).
     const ScratchBuffers::MovedNode& tri_node(uint32_t j) {

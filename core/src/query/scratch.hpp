@@ -71,6 +71,8 @@ struct ScratchBuffers {
     std::vector<uint32_t> vert_stamp;
     std::vector<float> btri;                 // B's triangle bounding spheres in A's frame (lazy)
     std::vector<uint32_t> tri_stamp;
+    std::vector<float> bplane;               // B's triangle planes in A's frame (lazy, the distance walk)
+    std::vector<uint32_t> plane_stamp;
     std::vector<Obb> bboxes;                 // boxes of B's triangle-tree nodes in A's frame (lazy, box tests only)
     std::vector<uint32_t> bbox_stamp;
     struct MovedNode {
