@@ -103,8 +103,9 @@ float planes_gap(const ExactData& e, const TriangleNode& leaf, const Obb& other,
 
 // A lower bound of the distance between triangle-tree nodes na (A's) and nb (B's, box bb in A's
 // frame) that the boxes leave in doubt (`gap` below `stop`), from a leaf's triangles' planes
-// (where its model has them: not at a deformed pose). Out of line, so that the bound's common path stays small enough to inline. A leaf's planes
-// tighten its slab by at most about the slab's thickness; where more is needed they are not made.
+// (where its model has them: not at a deformed pose). Out of line, so that the bound's common
+// path stays small enough to inline. A plane along the leaf's slab axis tightens the slab by
+// its thickness at most, so where more is needed the planes are not tried.
 [[gnu::noinline]] float leaf_planes_gap(const ExactData& ea, const TriangleNode& na, const ExactData& eb,
                                         const TriangleNode& nb, const Obb& bb, MovedB& moved, float gap, float stop) {
     if (nb.is_leaf() && !eb.tri_plane.empty() && stop - gap < 2 * bb.half[0])
