@@ -276,7 +276,7 @@ TEST(DistanceExact, SheetsSideBySideInOnePlaneGiveTheGapOfTheirNearestTriangles)
 // A small part near the middle of a faceted ball: every facet is about as far, and the box of a
 // leaf of curved facets has a slab that bounds the leaf short of its facets' own planes. Bounded
 // by the boxes alone, the walk took each such leaf down the whole small part (3,452 node pairs a
-// pose for assimp's regr01.dae inside a globe, 181 with the planes).
+// pose for assimp's regr01.dae inside a globe, 210 with the planes).
 TEST(DistanceExact, ASmallPartInsideAFacetedBallIsBoundedByTheFacetsPlanes) {
     const auto ball = make_object(make_ball(1.0, 32, 16));
     const auto part = make_object(make_torus(0.02, 0.006, 8, 4));
