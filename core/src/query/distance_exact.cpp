@@ -156,7 +156,7 @@ void exact_gap(const CollisionModel& a, const CollisionModel& b, const Pose& b_i
         if (centres >= stop) return centres - f.margin;
         const float gap = box_gap(an[i].box(), bb, centres, stop);
         if (gap >= stop || !(an[i].is_leaf() || bn[j].is_leaf())) return gap - f.margin;
-        return leaf_planes_gap(ea, an[i], eb, bn[j], moved.tri_box(j), moved, gap, stop) - f.margin;
+        return leaf_planes_gap(ea, an[i], eb, bn[j], bb, moved, gap, stop) - f.margin;
     };
     double best = options.max_distance;
     // A pair is worth a visit while it could beat the best by more than the allowances.
