@@ -134,6 +134,12 @@ void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std:
 /// positions from pose_vertices, vertex normals recomputed as import computes them.
 TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time);
 
+/// The mesh posed along every clip, `step` seconds apart from each clip's start, and at its end
+/// (posed_mesh): the poses at which ConvertOptions::poses limits a deforming object's spheres.
+/// A clip longer than `max_per_clip` steps gets that many poses, spread evenly (memory stays
+/// bounded on long captures). Empty without clips; Error(Usage) unless step > 0.
+std::vector<TriangleMesh> clip_poses(const AnimatedMesh& mesh, double step, size_t max_per_clip = 240);
+
 /// How much a clip stretches the mesh's surface (docs/deforming.md, "Stretch"): over poses every
 /// 1/frames_per_second seconds of the clip (its ends included), the largest ratio of an edge's
 /// posed length to its bind length, when and where. Coverage gaps between sampling spheres grow

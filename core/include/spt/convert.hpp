@@ -22,6 +22,12 @@ struct ConvertOptions {
     /// of the tolerance if set, else kDefaultProtrusion x the mesh diagonal. Two-sided spheres (open
     /// parts) take up to this, or without it a quarter of the tolerance (docs/sampling.md).
     std::optional<double> protrusion;
+    /// The mesh at further poses (a deforming object's clips; spt::clip_poses gives them): the same
+    /// vertices and triangles, moved, with the normals of that pose. Each one-sided sampling
+    /// sphere's radius is then limited at every one of them as at the mesh itself, so that it
+    /// pokes out by at most the allowance wherever the clips take the surface, not only at the
+    /// bind pose (docs/sampling.md, "The promise on a deforming object"). Empty: the mesh alone.
+    std::vector<TriangleMesh> poses;
     std::string tree_name = "default"; ///< name of the tree in the document
     /// Without a tolerance: if vertex samples alone would leave the surface uncovered deeper
     /// than kAutoTolerance x the diagonal, or leave a face of an open part partly outside every

@@ -68,6 +68,22 @@ TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time)
     return m;
 }
 
+std::vector<TriangleMesh> clip_poses(const AnimatedMesh& mesh, double step, size_t max_per_clip) {
+    if (!(step > 0) || !std::isfinite(step)) throw Error(ErrorKind::Usage, "the step between poses must be positive");
+    std::vector<TriangleMesh> poses;
+    for (const Clip& clip : mesh.clips) {
+        // A hair under whole steps does not add a pose a rounding away from the end.
+        const double whole = std::ceil(clip.duration / step - 1e-9);
+        const size_t most = std::max<size_t>(max_per_clip, 2) - 1; // steps, at most
+        const bool capped = !(whole <= double(most));
+        const size_t steps = capped ? most : size_t(whole);
+        const double dt = capped ? clip.duration / double(most) : step;
+        for (size_t k = 0; k <= steps; ++k)
+            poses.push_back(posed_mesh(mesh, &clip, std::min(clip.duration, double(k) * dt)));
+    }
+    return poses;
+}
+
 void pose_vertices(const AnimatedMesh& mesh, const Clip* clip, double time, std::vector<Eigen::Vector3d>& positions) {
     const Rig& rig = mesh.rig;
     if (rig.influences.empty()) { // nothing animates it

@@ -92,12 +92,13 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     auto t0 = Clock::now();
     const int threads = options.threads > 0 ? options.threads : detail::machine_threads();
     // The limiter's triangle tree and the mesh's hash (for the file) both only read the mesh.
-    std::unique_ptr<const RadiusLimiter> limiter_made;
+    std::unique_ptr<RadiusLimiter> limiter_made;
     MeshInfo info;
     detail::parallel_for(2, threads, [&](size_t k, int) {
-        if (k == 0) limiter_made = std::make_unique<const RadiusLimiter>(mesh, protrusion, two_sided_radius);
+        if (k == 0) limiter_made = std::make_unique<RadiusLimiter>(mesh, protrusion, two_sided_radius);
         else info = info_of(mesh);
     }, options.tasks);
+    for (const TriangleMesh& pose : options.poses) limiter_made->add_pose(pose);
     const RadiusLimiter& limiter = *limiter_made;
     stage(options, mesh, nullptr);
     const SampleSet vertex_samples = sample_vertices(mesh, limiter, options.build.radius, threads, options.cancel, options.tasks);

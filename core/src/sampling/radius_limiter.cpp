@@ -1,5 +1,7 @@
 // Caps sampling-sphere radii so that no sphere pokes out of the mesh by more than an allowance.
 #include "sampling/radius_limiter.hpp"
+#include "sampling/encoding.hpp"
+#include "spt/error.hpp"
 #include "geometry/triangle_bvh.hpp"
 #include "geometry/vertex_faces.hpp"
 #include <algorithm>
@@ -86,7 +88,7 @@ bool RadiusLimiter::protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n
 }
 
 float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, float r_max, bool two_sided,
-                           uint32_t vertex, const Eigen::Vector3d* inside_face) const {
+                           uint32_t vertex, const Eigen::Vector3d* inside_face, const FacePoint* on_face) const {
     // Where inside and outside are not defined, no solid may be invented: a sphere of an open
     // part is centred on its surface and stays within the allowance of it, on both sides.
     if (two_sided) {
@@ -99,7 +101,38 @@ float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, 
         while (k < 4000 && top * std::exp2(-0.5 * k) > r_max) ++k;
         return float(top * std::exp2(-0.5 * k));
     }
-    const Eigen::Vector3d n = nf.cast<double>();
+    float r = limit_here(p, nf.cast<double>(), r_max, vertex, inside_face);
+    // The sample carried to each other pose, with the normal it has there (snapped as a deformed
+    // model's are): a sphere that fits at the bind pose can poke through a limb that the clip
+    // squeezes or bends.
+    for (const auto& pose : poses_) {
+        const TriangleMesh& m = pose->mesh_;
+        if (vertex != ~0u) {
+            if (vertex >= m.positions.size() || !m.normal_valid[vertex]) continue;
+            const Eigen::Vector3f pn = decode_normal(encode_normal(m.normals[vertex].cast<float>()));
+            r = pose->limit_here(m.positions[vertex], pn.cast<double>(), r, vertex, nullptr);
+        } else if (on_face && on_face->face < m.triangles.size()) {
+            const auto& t = m.triangles[on_face->face];
+            const Eigen::Vector3d a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+            const Eigen::Vector3d fn = (b - a).cross(c - a);
+            if (!(fn.norm() > 0)) continue; // collapsed at this pose: nothing to poke out of
+            const Eigen::Vector3f pn = decode_normal(encode_normal(fn.normalized().cast<float>()));
+            const Eigen::Vector3d centroid = (a + b + c) / 3;
+            r = pose->limit_here(a + on_face->s * (b - a) + on_face->t * (c - a), pn.cast<double>(), r, ~0u, &centroid);
+        }
+    }
+    return r;
+}
+
+void RadiusLimiter::add_pose(const TriangleMesh& posed) {
+    if (posed.positions.size() != mesh_.positions.size() || posed.triangles != mesh_.triangles ||
+        posed.normals.size() != posed.positions.size() || posed.normal_valid.size() != posed.positions.size())
+        throw Error(ErrorKind::Usage, mesh_.name + ": a pose to limit radii at is not this mesh moved");
+    poses_.push_back(std::make_unique<RadiusLimiter>(posed, protrusion_, two_sided_radius_));
+}
+
+float RadiusLimiter::limit_here(const Eigen::Vector3d& p, const Eigen::Vector3d& n, float r_max, uint32_t vertex,
+                                const Eigen::Vector3d* inside_face) const {
     // On a face's edge the centre's direction can run along the neighbouring face (a box's edge)
     // and, tipped a hair outwards by the normal's rounding, leave the solid at p itself: past the
     // skipped start, the segment then crosses nothing, and a neighbour smaller than the sphere

@@ -13,6 +13,12 @@ namespace detail {
 class TriangleBvh;
 }
 
+/// Where a face sample lies: face `face`, at a + s (b - a) + t (c - a) of its corners a, b, c.
+struct FacePoint {
+    uint32_t face;
+    double s, t;
+};
+
 /// Limits sampling-sphere radii so that no sphere pokes out of the mesh by more than a
 /// protrusion allowance: a sphere wider than a thin part, or than a sharp edge allows,
 /// would report contacts that are not there. On an open part (faces joined by edges with a
@@ -37,8 +43,18 @@ public:
     /// `inside_face`: for a sample on a face, a point inside that face (its centroid): the segment
     /// test starts a little towards it, so that a sample on the face's edge is not tested from a
     /// point where the centre's direction only grazes the solid (object frame, model units).
+    /// `on_face`: where a face sample lies, so that it is found again at the other poses (add_pose).
+    /// With other poses, a one-sided sphere's r is also the largest (within 1%) that protrudes at
+    /// most the allowance at each, its sample carried with the surface: a vertex's, with the
+    /// vertex and its posed normal; a face's, with its face at the same s and t.
     float limit(const Eigen::Vector3d& p, const Eigen::Vector3f& n, float r_max, bool two_sided,
-                uint32_t vertex = ~0u, const Eigen::Vector3d* inside_face = nullptr) const;
+                uint32_t vertex = ~0u, const Eigen::Vector3d* inside_face = nullptr,
+                const FacePoint* on_face = nullptr) const;
+    /// Limits every later one-sided sphere at `posed` too: the mesh at another pose (the same
+    /// triangles and vertices, moved; normals as at that pose, as posed_mesh gives them), so
+    /// that a deforming object's spheres keep the allowance at its clips' poses, not only at the
+    /// bind pose (docs/sampling.md, "The promise on a deforming object"). Kept by reference.
+    void add_pose(const TriangleMesh& posed);
     /// True if `vertex` belongs to an open part (one of its faces does; TriangleMesh::on_open_part,
     /// unknown counts as open).
     bool on_open_part(uint32_t vertex) const { return vertex >= open_part_.size() || open_part_[vertex]; }
@@ -54,6 +70,9 @@ public:
     const TriangleMesh& mesh() const { return mesh_; }
 
 private:
+    // limit at this pose alone.
+    float limit_here(const Eigen::Vector3d& p, const Eigen::Vector3d& n, float r_max, uint32_t vertex,
+                     const Eigen::Vector3d* inside_face) const;
     bool protrudes(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double r, uint32_t vertex,
                    const Eigen::Vector3d& start) const;
     // Whether the way from vertex v's point along -n enters its closed part's solid: the signed
@@ -66,6 +85,7 @@ private:
     Eigen::AlignedBox3d reach_;      // the mesh's box grown by the allowance: no sphere may leave it
     detail::VertexFaces fan_;        // per vertex, its faces of closed parts (copies left out)
     std::vector<uint8_t> open_part_; // per vertex: one of its faces is on an open part (TriangleMesh::on_open_part)
+    std::vector<std::unique_ptr<RadiusLimiter>> poses_; // add_pose: the mesh at other poses
 };
 
 } // namespace spt

@@ -155,8 +155,9 @@ struct FaceSampler {
         if (radius_at.size() >= room) throw TooManySamples{radius_at.size() + 1};
         const Eigen::Vector3d p = point(i, j); // on the face: limited there, stored local in float
         const float search = search_radius(rule, spacing, two_sided);
+        const FacePoint where{face, double(i) / kGrid, double(j) / kGrid};
         const float cap = limiter.limit(p, normal, needle ? std::min(search, float(limiter.protrusion())) : search,
-                                        two_sided, ~0u, &centroid);
+                                        two_sided, ~0u, &centroid, &where);
         out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit | (two_sided ? kTwoSidedBit : 0), spacing, cap);
         // An active node of two-sided samples keeps their own radius (radius_class.hpp).
         const float r = (two_sided ? 1.0f : factor) * rule.for_sample(spacing, out.max_radius.back());
