@@ -37,6 +37,8 @@ struct ConvertArgs {
     int motion_steps = 0;
     uint32_t leaf_size = 8;
     double radius = 0, radius_scale = 1.0, tolerance = 0, timeout = 600;
+    double protrusion = 0; // --protrusion, model units (0: the default)
+    double clip_step = 0;  // --clip-poses, seconds (0: radii limited at the bind pose alone)
     int jobs = 0, threads = 0; // threads: per file; 0 until run_convert settles it
     bool force = false, quiet = false, append = false, vertices_only = false, times = false;
 };
@@ -126,6 +128,17 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     opt.build.radius.fixed = float(a.radius);
     opt.build.radius.scale = float(a.radius_scale);
     if (a.tolerance > 0) opt.tolerance = a.tolerance;
+    if (a.protrusion > 0) opt.protrusion = a.protrusion;
+    std::ostringstream clip_note; // printed with the report, below the summary line
+    if (a.clip_step > 0) {
+        if (animated && !animated->clips.empty()) {
+            opt.poses = clip_poses(*animated, a.clip_step);
+            clip_note << "  clip poses: radii limited at " << opt.poses.size() << " poses of " << animated->clips.size()
+                      << " clip" << (animated->clips.size() == 1 ? "" : "s") << " as well as the bind pose\n";
+        } else {
+            clip_note << "  note: " << in << " has no clips; --clip-poses limits radii at the bind pose alone\n";
+        }
+    }
     opt.threads = a.threads;
     opt.build.threads = a.threads; // trees built here too (--append, trees of a recipe without one)
     opt.auto_tolerance = !a.vertices_only;
@@ -171,6 +184,7 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
               << " duplicates); " << r.components << " component"
               << (r.components == 1 ? "" : "s") << ", " << (r.closed ? "closed" : "not closed") << "; "
               << r.boundary_edges << " boundary, " << r.nonmanifold_edges << " non-manifold edges\n";
+    std::cerr << clip_note.str();
     if (a.times)
         std::cerr << "  time: import " << fmt(import_secs) << " s, sampling " << fmt(st.sample_seconds) << " s, tree "
                   << fmt(st.build_seconds) << " s, save " << fmt(save_secs) << " s (" << a.threads << " thread"
@@ -321,6 +335,15 @@ Action add_convert_command(CLI::App& app) {
         ->check(finite_positive());
     c->add_option("--tolerance", a->tolerance, "Add face samples so no surface gap is deeper than EPS (model units)")
         ->check(finite_positive());
+    c->add_option("--protrusion", a->protrusion,
+                  "How far a sampling sphere may poke out of the surface, model units (default: an eighth of "
+                  "--tolerance if given, else 0.25% of the diagonal)")
+        ->check(finite_positive());
+    auto* clip_step = c->add_option("--clip-poses", a->clip_step,
+                                    "Limit the spheres' radii at poses STEP seconds apart along every clip too, not "
+                                    "only at the bind pose, so that none pokes out by more than the allowance where "
+                                    "a clip squeezes or bends the surface (animated meshes; docs/deforming.md)")
+                          ->check(finite_positive());
     c->add_flag("--vertices-only", a->vertices_only,
                 "Sample vertices only (the paper), even where that leaves holes; otherwise faces are sampled "
                 "automatically when vertex gaps exceed 0.5% of the diagonal");
@@ -349,7 +372,8 @@ Action add_convert_command(CLI::App& app) {
         ->check(finite_in(0, std::numeric_limits<double>::max(), "of seconds, 0 or more"));
     c->add_flag("-f,--force", a->force, "Overwrite existing outputs (with --append: replace a same-named tree)");
     c->add_flag("--append", a->append,
-                "Add a tree (--tree-name) over the samples of an existing OUT.spt made from the same mesh");
+                "Add a tree (--tree-name) over the samples of an existing OUT.spt made from the same mesh")
+        ->excludes(clip_step);
     c->add_flag("-q,--quiet", a->quiet, "Print only failures and the summary");
     c->add_flag("--times", a->times,
                 "Print each file's stage times: import, sampling (with radius limiting), tree, save");

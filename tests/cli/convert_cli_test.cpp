@@ -178,7 +178,9 @@ TEST(ConvertCli, UsageErrorsExitOne) {
           "convert " + torus + " --bounds round", "convert " + torus + " --radius -1",
           "convert " + torus + " --tolerance nan", "convert " + torus + " --radius inf",
           "convert " + torus + " --timeout nan", "convert " + torus + " --timeout inf", "convert " + torus + " --timeout -1",
-          "convert " + torus + " --append --tolerance 0.1 -o " + q(out.file("y.spt")), "convert " + torus + " " + torus + " -o " + q(out.file("x.spt")),
+          "convert " + torus + " --append --tolerance 0.1 -o " + q(out.file("y.spt")), "convert " + torus + " --clip-poses 0",
+          "convert " + torus + " --clip-poses nan", "convert " + torus + " --protrusion -1",
+          "convert " + torus + " --append --clip-poses 0.1 -o " + q(out.file("y.spt")), "convert " + torus + " " + torus + " -o " + q(out.file("x.spt")),
           "convert " + torus + " -o " + q(out.path().string()), "convert " + torus + " -o " + q(out.file("new/")),
           std::string("frobnicate")}) {
         const auto r = run_command(spt_binary() + " " + args);
@@ -203,7 +205,8 @@ TEST(ConvertCli, HelpListsEveryOption) {
     const auto r = run_command(spt_binary() + " convert --help");
     EXPECT_EQ(r.exit_code, 0);
     for (const char* opt :
-         {"--out-dir", "--leaf-size", "--radius", "--tolerance", "--bounds", "--jobs", "--threads", "--times", "--force"})
+         {"--out-dir", "--leaf-size", "--radius", "--tolerance", "--protrusion", "--clip-poses", "--bounds", "--jobs",
+          "--threads", "--times", "--force"})
         EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
 
@@ -226,6 +229,40 @@ TEST(ConvertClips, EachClipOfAnAnimatedMeshIsReportedWithItsStretchAndGaps) {
                                           spt::test::q(dir.file("box.spt")));
     ASSERT_EQ(s.exit_code, 0) << s.output;
     EXPECT_EQ(s.output.find("clip '"), std::string::npos) << s.output;
+}
+
+// --clip-poses limits the radii at the clips' poses too: the bar's spheres where it bends get
+// smaller, none larger; a mesh without clips is converted as without it, with a note.
+TEST(ConvertClips, ClipPosesLimitTheRadiiAtTheClipsPosesToo) {
+    spt::test::TempDir dir{"convert-clip-poses"};
+    const std::string bar = spt::test::q(std::string(SPT_SOURCE_DIR) + "/tests/data/anim/bending_bar.gltf");
+    const auto convert = [&](const std::string& args, const std::string& name) {
+        const auto r = spt::test::run_command(spt::test::spt_binary() + " convert " + bar + " --vertices-only -o " +
+                                              spt::test::q(dir.file(name)) + args);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        return std::make_pair(r.output, load_spt(dir.file(name)));
+    };
+    const auto [plain_out, plain] = convert("", "plain.spt");
+    const auto [posed_out, posed] = convert(" --clip-poses 0.05", "posed.spt");
+    EXPECT_EQ(plain_out.find("clip poses:"), std::string::npos) << plain_out;
+    EXPECT_NE(posed_out.find("clip poses: radii limited at"), std::string::npos) << posed_out;
+    ASSERT_EQ(plain.samples.size(), posed.samples.size()); // vertices only: the same samples
+    size_t smaller = 0;
+    for (size_t i = 0; i < plain.samples.size(); ++i) {
+        EXPECT_LE(posed.samples.max_radius[i], plain.samples.max_radius[i]) << "sample " << i;
+        smaller += posed.samples.max_radius[i] < plain.samples.max_radius[i];
+    }
+    EXPECT_GT(smaller, 0u);
+    // A smaller allowance gives smaller radii where a sphere would poke out.
+    const auto [tight_out, tight] = convert(" --protrusion 0.0005", "tight.spt");
+    size_t tighter = 0;
+    for (size_t i = 0; i < plain.samples.size(); ++i) tighter += tight.samples.max_radius[i] < plain.samples.max_radius[i];
+    EXPECT_GT(tighter, 0u) << tight_out;
+    const auto s = spt::test::run_command(spt::test::spt_binary() + " convert " +
+                                          spt::test::q(spt::test::project_meshes() + "/box.ply") + " --clip-poses 0.1 -o " +
+                                          spt::test::q(dir.file("box.spt")));
+    ASSERT_EQ(s.exit_code, 0) << s.output;
+    EXPECT_NE(s.output.find("has no clips; --clip-poses limits radii at the bind pose alone"), std::string::npos) << s.output;
 }
 
 } // namespace
