@@ -210,6 +210,20 @@ struct Runner {
 };
 
 uint32_t g_lazy_region = 512; // --lazy-region (DeformingModel's default)
+// --tolerance and --protrusion: fractions of each converted mesh's own diagonal (0: the default).
+double g_tolerance = 0, g_protrusion = 0;
+// --clip-poses STEP: deforming models' spheres limited at their clips' poses STEP seconds apart (0: not).
+double g_clip_step = 0;
+
+/// Converts a mesh as every model of the benchmark is converted: make_document's defaults, or the
+/// tolerance and protrusion allowance given on the command line, each a fraction of the mesh's diagonal.
+SptDocument convert(const TriangleMesh& mesh, const AnimatedMesh* animated = nullptr) {
+    ConvertOptions o;
+    if (g_tolerance > 0) o.tolerance = g_tolerance * mesh.diagonal();
+    if (g_protrusion > 0) o.protrusion = g_protrusion * mesh.diagonal();
+    if (animated && g_clip_step > 0) o.poses = clip_poses(*animated, g_clip_step);
+    return make_document(mesh, o);
+}
 
 class SptRunner : public Runner {
 public:
@@ -543,7 +557,7 @@ std::vector<CollisionModel> rigid_models(const Animated& an, size_t frames, doub
         const TriangleMesh& bind = an.mesh->imported.mesh;
         const auto t0 = Clock::now();
         const ImportedMesh posed = prepare_mesh(bind.name, an.frames[f], bind.triangles);
-        const SptDocument doc = make_document(posed.mesh);
+        const SptDocument doc = convert(posed.mesh);
         out.emplace_back(doc, posed.mesh);
         ns.push_back(since_ns(t0));
         samples += double(doc.samples.size());
@@ -869,9 +883,13 @@ void print_markdown(std::ostream& o, const std::vector<CaseResult>& results, con
 int usage() {
     std::fprintf(stderr,
                  "usage: deforming_bench [--frames N] [--rounds R] [--figure GLTF] [--fbx FBX] [--out-dir DIR] [--stem NAME]\n"
-                 "                       [--lazy-region SAMPLES] [--open MODEL]\n"
+                 "                       [--lazy-region SAMPLES] [--open MODEL] [--tolerance F] [--protrusion F]\n"
+                 "                       [--clip-poses STEP]\n"
                  "       (--open: a case more, MODEL's first clip against a box, as the FBX model's; for an open\n"
-                 "       mesh, whose spheres are two-sided, e.g. /usr/share/assimp/models/X/BCN_Epileptic.X)\n"
+                 "       mesh, whose spheres are two-sided, e.g. /usr/share/assimp/models/X/BCN_Epileptic.X;\n"
+                 "       --tolerance, --protrusion: every model converted with that tolerance or protrusion allowance,\n"
+                 "       F a fraction of its own diagonal, instead of spt convert's defaults; --clip-poses: the deforming\n"
+                 "       models' spheres limited at their clips' poses STEP seconds apart, ConvertOptions::poses)\n"
                  "       deforming_bench --profile-update ITERATIONS [--profile-fbx] [--profile-spheres] [--profile-tight]\n"
                  "                       (spt's update alone, for perf; --profile-spheres: without the triangles;\n"
                  "                       --profile-tight: set_tight_refit)\n");
@@ -918,18 +936,31 @@ int main(int argc, char** argv) {
         else if (a == "--profile-spheres") profile_spheres = true;
         else if (a == "--profile-tight") profile_tight = true;
         else if (a == "--lazy-region") g_lazy_region = uint32_t(number(1, 100000000));
+        else if (a == "--clip-poses") {
+            const std::string v = value();
+            char* end = nullptr;
+            g_clip_step = std::strtod(v.c_str(), &end);
+            if (*end || !(g_clip_step > 0 && g_clip_step < 1e6)) return usage();
+        }
+        else if (a == "--tolerance" || a == "--protrusion") {
+            const std::string v = value();
+            char* end = nullptr;
+            const double f = std::strtod(v.c_str(), &end);
+            if (*end || !(f > 0 && f < 1)) return usage();
+            (a == "--tolerance" ? g_tolerance : g_protrusion) = f;
+        }
         else return usage();
     }
     try {
         const std::string started = utc_now(), load0 = load_average();
         const auto t_start = Clock::now();
         auto fig_mesh = load_mesh(figure);
-        auto fig_doc = std::make_shared<const SptDocument>(make_document(fig_mesh->imported.mesh));
+        auto fig_doc = std::make_shared<const SptDocument>(convert(fig_mesh->imported.mesh, fig_mesh.get()));
         const Animated walker = animate(fig_mesh, fig_doc, "walk", frames, 0);
 
         if (profile) { // spt's update alone, for `perf record`
             auto mesh = profile_fbx ? load_mesh(fbx) : fig_mesh;
-            auto doc = profile_fbx ? std::make_shared<const SptDocument>(make_document(mesh->imported.mesh)) : fig_doc;
+            auto doc = profile_fbx ? std::make_shared<const SptDocument>(convert(mesh->imported.mesh, mesh.get())) : fig_doc;
             const Animated an = profile_fbx ? animate(mesh, doc, "0", frames, 0) : walker;
             DeformingModel m(*doc, mesh, std::string(), !profile_spheres);
             m.set_tight_refit(profile_tight);
@@ -972,7 +1003,7 @@ int main(int argc, char** argv) {
             c.a.anim = &walker;
             c.b.fixed_mesh = std::make_shared<const TriangleMesh>(
                 box_mesh("floor tile", {0.0, -0.2, -0.6}, {0.4, 0.0, 0.6}));
-            c.b.fixed_doc = std::make_shared<const SptDocument>(make_document(*c.b.fixed_mesh));
+            c.b.fixed_doc = std::make_shared<const SptDocument>(convert(*c.b.fixed_mesh));
             c.u = -Eigen::Vector3d::UnitY(); // the tile comes up from below: its top at y = -s
             c.diag = fig_diag, c.frames = frames;
             c.about_b = "B: a box 0.4 × 0.2 × 1.2 (x from 0 to 0.4: under the left foot only, z from -0.6 to 0.6).";
@@ -1017,18 +1048,18 @@ int main(int argc, char** argv) {
             c.b.fixed_mesh = std::make_shared<const TriangleMesh>(box_mesh("box", blo, bhi));
             c.about_b = "B: a cube a third of the diagonal on the side to which the clip's extreme point moves most, "
                         "centred across on that point's mean position.";
-            c.b.fixed_doc = std::make_shared<const SptDocument>(make_document(*c.b.fixed_mesh));
+            c.b.fixed_doc = std::make_shared<const SptDocument>(convert(*c.b.fixed_mesh));
             c.diag = diag, c.frames = frames;
             cases.push_back(std::move(c));
         };
         auto fbx_mesh = load_mesh(fbx);
-        auto fbx_doc = std::make_shared<const SptDocument>(make_document(fbx_mesh->imported.mesh));
+        auto fbx_doc = std::make_shared<const SptDocument>(convert(fbx_mesh->imported.mesh, fbx_mesh.get()));
         const Animated fbx_anim = animate(fbx_mesh, fbx_doc, "0", frames, 0);
         box_case("fbx-box", "animation_with_skeleton.fbx and a box", fbx_anim);
         std::unique_ptr<Animated> open_anim;
         if (!open_model.empty()) {
             auto mesh = load_mesh(open_model);
-            auto doc = std::make_shared<const SptDocument>(make_document(mesh->imported.mesh));
+            auto doc = std::make_shared<const SptDocument>(convert(mesh->imported.mesh, mesh.get()));
             open_anim = std::make_unique<Animated>(animate(mesh, doc, "0", frames, 0));
             box_case("open-box", std::filesystem::path(open_model).filename().string() + " and a box", *open_anim);
         }
