@@ -133,7 +133,8 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
     if (a.clip_step > 0) {
         if (animated && !animated->clips.empty()) {
             opt.poses = clip_poses(*animated, a.clip_step);
-            clip_note << "  clip poses: radii limited at " << opt.poses.size() << " poses of " << animated->clips.size()
+            clip_note << "  clip poses: radii limited at " << opt.poses.size() << " pose" << (opt.poses.size() == 1 ? "" : "s")
+                      << " of " << animated->clips.size()
                       << " clip" << (animated->clips.size() == 1 ? "" : "s") << " as well as the bind pose\n";
         } else {
             clip_note << "  note: " << in << " has no clips; --clip-poses limits radii at the bind pose alone\n";
