@@ -93,6 +93,11 @@ TEST(ClipPoses, ComeStepsApartFromEachClipsStartAndAtItsEnd) {
     ASSERT_EQ(few.size(), 4u);
     EXPECT_EQ(few.back().positions, posed_mesh(*mesh, &mesh->clips[0], 1.0).positions);
     EXPECT_EQ(few[1].positions, posed_mesh(*mesh, &mesh->clips[0], 1.0 / 3).positions);
+    // Poses that would take more memory than allowed are fewer, the start and end kept.
+    const std::vector<TriangleMesh> bounded = clip_poses(*mesh, 1.0 / 30, 240, 1);
+    ASSERT_EQ(bounded.size(), 2u);
+    EXPECT_EQ(bounded.back().positions, posed_mesh(*mesh, &mesh->clips[0], 1.0).positions);
+    EXPECT_EQ(clip_poses(*mesh, 1.0 / 30, 240, size_t(1) << 40).size(), 31u);
     EXPECT_THROW(clip_poses(*mesh, 0), Error);
     EXPECT_THROW(clip_poses(*mesh, NAN), Error);
     AnimatedMesh still = *mesh;

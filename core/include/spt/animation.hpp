@@ -136,9 +136,12 @@ TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time)
 
 /// The mesh posed along every clip, `step` seconds apart from each clip's start, and at its end
 /// (posed_mesh): the poses at which ConvertOptions::poses limits a deforming object's spheres.
-/// A clip longer than `max_per_clip` steps gets that many poses, spread evenly (memory stays
-/// bounded on long captures). Empty without clips; Error(Usage) unless step > 0.
-std::vector<TriangleMesh> clip_poses(const AnimatedMesh& mesh, double step, size_t max_per_clip = 240);
+/// A clip longer than `max_per_clip` steps gets that many poses, spread evenly, and so does every
+/// clip when the poses, with what the radius limiter builds over each, would take more than about
+/// `max_bytes` (long captures, many clips, large meshes; at least each clip's start and end).
+/// Empty without clips; Error(Usage) unless step > 0.
+std::vector<TriangleMesh> clip_poses(const AnimatedMesh& mesh, double step, size_t max_per_clip = 240,
+                                     size_t max_bytes = size_t(1) << 30);
 
 /// How much a clip stretches the mesh's surface (docs/deforming.md, "Stretch"): over poses every
 /// 1/frames_per_second seconds of the clip (its ends included), the largest ratio of an edge's

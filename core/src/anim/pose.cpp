@@ -68,9 +68,14 @@ TriangleMesh posed_mesh(const AnimatedMesh& mesh, const Clip* clip, double time)
     return m;
 }
 
-std::vector<TriangleMesh> clip_poses(const AnimatedMesh& mesh, double step, size_t max_per_clip) {
+std::vector<TriangleMesh> clip_poses(const AnimatedMesh& mesh, double step, size_t max_per_clip, size_t max_bytes) {
     if (!(step > 0) || !std::isfinite(step)) throw Error(ErrorKind::Usage, "the step between poses must be positive");
     std::vector<TriangleMesh> poses;
+    if (mesh.clips.empty()) return poses;
+    // A pose's mesh, and the limiter's box tree and vertex fans over it, take about this much.
+    const TriangleMesh& bind = mesh.imported.mesh;
+    const size_t pose_bytes = 64 * bind.positions.size() + 48 * bind.triangles.size() + 1;
+    max_per_clip = std::min(max_per_clip, max_bytes / pose_bytes / mesh.clips.size());
     for (const Clip& clip : mesh.clips) {
         // A hair under whole steps does not add a pose a rounding away from the end.
         const double whole = std::ceil(clip.duration / step - 1e-9);
