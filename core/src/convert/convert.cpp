@@ -64,18 +64,20 @@ void stage(const ConvertOptions& o, const TriangleMesh& mesh, const char* name) 
     if (name && o.on_stage) o.on_stage(name);
 }
 
-// make_document; `two_sided_share` of a tolerance is the two-sided radius (see below).
-SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats,
-                    double two_sided_share) {
+// make_document; `two_sided_share` of a tolerance is the two-sided radius (see below); `tolerance`
+// stands for options.tolerance, so that the automatic tolerance's pass needs no copy of the options
+// (their poses may be large).
+SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, const std::optional<double>& tolerance,
+                    ConvertStats* stats, double two_sided_share) {
     ConvertStats local;
     ConvertStats& st = stats ? *stats : local;
-    if (options.tolerance && (!(*options.tolerance > 0) || !std::isfinite(*options.tolerance)))
+    if (tolerance && (!(*tolerance > 0) || !std::isfinite(*tolerance)))
         throw Error(ErrorKind::Usage, "--tolerance must be a positive length");
     // Two objects meet: their errors add. Within a tolerance each object keeps its gaps to
     // half of it and its protrusion to an eighth, so a pair stays well within it.
     const double protrusion =
         options.protrusion ? *options.protrusion
-                           : (options.tolerance ? *options.tolerance / 8 : kDefaultProtrusion * mesh.diagonal());
+                           : (tolerance ? *tolerance / 8 : kDefaultProtrusion * mesh.diagonal());
     if (!(protrusion > 0) || !std::isfinite(protrusion)) throw Error(ErrorKind::Usage, "protrusion must be positive");
     // A two-sided sphere (open part) pokes out of either side of the surface by exactly its
     // radius, with no edge or thin wall to pass: a quarter of a tolerance the caller gives, so
@@ -83,7 +85,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
     // as touching; without one, the default allowance (the automatic tolerance's half).
     const double two_sided_radius =
         options.protrusion ? *options.protrusion
-                           : (options.tolerance ? *options.tolerance * two_sided_share : protrusion);
+                           : (tolerance ? *tolerance * two_sided_share : protrusion);
 
     if (mesh.positions.size() > kMaxSourceIndex || mesh.triangles.size() > kMaxSourceIndex)
         throw_bad_input(mesh.name, "more than " + std::to_string(kMaxSourceIndex) + " vertices or triangles");
@@ -108,7 +110,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
 
     SptDocument doc;
     doc.mesh = info;
-    if (!options.tolerance) {
+    if (!tolerance) {
         doc.samples = vertex_samples;
         st.sample_seconds = seconds_since(t0);
         stage(options, mesh, "building the tree");
@@ -126,10 +128,9 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
         if (!options.auto_tolerance || (st.worst_predicted_gap <= automatic && gaps.uncovered_open == 0)) return doc;
         // Vertices alone leave holes (large flat faces), or leave faces of open parts outside
         // their spheres (two open sheets crossing there could pass between them): sample the faces too.
-        ConvertOptions with_faces = options;
-        with_faces.tolerance = automatic;
+        limiter_made.reset(); // the pass below makes its own, with as many trees over the poses
         ConvertStats again;
-        SptDocument sampled = convert(mesh, with_faces, &again, 0.5); // two-sided radius: the allowance
+        SptDocument sampled = convert(mesh, options, automatic, &again, 0.5); // two-sided radius: the allowance
         again.automatic_tolerance = automatic;
         again.uncovered_open_faces = gaps.uncovered_open;
         again.sample_seconds += st.sample_seconds, again.build_seconds += st.build_seconds;
@@ -139,14 +140,14 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
 
     // The builder keeps active nodes radius-coherent, so a node's radius is at least
     // 1/kRadiusClassRatio of each member's own radius: faces are sampled for that radius.
-    const double eps = *options.tolerance / 2;
+    const double eps = *tolerance / 2;
     SampleSet s = vertex_samples;
     // A tolerance far below the mesh's detail (model units mistaken for a fraction of the
     // diagonal, say) would sample for hours into all memory: refused up front from a lower
     // bound on the count, or as soon as the samples pass the limit.
     const auto too_many = [&](const std::string& count) {
         std::ostringstream why;
-        why << "a tolerance of " << *options.tolerance << " (" << *options.tolerance / mesh.diagonal()
+        why << "a tolerance of " << *tolerance << " (" << *tolerance / mesh.diagonal()
             << " of the diagonal " << mesh.diagonal() << ") needs " << count << " samples; at most " << kMaxSamples
             << " are made: give a larger --tolerance";
         throw_bad_input(mesh.name, why.str());
@@ -193,7 +194,7 @@ SptDocument convert(const TriangleMesh& mesh, const ConvertOptions& options, Con
 } // namespace
 
 SptDocument make_document(const TriangleMesh& mesh, const ConvertOptions& options, ConvertStats* stats) {
-    return convert(mesh, options, stats, 0.25);
+    return convert(mesh, options, options.tolerance, stats, 0.25);
 }
 
 SptDocument load_or_convert(const std::string& path, const ConvertOptions& options) {
