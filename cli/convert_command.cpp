@@ -139,6 +139,9 @@ int convert_one(const std::string& in, const std::string& out, const ConvertArgs
         } else {
             clip_note << "  note: " << in << " has no clips; --clip-poses limits radii at the bind pose alone\n";
         }
+    } else if (animated && !animated->clips.empty() && !a.append) {
+        clip_note << "  note: radii limited at the bind pose; a clip that squeezes or bends a part can make a sphere "
+                     "poke out by more than the allowance there (--clip-poses 0.0333 limits them along the clips too)\n";
     }
     opt.threads = a.threads;
     opt.build.threads = a.threads; // trees built here too (--append, trees of a recipe without one)

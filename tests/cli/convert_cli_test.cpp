@@ -245,7 +245,9 @@ TEST(ConvertClips, ClipPosesLimitTheRadiiAtTheClipsPosesToo) {
     const auto [plain_out, plain] = convert("", "plain.spt");
     const auto [posed_out, posed] = convert(" --clip-poses 0.05", "posed.spt");
     EXPECT_EQ(plain_out.find("clip poses:"), std::string::npos) << plain_out;
+    EXPECT_NE(plain_out.find("radii limited at the bind pose; "), std::string::npos) << plain_out;
     EXPECT_NE(posed_out.find("clip poses: radii limited at"), std::string::npos) << posed_out;
+    EXPECT_EQ(posed_out.find("radii limited at the bind pose; "), std::string::npos) << posed_out;
     ASSERT_EQ(plain.samples.size(), posed.samples.size()); // vertices only: the same samples
     size_t smaller = 0;
     for (size_t i = 0; i < plain.samples.size(); ++i) {
