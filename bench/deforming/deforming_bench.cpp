@@ -216,7 +216,8 @@ double g_tolerance = 0, g_protrusion = 0;
 double g_clip_step = 0;
 
 /// Converts a mesh as every model of the benchmark is converted: make_document's defaults, or the
-/// tolerance and protrusion allowance given on the command line, each a fraction of the mesh's diagonal.
+/// tolerance and protrusion allowance given on the command line, each a fraction of the mesh's
+/// diagonal; an animated mesh's radii limited at its clips' poses with --clip-poses.
 SptDocument convert(const TriangleMesh& mesh, const AnimatedMesh* animated = nullptr) {
     ConvertOptions o;
     if (g_tolerance > 0) o.tolerance = g_tolerance * mesh.diagonal();

@@ -5,7 +5,6 @@
 #include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
 #include "bending_bar.hpp"
-#include "sampling/radius_limiter.hpp"
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>
