@@ -1,6 +1,7 @@
 // Caps sampling-sphere radii so that no sphere pokes out of the mesh by more than an allowance.
 #include "sampling/radius_limiter.hpp"
 #include "sampling/encoding.hpp"
+#include "sampling/surface_samples.hpp"
 #include "spt/error.hpp"
 #include "geometry/triangle_bvh.hpp"
 #include "geometry/vertex_faces.hpp"
@@ -112,13 +113,13 @@ float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, 
             const Eigen::Vector3f pn = decode_normal(encode_normal(m.normals[vertex].cast<float>()));
             r = pose->limit_here(m.positions[vertex], pn.cast<double>(), r, vertex, nullptr);
         } else if (on_face && on_face->face < m.triangles.size()) {
+            const std::optional<FaceFrame> frame = face_frame(m, on_face->face);
+            if (!frame) continue; // collapsed at this pose: nothing to poke out of
             const auto& t = m.triangles[on_face->face];
             const Eigen::Vector3d a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
-            const Eigen::Vector3d fn = (b - a).cross(c - a);
-            if (!(fn.norm() > 0)) continue; // collapsed at this pose: nothing to poke out of
-            const Eigen::Vector3f pn = decode_normal(encode_normal(fn.normalized().cast<float>()));
-            const Eigen::Vector3d centroid = (a + b + c) / 3;
-            r = pose->limit_here(a + on_face->s * (b - a) + on_face->t * (c - a), pn.cast<double>(), r, ~0u, &centroid);
+            const Eigen::Vector3f pn = decode_normal(encode_normal(frame->normal));
+            r = pose->limit_here(a + on_face->s * (b - a) + on_face->t * (c - a), pn.cast<double>(), r, ~0u,
+                                 &frame->centroid);
         }
     }
     return r;
