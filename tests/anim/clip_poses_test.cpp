@@ -4,6 +4,7 @@
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
+#include "spt/spt_file.hpp"
 #include "bending_bar.hpp"
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -69,6 +70,20 @@ TEST(ClipPoses, ASqueezedPartsSpheresKeepTheAllowanceAtThePosesTheyWereLimitedAt
     EXPECT_GT(n, 20u);
     // Smaller spheres, and the faces sampled more densely for them (the tolerance still holds).
     EXPECT_GT(limited.samples.size(), bind_only.samples.size());
+}
+
+// The bar's 768 faces are sampled in several runs, each limited at every pose, on however many
+// threads: the file must not show how many.
+TEST(ClipPoses, TheFileIsTheSameOnEveryThreadCount) {
+    const auto mesh = squeezed_bar();
+    ConvertOptions o;
+    o.poses = clip_poses(*mesh, 1.0 / 10);
+    o.threads = 1;
+    const std::vector<uint8_t> one = encode_spt(make_document(mesh->imported.mesh, o));
+    for (int threads : {2, 5}) {
+        o.threads = threads;
+        EXPECT_EQ(encode_spt(make_document(mesh->imported.mesh, o)), one) << threads;
+    }
 }
 
 TEST(ClipPoses, ThePoseOfTheMeshItselfChangesNoRadius) {

@@ -23,17 +23,17 @@ void expect_same_bytes_on_every_thread_count(const TriangleMesh& mesh, std::opti
     for (int threads : {2, 5}) EXPECT_EQ(converted(mesh, threads, tolerance), one) << mesh.name << ", " << threads;
 }
 
-// More vertices than one run of samples (8,192), so that several threads each take some.
+// More vertices than one run of samples (kSampleRun), so that several threads each take some.
 TEST(ConvertThreads, ManyRunsOfVertexSamplesGiveTheSameFileOnEveryThreadCount) {
     const TriangleMesh torus = meshgen::prepare(meshgen::torus(1, 0.35, 160, 80), "torus").mesh;
-    ASSERT_GT(torus.positions.size(), 8192u * 1.5);
+    ASSERT_GT(torus.positions.size(), kSampleRun * 32);
     expect_same_bytes_on_every_thread_count(torus);
 }
 
 // More faces than one run, each sampled to a tolerance: face samples in many runs.
 TEST(ConvertThreads, ManyRunsOfFaceSamplesGiveTheSameFileOnEveryThreadCount) {
     const TriangleMesh torus = meshgen::prepare(meshgen::torus(1, 0.35, 120, 80), "torus").mesh;
-    ASSERT_GT(torus.triangles.size(), 8192u * 2);
+    ASSERT_GT(torus.triangles.size(), kSampleRun * 64);
     expect_same_bytes_on_every_thread_count(torus, 0.005 * torus.diagonal());
 }
 
@@ -86,6 +86,25 @@ TEST(ConvertThreads, FaceSamplesOfEveryFaceComeInFaceOrderWhateverTheThreads) {
         EXPECT_EQ(s.points, one_by_one.points) << threads;
         EXPECT_EQ(s.max_radius, one_by_one.max_radius) << threads;
     }
+}
+
+// A mesh of a few hundred faces, each carrying many samples probed at many poses: it was one run,
+// so one thread did all of it (the walking figure's 4,872 faces with its clips' 94 poses took
+// 10 s on one core of two). Its runs now go to the host's threads, and give the same samples.
+TEST(ConvertThreads, AFewHundredFacesAreSampledInRunsOnTheHostsThreads) {
+    const TriangleMesh mesh = meshgen::prepare(meshgen::box(2, 0.4, 0.4, 8), "bar").mesh;
+    ASSERT_GT(mesh.triangles.size(), 2 * kSampleRun);
+    ASSERT_LT(mesh.triangles.size(), 8 * kSampleRun);
+    const RadiusLimiter limiter(mesh, 0.0025 * mesh.diagonal());
+    const Eigen::Vector3d origin = local_origin(mesh);
+    const double eps = 0.002 * mesh.diagonal();
+    const SampleSet one = face_samples(limiter, origin, eps, {}, 0.5f, 1);
+    test::HostTaskSystem host(3);
+    const SampleSet on_host = face_samples(limiter, origin, eps, {}, 0.5f, 3, nullptr, kMaxSamples, &host);
+    EXPECT_GE(host.runs.load(), 1) << "the runs stayed on the calling thread";
+    EXPECT_EQ(on_host.sources, one.sources);
+    EXPECT_EQ(on_host.points, one.points);
+    EXPECT_EQ(on_host.max_radius, one.max_radius);
 }
 
 } // namespace

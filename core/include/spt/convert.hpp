@@ -40,7 +40,7 @@ struct ConvertOptions {
     /// pool. Overrides build.tasks.
     TaskSystem* tasks = nullptr;
     /// Another thread sets it to stop the conversion: make_document looks at it as each stage
-    /// starts, every 4,096 vertices or faces while sampling, and through the tree builder
+    /// starts, every 256 vertices or faces while sampling, and through the tree builder
     /// (BuildOptions::cancel), and throws Cancelled. Null: never stops.
     const std::atomic<bool>* cancel = nullptr;
     /// Called (on the converting thread) as each stage starts, with its name: "sampling

@@ -33,10 +33,6 @@ float search_radius(const RadiusRule& rule, float spacing, bool two_sided) {
 
 namespace {
 
-// Vertices or faces are sampled in runs of this many, each run into a set of its own on one
-// thread, and the sets joined in run order: the samples do not depend on the thread count.
-constexpr size_t kSampleRun = 8192;
-
 // fill(first, last, out) samples items [first, last) into `out` (its origin set); on `threads`.
 template <class Fill>
 SampleSet sample_in_runs(size_t n, const Eigen::Vector3d& origin, int threads, TaskSystem* tasks, Fill&& fill) {
@@ -82,7 +78,7 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
         }
     return sample_in_runs(n, local_origin(mesh), threads, tasks, [&](size_t first, size_t last, SampleSet& s) {
         for (auto v = uint32_t(first); v < last; ++v) {
-            if ((v & 4095u) == 0) detail::stop_if_cancelled(cancel, "converting", mesh.name);
+            if (v % kSampleRun == 0) detail::stop_if_cancelled(cancel, "converting", mesh.name);
             if (!mesh.normal_valid[v] || edge_count[v] == 0) continue;
             const float spacing = float(edge_sum[v] / edge_count[v]);
             // The radius is limited at the exact vertex: the stored float point may lie a rounding
@@ -232,7 +228,7 @@ SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& orig
     std::atomic<size_t> made{0};
     return sample_in_runs(faces, origin, threads, tasks, [&](size_t first, size_t last, SampleSet& s) {
         for (auto f = uint32_t(first); f < last; ++f) {
-            if ((f & 4095u) == 0 && detail::cancel_requested(cancel)) return;
+            if (f % kSampleRun == 0 && detail::cancel_requested(cancel)) return;
             if (limiter.mesh().copies_earlier_face(f)) continue; // its samples would be its face's again
             const size_t before = s.size(), so_far = made.load(std::memory_order_relaxed);
             try {

@@ -22,10 +22,17 @@ Eigen::Vector3d local_origin(const TriangleMesh& mesh);
 /// the rule's radius, or for a two-sided sample the rule's radius itself.
 float search_radius(const RadiusRule& rule, float spacing, bool two_sided);
 
+/// Vertices or faces are sampled in runs of this many, each run into a set of its own on one
+/// thread, and the sets joined in run order: the samples do not depend on the thread count. A
+/// run is short because an item's cost varies a thousandfold: a face of a small mesh carries
+/// hundreds of samples, each with a probe of the mesh at every pose (ConvertOptions::poses), and
+/// a mesh of fewer faces than one run was sampled on one thread.
+constexpr size_t kSampleRun = 256;
+
 /// One sample per vertex with a valid normal, relative to local_origin(mesh); spacing = mean length of its edges,
 /// max_radius from `limiter` (search_radius); vertices of open parts are two-sided.
 /// On up to `threads` threads, with the same samples as on one. Throws Cancelled once `cancel`
-/// (may be null) is set: it is looked at every 4,096 vertices.
+/// (may be null) is set: it is looked at every kSampleRun vertices.
 SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter, const RadiusRule& rule = {},
                           int threads = 1, const std::atomic<bool>* cancel = nullptr, TaskSystem* tasks = nullptr);
 
@@ -64,7 +71,7 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
 /// The face samples of every triangle of the limiter's mesh, in triangle order, relative to
 /// `origin` (add_face_samples of each), on up to `threads` threads with the same samples as on
 /// one. Once `cancel` (may be null) is set, the faces not yet begun are skipped (it is looked at
-/// every 4,096 faces): the caller checks it after the call and discards the set.
+/// every kSampleRun faces): the caller checks it after the call and discards the set.
 /// Throws TooManySamples once the set would hold more than `max_samples` samples (a face stops
 /// when its own samples would take the count past it; threads running at once may each reach it).
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
