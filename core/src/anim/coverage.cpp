@@ -4,6 +4,8 @@
 #include "base/parallel.hpp"
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
+#include <utility>
 
 namespace spt {
 namespace {
@@ -22,9 +24,22 @@ std::vector<Eigen::Vector3d> probe_weights() {
 // `floor` (the largest gap so far), else some value at most `floor`: a nearest-sphere walk that
 // leaves a node whose ball is no nearer than the best sphere so far, and stops once a sphere is
 // nearer than the floor (most points lie on a sphere: they cannot raise the largest gap).
-double gap_at(const CompactTree& t, const Eigen::Vector3f& p, double floor, std::vector<uint32_t>& stack) {
+// `hint`: the active node whose sphere ended the last walk (none: ~0u), tried first and updated:
+// the points come a triangle at a time, and a sphere that held the last often holds the next.
+double gap_at(const CompactTree& t, const Eigen::Vector3f& p, double floor, std::vector<uint32_t>& stack,
+              uint32_t& hint) {
     const auto& nodes = t.nodes();
     double best = INFINITY;
+    // Any sphere's gap is an upper bound on the least: it may end the walk before it starts, and
+    // otherwise prunes it (the least over the same spheres, so the same answer).
+    auto leaf_gap = [&](const CompactNode& n) {
+        for (uint32_t k = n.first; k < n.first + n.count; ++k)
+            best = std::min(best, double((p - t.sphere_center(n, k)).norm()) - double(n.ss_radius));
+    };
+    if (hint < nodes.size()) {
+        leaf_gap(nodes[hint]);
+        if (best <= floor) return std::max(0.0, best);
+    }
     stack.assign(1, 0);
     while (!stack.empty()) {
         const uint32_t i = stack.back();
@@ -33,9 +48,11 @@ double gap_at(const CompactTree& t, const Eigen::Vector3f& p, double floor, std:
         const Eigen::Vector3f c(n.center[0], n.center[1], n.center[2]);
         if (double((p - c).norm()) - double(n.bv_radius) >= best) continue;
         if (n.is_active()) {
-            for (uint32_t k = n.first; k < n.first + n.count; ++k)
-                best = std::min(best, double((p - t.sphere_center(n, k)).norm()) - double(n.ss_radius));
-            if (best <= floor) return std::max(0.0, best);
+            leaf_gap(n);
+            if (best <= floor) {
+                hint = i;
+                return std::max(0.0, best);
+            }
             continue;
         }
         // The nearer child's ball first: a sphere near the point comes early and ends the walk.
@@ -54,22 +71,46 @@ ClipCoverage DeformingModel::measure_coverage(const Clip& clip, double frames_pe
     ClipCoverage out;
     const TriangleMesh& m = mesh_->imported.mesh;
     const std::vector<Eigen::Vector3d> weights = probe_weights();
-    // Surface points: each weight on each triangle, in this order.
-    auto for_each_point = [&](auto&& f) {
-        size_t k = 0;
+    // Surface points: each weight on each triangle, in this order, each point once: a corner is
+    // its vertex's, shared by about six triangles, and a point on an edge is its two triangles'.
+    struct Point {
+        Triangle t;
+        Eigen::Vector3d w;
+    };
+    std::vector<Point> points;
+    {
+        std::vector<uint8_t> corner_seen(m.positions.size(), 0);
+        std::unordered_set<uint64_t> edge_seen; // (lesser vertex, greater, the lesser's weight in thirds)
         for (size_t t = 0; t < m.triangles.size(); ++t) {
             if (m.copies_earlier_face(t)) continue;
-            for (const Eigen::Vector3d& w : weights) f(k++, m.triangles[t], w);
+            const Triangle& tri = m.triangles[t];
+            for (const Eigen::Vector3d& w : weights) {
+                int on[3], n = 0;
+                for (int k = 0; k < 3; ++k)
+                    if (w[k] > 0) on[n++] = k;
+                if (n == 1) {
+                    if (std::exchange(corner_seen[tri[on[0]]], 1)) continue;
+                } else if (n == 2) {
+                    const int lo = tri[on[0]] < tri[on[1]] ? on[0] : on[1], hi = on[0] + on[1] - lo;
+                    const uint64_t key = (uint64_t(tri[lo]) << 34) | (uint64_t(tri[hi]) << 2) | uint64_t(std::lround(3 * w[lo]));
+                    if (!edge_seen.insert(key).second) continue;
+                }
+                points.push_back({tri, w});
+            }
         }
+    }
+    auto for_each_point = [&](auto&& f) {
+        for (size_t k = 0; k < points.size(); ++k) f(k, points[k].t, points[k].w);
     };
     // Every point's gap at the bind pose, measured whole: a pose's gaps are compared with these.
     DeformingModel bind = *this;
     bind.pose(nullptr, 0);
     std::vector<double> bind_gap;
     std::vector<uint32_t> stack;
+    uint32_t hint = ~0u;
     for_each_point([&](size_t, const Triangle& t, const Eigen::Vector3d& w) {
         const Eigen::Vector3d p = w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]];
-        bind_gap.push_back(gap_at(bind.model_.tree(), (p - bind.model_.origin()).cast<float>(), -INFINITY, stack));
+        bind_gap.push_back(gap_at(bind.model_.tree(), (p - bind.model_.origin()).cast<float>(), -INFINITY, stack, hint));
         out.bind_gap = std::max(out.bind_gap, bind_gap.back());
     });
     const detail::ClipPoses poses(clip, frames_per_second, 30);
@@ -85,6 +126,7 @@ ClipCoverage DeformingModel::measure_coverage(const Clip& clip, double frames_pe
     detail::parallel_for(size_t(jobs), jobs, [&](size_t job, int) {
         DeformingModel local = *this; // each job poses its own copy
         std::vector<uint32_t> walk;
+        uint32_t hint = ~0u;
         for (size_t k = job; k < results.size(); k += size_t(jobs)) {
             local.pose(&clip, poses.time(int(k)));
             Result& r = results[k];
@@ -93,7 +135,7 @@ ClipCoverage DeformingModel::measure_coverage(const Clip& clip, double frames_pe
                 const std::vector<Eigen::Vector3d>& v = local.vertices_;
                 const Eigen::Vector3d p = w[0] * v[t[0]] + w[1] * v[t[1]] + w[2] * v[t[2]];
                 const double floor = std::min(r.gap, bind_gap[i] + r.growth);
-                const double g = gap_at(local.model_.tree(), (p - o).cast<float>(), floor, walk);
+                const double g = gap_at(local.model_.tree(), (p - o).cast<float>(), floor, walk, hint);
                 if (g <= floor) return;
                 const Eigen::Vector3d at = w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]];
                 if (g > r.gap) r.gap = g, r.gap_at = at;
