@@ -23,7 +23,7 @@ Eigen::Vector3d barycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a, 
 
 // A normal as the .spt file stores it (octahedral-snapped), so that the bind pose gives the
 // document's own spheres.
-Eigen::Vector3f stored(const Eigen::Vector3d& n) { return decode_normal(encode_normal(n.cast<float>())); }
+Eigen::Vector3f stored(const Eigen::Vector3d& n) { return snap_normal(n.cast<float>()); }
 
 } // namespace
 

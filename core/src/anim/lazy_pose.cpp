@@ -269,7 +269,7 @@ void LazyPose::pose_region_locked(uint32_t r) {
         vertex_stamp_[vi] = pose_stamp_;
         vertex_ok_[vi] = finish_normal(normal_sum_[k]);
         vertex_unit_[vi] = normal_sum_[k];
-        if (vertex_ok_[vi]) vertex_snap_[vi] = decode_normal(encode_normal(normal_sum_[k].cast<float>()));
+        if (vertex_ok_[vi]) vertex_snap_[vi] = snap_normal(normal_sum_[k].cast<float>());
     }
     for (size_t q = 0; q < nfl; ++q) {
         const uint32_t f = R.sampled_faces[q];
@@ -279,7 +279,7 @@ void LazyPose::pose_region_locked(uint32_t r) {
         Eigen::Vector3d normal = (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]);
         if (!(normal.norm() > 0)) normal = vertex_unit_[t[0]] + vertex_unit_[t[1]] + vertex_unit_[t[2]];
         face_ok_[f] = normal.norm() > 0;
-        if (face_ok_[f]) face_snap_[f] = decode_normal(encode_normal(normal.normalized().cast<float>()));
+        if (face_ok_[f]) face_snap_[f] = snap_normal(normal.normalized().cast<float>());
     }
     for (size_t k = 0; k < R.samples.size(); ++k) {
         const uint32_t slot = R.sample_slot[k];

@@ -14,5 +14,8 @@ float decode_length(uint16_t code);
 uint32_t encode_normal(const Eigen::Vector3f& n);
 /// Inverse of encode_normal; returns a unit vector.
 Eigen::Vector3f decode_normal(uint32_t code);
+/// Unit normal n as a .spt file stores it (encoded and decoded): every sample's normal is
+/// snapped so, so that a posed model, the radius limiter and a loaded file see the same one.
+inline Eigen::Vector3f snap_normal(const Eigen::Vector3f& n) { return decode_normal(encode_normal(n)); }
 
 } // namespace spt

@@ -110,14 +110,14 @@ float RadiusLimiter::limit(const Eigen::Vector3d& p, const Eigen::Vector3f& nf, 
         const TriangleMesh& m = pose->mesh_;
         if (vertex != ~0u) {
             if (vertex >= m.positions.size() || !m.normal_valid[vertex]) continue;
-            const Eigen::Vector3f pn = decode_normal(encode_normal(m.normals[vertex].cast<float>()));
+            const Eigen::Vector3f pn = snap_normal(m.normals[vertex].cast<float>());
             r = pose->limit_here(m.positions[vertex], pn.cast<double>(), r, vertex, nullptr);
         } else if (on_face && on_face->face < m.triangles.size()) {
             const std::optional<FaceFrame> frame = face_frame(m, on_face->face);
             if (!frame) continue; // collapsed at this pose: nothing to poke out of
             const auto& t = m.triangles[on_face->face];
             const Eigen::Vector3d a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
-            const Eigen::Vector3f pn = decode_normal(encode_normal(frame->normal));
+            const Eigen::Vector3f pn = snap_normal(frame->normal);
             r = pose->limit_here(a + on_face->s * (b - a) + on_face->t * (c - a), pn.cast<double>(), r, ~0u,
                                  &frame->centroid);
         }

@@ -84,7 +84,7 @@ SampleSet sample_vertices(const TriangleMesh& mesh, const RadiusLimiter& limiter
             // The radius is limited at the exact vertex: the stored float point may lie a rounding
             // off the surface, and a segment from there to the centre can graze the faces at the vertex.
             const Eigen::Vector3d& p = mesh.positions[v];
-            const Eigen::Vector3f nrm = decode_normal(encode_normal(mesh.normals[v].cast<float>()));
+            const Eigen::Vector3f nrm = snap_normal(mesh.normals[v].cast<float>());
             const bool two_sided = limiter.on_open_part(v);
             s.add((p - s.origin).cast<float>(), nrm, v | (two_sided ? kTwoSidedBit : 0), spacing,
                   limiter.limit(p, nrm, search_radius(rule, spacing, two_sided), two_sided, v));
