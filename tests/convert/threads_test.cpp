@@ -1,6 +1,7 @@
 // A conversion samples on several threads (ConvertOptions::threads): the file must not show it.
 #include "meshgen.hpp"
 #include "mesh/hard_shapes.hpp"
+#include "mesh/shapes.hpp"
 #include "sampling/surface_samples.hpp"
 #include "spt/convert.hpp"
 #include "host_task_system.hpp"
@@ -105,6 +106,38 @@ TEST(ConvertThreads, AFewHundredFacesAreSampledInRunsOnTheHostsThreads) {
     EXPECT_EQ(on_host.sources, one.sources);
     EXPECT_EQ(on_host.points, one.points);
     EXPECT_EQ(on_host.max_radius, one.max_radius);
+}
+
+// One large face carries thousands of samples (a floor, a CAD part's side, a morph target's
+// cube): its refinement's probes go to the threads a step at a time, and the samples come in the
+// order one thread gives them. Past its room it stops before adding any.
+TEST(ConvertThreads, OneLargeFacesSamplesAreProbedOnTheHostsThreadsInTheSameOrder) {
+    const TriangleMesh mesh = make_box({0.5, 0.5, 0.5}, 1);
+    const RadiusLimiter limiter(mesh, 1e-4);
+    const double eps = 2e-3;
+    SampleSet one;
+    add_face_samples(one, limiter, 0, eps, {}, 0.5f);
+    ASSERT_GT(one.size(), 1000u);
+    test::HostTaskSystem host(3);
+    SampleSet planned;
+    add_face_samples(planned, limiter, 0, eps, {}, 0.5f, SIZE_MAX, 3, &host);
+    EXPECT_GE(host.runs.load(), 1) << "every probe ran on the calling thread";
+    EXPECT_EQ(planned.points, one.points);
+    EXPECT_EQ(planned.normals, one.normals);
+    EXPECT_EQ(planned.sources, one.sources);
+    EXPECT_EQ(planned.spacing, one.spacing);
+    EXPECT_EQ(planned.max_radius, one.max_radius);
+    SampleSet some;
+    try {
+        add_face_samples(some, limiter, 0, eps, {}, 0.5f, 500, 3, &host);
+        FAIL() << "a face of " << one.size() << " samples did not stop at 500";
+    } catch (const TooManySamples& t) {
+        EXPECT_EQ(t.reached, 501u);
+        EXPECT_EQ(some.size(), 0u);
+    }
+    SampleSet exactly;
+    add_face_samples(exactly, limiter, 0, eps, {}, 0.5f, one.size(), 3, &host);
+    EXPECT_EQ(exactly.points, one.points);
 }
 
 } // namespace

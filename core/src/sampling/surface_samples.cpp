@@ -124,6 +124,8 @@ float face_spacing(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
 struct FaceSampler {
     static constexpr int kLevels = 20; // finest grid: 2^-20 of the triangle
     static constexpr int64_t kGrid = int64_t(1) << kLevels;
+    using GridPoint = std::pair<int64_t, int64_t>;
+    using SubTriangle = std::array<GridPoint, 3>;
     SampleSet& out;
     const RadiusLimiter& limiter;
     uint32_t face;
@@ -139,32 +141,47 @@ struct FaceSampler {
     float factor;
     double eps;
     size_t room; // samples this face may add before it stops (TooManySamples)
-    std::map<std::pair<int64_t, int64_t>, float> radius_at; // assumed radius of each corner sample
+    struct Corner {
+        float cap = 0;      // the limiter's largest radius there (the sample's max_radius)
+        float r = 0;        // the radius the refinement assumes for its sphere
+        bool added = false; // its sample is in `out`
+    };
+    std::map<GridPoint, Corner> corners;
 
     Eigen::Vector3d point(int64_t i, int64_t j) const {
         return a + (double(i) / kGrid) * (b - a) + (double(j) / kGrid) * (c - a);
     }
-    float corner(int64_t i, int64_t j) {
-        auto it = radius_at.find({i, j});
-        if (it != radius_at.end()) return it->second;
-        // One face can ask for more samples than memory holds (a tolerance far below its size).
-        if (radius_at.size() >= room) throw TooManySamples{radius_at.size() + 1};
-        const Eigen::Vector3d p = point(i, j); // on the face: limited there, stored local in float
+    // The limiter's cap at grid point (i, j): the probes, most of a face's cost.
+    float cap_at(int64_t i, int64_t j) const {
         const float search = search_radius(rule, spacing, two_sided);
         const FacePoint where{face, double(i) / kGrid, double(j) / kGrid};
-        const float cap = limiter.limit(p, normal, needle ? std::min(search, float(limiter.protrusion())) : search,
-                                        two_sided, ~0u, &centroid, &where);
-        out.add((p - out.origin).cast<float>(), normal, face | kFaceSampleBit | (two_sided ? kTwoSidedBit : 0), spacing, cap);
-        // An active node of two-sided samples keeps their own radius (radius_class.hpp).
-        const float r = (two_sided ? 1.0f : factor) * rule.for_sample(spacing, out.max_radius.back());
-        radius_at[{i, j}] = r;
-        return r;
+        return limiter.limit(point(i, j), normal, needle ? std::min(search, float(limiter.protrusion())) : search,
+                             two_sided, ~0u, &centroid, &where);
     }
-    // Longest-edge bisection follows the triangle's shape, so a long thin face is refined
-    // along its length only.
-    void refine(std::array<std::pair<int64_t, int64_t>, 3> v, int level) {
-        float r = INFINITY;
-        for (auto [i, j] : v) r = std::min(r, corner(i, j));
+    // The radius assumed for a sample whose cap is `cap`, as stored (SampleSet::add rounds it).
+    // An active node of two-sided samples keeps their own radius (radius_class.hpp).
+    float radius_for(float cap) const {
+        return (two_sided ? 1.0f : factor) * rule.for_sample(spacing, decode_length(encode_length(cap, true)));
+    }
+    float corner(int64_t i, int64_t j) {
+        auto it = corners.find({i, j});
+        if (it == corners.end()) {
+            // One face can ask for more samples than memory holds (a tolerance far below its size).
+            if (corners.size() >= room) throw TooManySamples{corners.size() + 1};
+            const float cap = cap_at(i, j);
+            it = corners.emplace(GridPoint{i, j}, Corner{cap, radius_for(cap), false}).first;
+        }
+        if (!it->second.added) { // on the face: limited there, stored local in float
+            out.add((point(i, j) - out.origin).cast<float>(), normal,
+                    face | kFaceSampleBit | (two_sided ? kTwoSidedBit : 0), spacing, it->second.cap);
+            it->second.added = true;
+        }
+        return it->second.r;
+    }
+    // Whether sub-triangle v, its corners' least radius r, must be split; if so, its two halves.
+    // Longest-edge bisection follows the triangle's shape, so a long thin face is refined along
+    // its length only.
+    bool split(const SubTriangle& v, float r, SubTriangle& left, SubTriangle& right) const {
         // Edge lengths from grid steps and the face's two edge vectors, not from rounded
         // points: halves of a bisected edge tie exactly, and a tie broken by the rounding of
         // coordinates would sample the same face differently at another scale or offset.
@@ -181,16 +198,53 @@ struct FaceSampler {
         // Every point of a triangle is within (longest edge)/sqrt(3) of a corner. A one-sided
         // sphere lies flat under the face, a two-sided one is centred on it.
         if (two_sided) {
-            if (nearest_corner_bound(len2) <= kTwoSidedCoverage * double(r)) return;
+            if (nearest_corner_bound(len2) <= kTwoSidedCoverage * double(r)) return false;
         } else {
             const double rho = std::sqrt(longest2 / 3.0);
-            if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return;
+            if (std::sqrt(rho * rho + double(r) * r) - r <= eps) return false;
         }
-        const auto a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
-        if (((a.first + b.first) | (a.second + b.second)) & 1) return; // finest grid reached
-        const std::pair<int64_t, int64_t> m{(a.first + b.first) / 2, (a.second + b.second) / 2};
-        refine({a, m, c}, level + 1);
-        refine({m, b, c}, level + 1);
+        const GridPoint p = v[k], q = v[(k + 1) % 3], o = v[(k + 2) % 3];
+        if (((p.first + q.first) | (p.second + q.second)) & 1) return false; // finest grid reached
+        const GridPoint m{(p.first + q.first) / 2, (p.second + q.second) / 2};
+        left = {p, m, o}, right = {m, q, o};
+        return true;
+    }
+    void refine(const SubTriangle& v) {
+        float r = INFINITY;
+        for (auto [i, j] : v) r = std::min(r, corner(i, j));
+        SubTriangle left, right;
+        if (!split(v, r, left, right)) return;
+        refine(left);
+        refine(right);
+    }
+    // Every corner that refine(v) will visit, with its cap and radius, found a level of the
+    // refinement at a time so that each level's probes can go to `threads` threads; refine then
+    // takes the same steps in its own order and adds the samples as on one thread. Throws
+    // TooManySamples, before adding any, once the corners pass `room`.
+    void plan(const SubTriangle& root, int threads, TaskSystem* tasks) {
+        std::vector<SubTriangle> level{root}, next;
+        std::vector<GridPoint> todo;
+        std::vector<float> caps;
+        while (!level.empty()) {
+            todo.clear();
+            for (const SubTriangle& v : level)
+                for (const GridPoint& g : v)
+                    if (corners.emplace(g, Corner{}).second) todo.push_back(g);
+            if (corners.size() > room) throw TooManySamples{room + 1};
+            caps.resize(todo.size());
+            // A few probes are not worth a hand-over to other threads.
+            detail::parallel_for(todo.size(), todo.size() >= 16 ? threads : 1,
+                                 [&](size_t q, int) { caps[q] = cap_at(todo[q].first, todo[q].second); }, tasks);
+            for (size_t q = 0; q < todo.size(); ++q) corners[todo[q]] = Corner{caps[q], radius_for(caps[q]), false};
+            next.clear();
+            for (const SubTriangle& v : level) {
+                float r = INFINITY;
+                for (const GridPoint& g : v) r = std::min(r, corners.find(g)->second.r);
+                SubTriangle left, right;
+                if (split(v, r, left, right)) next.push_back(left), next.push_back(right);
+            }
+            level.swap(next);
+        }
     }
 };
 
@@ -206,7 +260,7 @@ std::optional<FaceFrame> face_frame(const TriangleMesh& mesh, uint32_t face) {
 }
 
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
-                      const RadiusRule& rule, float radius_factor, size_t room) {
+                      const RadiusRule& rule, float radius_factor, size_t room, int threads, TaskSystem* tasks) {
     const TriangleMesh& mesh = limiter.mesh();
     const std::optional<FaceFrame> frame = face_frame(mesh, face);
     if (!frame) return;
@@ -218,7 +272,9 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
     FaceSampler fs{samples, limiter, face, a, b, c, frame->normal, frame->centroid, two_sided, needle,
                    spacing, rule, radius_factor, eps, room, {}};
     const int64_t g = FaceSampler::kGrid;
-    fs.refine({std::pair<int64_t, int64_t>{0, 0}, {g, 0}, {0, g}}, 0);
+    const FaceSampler::SubTriangle whole{FaceSampler::GridPoint{0, 0}, {g, 0}, {0, g}};
+    if (threads > 1) fs.plan(whole, threads, tasks);
+    fs.refine(whole);
 }
 
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
@@ -232,7 +288,8 @@ SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& orig
             if (limiter.mesh().copies_earlier_face(f)) continue; // its samples would be its face's again
             const size_t before = s.size(), so_far = made.load(std::memory_order_relaxed);
             try {
-                add_face_samples(s, limiter, f, eps, rule, radius_factor, max_samples - std::min(so_far, max_samples));
+                add_face_samples(s, limiter, f, eps, rule, radius_factor, max_samples - std::min(so_far, max_samples),
+                                 threads, tasks);
             } catch (const TooManySamples& t) {
                 throw TooManySamples{so_far + t.reached};
             }

@@ -64,9 +64,13 @@ struct TooManySamples {
 /// open part: lies inside the sphere, within kTwoSidedCoverage of its radius; the samples are
 /// two-sided), assuming each sample's radius is `radius_factor` x rule.for_sample(spacing, max_radius)
 /// (two-sided: 1 x, as the builder keeps their radius). Throws TooManySamples (counting this
-/// face's samples) before it would add more than `room` samples.
+/// face's samples) before it would add more than `room` samples (on several threads, before it
+/// adds any). On up to `threads` threads (the limiter's probes of each step of the refinement),
+/// with the same samples in the same order as on one: a face of a few large triangles can carry
+/// tens of thousands of samples, each probed at every pose.
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
-                      const RadiusRule& rule, float radius_factor, size_t room = SIZE_MAX);
+                      const RadiusRule& rule, float radius_factor, size_t room = SIZE_MAX, int threads = 1,
+                      TaskSystem* tasks = nullptr);
 
 /// The face samples of every triangle of the limiter's mesh, in triangle order, relative to
 /// `origin` (add_face_samples of each), on up to `threads` threads with the same samples as on
