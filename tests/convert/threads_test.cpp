@@ -138,6 +138,16 @@ TEST(ConvertThreads, OneLargeFacesSamplesAreProbedOnTheHostsThreadsInTheSameOrde
     SampleSet exactly;
     add_face_samples(exactly, limiter, 0, eps, {}, 0.5f, one.size(), 3, &host);
     EXPECT_EQ(exactly.points, one.points);
+    // A step wider than the plan may take (a face of hundreds of thousands of samples) leaves the
+    // rest of the refinement to the calling thread: the same samples again.
+    const size_t most = detail::most_planned_sub_triangles;
+    detail::most_planned_sub_triangles = 64;
+    SampleSet partly;
+    add_face_samples(partly, limiter, 0, eps, {}, 0.5f, SIZE_MAX, 3, &host);
+    detail::most_planned_sub_triangles = most;
+    EXPECT_EQ(partly.points, one.points);
+    EXPECT_EQ(partly.max_radius, one.max_radius);
+    EXPECT_EQ(partly.sources, one.sources);
 }
 
 } // namespace

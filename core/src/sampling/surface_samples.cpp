@@ -217,10 +217,12 @@ struct FaceSampler {
         refine(left);
         refine(right);
     }
-    // Every corner that refine(v) will visit, with its cap and radius, found a level of the
+    // The corners that refine(v) will visit, with their caps and radii, found a level of the
     // refinement at a time so that each level's probes can go to `threads` threads; refine then
-    // takes the same steps in its own order and adds the samples as on one thread. Throws
-    // TooManySamples, before adding any, once the corners pass `room`.
+    // takes the same steps in its own order and adds the samples as on one thread. A level of
+    // more than detail::most_planned_sub_triangles is left to refine (on this thread), so that
+    // the plan takes no more than about 12 MB beside the corners. Throws TooManySamples, before
+    // adding any, once the corners pass `room`.
     void plan(const SubTriangle& root, int threads, TaskSystem* tasks) {
         std::vector<SubTriangle> level{root}, next;
         std::vector<GridPoint> todo;
@@ -243,6 +245,7 @@ struct FaceSampler {
                 SubTriangle left, right;
                 if (split(v, r, left, right)) next.push_back(left), next.push_back(right);
             }
+            if (next.size() > detail::most_planned_sub_triangles) return;
             level.swap(next);
         }
     }

@@ -59,6 +59,12 @@ struct TooManySamples {
     size_t reached; ///< samples there would have been with the next one
 };
 
+namespace detail {
+/// The widest step of a face's refinement whose probes go to the threads (add_face_samples);
+/// wider steps and the rest of that face's refinement run on the calling thread. Tests lower it.
+inline size_t most_planned_sub_triangles = size_t(1) << 18;
+} // namespace detail
+
 /// Adds face samples (face normals, relative to samples.origin) on `triangle`, refining adaptively until every point of
 /// it lies within reach of a face sample whose sphere leaves it at most `eps` uncovered (on an
 /// open part: lies inside the sphere, within kTwoSidedCoverage of its radius; the samples are
