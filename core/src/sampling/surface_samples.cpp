@@ -221,8 +221,8 @@ struct FaceSampler {
     // refinement at a time so that each level's probes can go to `threads` threads; refine then
     // takes the same steps in its own order and adds the samples as on one thread. A level of
     // more than detail::most_planned_sub_triangles is left to refine (on this thread), so that
-    // the plan takes no more than about 12 MB beside the corners. Throws TooManySamples, before
-    // adding any, once the corners pass `room`.
+    // the plan takes no more than about 12 MB beside the corners. Throws TooManySamples once the
+    // corners planned pass `room` (refine would pass it too: it visits every corner planned).
     void plan(const SubTriangle& root, int threads, TaskSystem* tasks) {
         std::vector<SubTriangle> level{root}, next;
         std::vector<GridPoint> todo;

@@ -70,8 +70,8 @@ inline size_t most_planned_sub_triangles = size_t(1) << 18;
 /// open part: lies inside the sphere, within kTwoSidedCoverage of its radius; the samples are
 /// two-sided), assuming each sample's radius is `radius_factor` x rule.for_sample(spacing, max_radius)
 /// (two-sided: 1 x, as the builder keeps their radius). Throws TooManySamples (counting this
-/// face's samples) before it would add more than `room` samples (on several threads, before it
-/// adds any). On up to `threads` threads (the limiter's probes of each step of the refinement),
+/// face's samples) before it would add more than `room` samples (on several threads, often before
+/// it adds any). On up to `threads` threads (the limiter's probes of each step of the refinement),
 /// with the same samples in the same order as on one: a face of a few large triangles can carry
 /// tens of thousands of samples, each probed at every pose.
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
