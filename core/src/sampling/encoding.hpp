@@ -9,6 +9,9 @@ namespace spt {
 uint16_t encode_length(float v, bool round_down);
 /// Inverse of encode_length.
 float decode_length(uint16_t code);
+/// Length v as a .spt file stores it (encoded and decoded): a sample's spacing is rounded to
+/// nearest, its max_radius towards zero, so a stored cap never exceeds the limiter's.
+inline float snap_length(float v, bool round_down) { return decode_length(encode_length(v, round_down)); }
 
 /// Octahedral 2x16-bit encoding of a unit normal, as stored in .spt files.
 uint32_t encode_normal(const Eigen::Vector3f& n);

@@ -8,8 +8,8 @@ void SampleSet::add(const Eigen::Vector3f& p, const Eigen::Vector3f& n, uint32_t
     points.push_back(p);
     normals.push_back(snap_normal(n));
     sources.push_back(source);
-    spacing.push_back(decode_length(encode_length(s, false)));
-    max_radius.push_back(decode_length(encode_length(r_max, true)));
+    spacing.push_back(snap_length(s, false));
+    max_radius.push_back(snap_length(r_max, true));
 }
 
 void SampleSet::append(const SampleSet& other) {

@@ -158,10 +158,11 @@ struct FaceSampler {
         return limiter.limit(point(i, j), normal, needle ? std::min(search, float(limiter.protrusion())) : search,
                              two_sided, ~0u, &centroid, &where);
     }
-    // The radius assumed for a sample whose cap is `cap`, as stored (SampleSet::add rounds it).
-    // An active node of two-sided samples keeps their own radius (radius_class.hpp).
+    // The radius assumed for a sample whose cap is `cap`, from the cap as SampleSet::add stores it
+    // (the plan needs it before the sample is added). An active node of two-sided samples keeps
+    // their own radius (radius_class.hpp).
     float radius_for(float cap) const {
-        return (two_sided ? 1.0f : factor) * rule.for_sample(spacing, decode_length(encode_length(cap, true)));
+        return (two_sided ? 1.0f : factor) * rule.for_sample(spacing, snap_length(cap, true));
     }
     float corner(int64_t i, int64_t j) {
         auto it = corners.find({i, j});
@@ -225,19 +226,20 @@ struct FaceSampler {
     // corners planned pass `room` (refine would pass it too: it visits every corner planned).
     void plan(const SubTriangle& root, int threads, TaskSystem* tasks) {
         std::vector<SubTriangle> level{root}, next;
-        std::vector<GridPoint> todo;
+        std::vector<std::map<GridPoint, Corner>::iterator> todo; // this step's new corners
         std::vector<float> caps;
         while (!level.empty()) {
             todo.clear();
             for (const SubTriangle& v : level)
                 for (const GridPoint& g : v)
-                    if (corners.emplace(g, Corner{}).second) todo.push_back(g);
+                    if (auto [it, added] = corners.emplace(g, Corner{}); added) todo.push_back(it);
             if (corners.size() > room) throw TooManySamples{room + 1};
             caps.resize(todo.size());
             // A few probes are not worth a hand-over to other threads.
             detail::parallel_for(todo.size(), todo.size() >= 16 ? threads : 1,
-                                 [&](size_t q, int) { caps[q] = cap_at(todo[q].first, todo[q].second); }, tasks);
-            for (size_t q = 0; q < todo.size(); ++q) corners[todo[q]] = Corner{caps[q], radius_for(caps[q]), false};
+                                 [&](size_t q, int) { caps[q] = cap_at(todo[q]->first.first, todo[q]->first.second); },
+                                 tasks);
+            for (size_t q = 0; q < todo.size(); ++q) todo[q]->second = Corner{caps[q], radius_for(caps[q]), false};
             next.clear();
             for (const SubTriangle& v : level) {
                 float r = INFINITY;
