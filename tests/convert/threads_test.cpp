@@ -108,15 +108,26 @@ TEST(ConvertThreads, AFewHundredFacesAreSampledInRunsOnTheHostsThreads) {
     EXPECT_EQ(on_host.max_radius, one.max_radius);
 }
 
+// A unit box's first face at a tolerance that gives it thousands of samples.
+struct LargeFace {
+    const TriangleMesh mesh = make_box({0.5, 0.5, 0.5}, 1);
+    const RadiusLimiter limiter{mesh, 1e-4};
+    const double eps = 2e-3;
+    SampleSet samples_on_one_thread() const {
+        SampleSet s;
+        add_face_samples(s, limiter, 0, eps, {}, 0.5f);
+        return s;
+    }
+};
+
 // One large face carries thousands of samples (a floor, a CAD part's side, a morph target's
 // cube): its refinement's probes go to the threads a step at a time, and the samples come in the
 // order one thread gives them. Past its room it stops before adding any.
 TEST(ConvertThreads, OneLargeFacesSamplesAreProbedOnTheHostsThreadsInTheSameOrder) {
-    const TriangleMesh mesh = make_box({0.5, 0.5, 0.5}, 1);
-    const RadiusLimiter limiter(mesh, 1e-4);
-    const double eps = 2e-3;
-    SampleSet one;
-    add_face_samples(one, limiter, 0, eps, {}, 0.5f);
+    const LargeFace face;
+    const RadiusLimiter& limiter = face.limiter;
+    const double eps = face.eps;
+    const SampleSet one = face.samples_on_one_thread();
     ASSERT_GT(one.size(), 1000u);
     test::HostTaskSystem host(3);
     SampleSet planned;
@@ -148,6 +159,46 @@ TEST(ConvertThreads, OneLargeFacesSamplesAreProbedOnTheHostsThreadsInTheSameOrde
     EXPECT_EQ(partly.points, one.points);
     EXPECT_EQ(partly.max_radius, one.max_radius);
     EXPECT_EQ(partly.sources, one.sources);
+}
+
+// A host whose Cancel is pressed while its threads run the n-th hand-over of work.
+class CancelOnRun final : public TaskSystem {
+public:
+    CancelOnRun(std::atomic<bool>& cancel, int nth) : cancel_(cancel), nth_(nth) {}
+    void run(int count, const std::function<void(int)>& job) override {
+        if (++runs == nth_) cancel_.store(true);
+        for (int w = 0; w < count; ++w) job(w);
+    }
+    int runs = 0;
+
+private:
+    std::atomic<bool>& cancel_;
+    int nth_;
+};
+
+// The editor's Cancel is answered inside one large face (a floor or a CAD part's side of
+// hundreds of thousands of samples), not only between faces: its planned steps and its
+// refinement look at the flag and leave the face unfinished (the caller discards the set).
+TEST(ConvertThreads, CancellingStopsAFaceUnderWayOnOneThreadOrMany) {
+    const LargeFace face;
+    const size_t whole = face.samples_on_one_thread().size();
+    ASSERT_GT(whole, 1000u);
+    std::atomic<bool> cancel{true};
+    SampleSet alone; // one thread: the refinement stops at its first probe's look at the flag
+    add_face_samples(alone, face.limiter, 0, face.eps, {}, 0.5f, SIZE_MAX, 1, nullptr, &cancel);
+    EXPECT_LE(alone.size(), 3u);
+    cancel = false;
+    CancelOnRun host(cancel, 3); // pressed during the third planned step's probes
+    SampleSet planned;
+    add_face_samples(planned, face.limiter, 0, face.eps, {}, 0.5f, SIZE_MAX, 2, &host, &cancel);
+    EXPECT_EQ(host.runs, 3) << "the plan went on past the step in which Cancel was pressed";
+    EXPECT_EQ(planned.size(), 0u);
+    // And through face_samples, as a conversion calls it: the face stops, the set is partial.
+    cancel = false;
+    CancelOnRun again(cancel, 3);
+    const SampleSet some = face_samples(face.limiter, local_origin(face.mesh), face.eps, {}, 0.5f, 2, &cancel, kMaxSamples, &again);
+    EXPECT_TRUE(cancel.load());
+    EXPECT_LT(some.size(), whole);
 }
 
 } // namespace

@@ -40,8 +40,8 @@ struct ConvertOptions {
     /// pool. Overrides build.tasks.
     TaskSystem* tasks = nullptr;
     /// Another thread sets it to stop the conversion: make_document looks at it as each stage
-    /// starts, every 256 vertices or faces while sampling, and through the tree builder
-    /// (BuildOptions::cancel), and throws Cancelled. Null: never stops.
+    /// starts, every 256 vertices or faces while sampling (and every 256 probes inside one face),
+    /// and through the tree builder (BuildOptions::cancel), and throws Cancelled. Null: never stops.
     const std::atomic<bool>* cancel = nullptr;
     /// Called (on the converting thread) as each stage starts, with its name: "sampling
     /// vertices", "sampling faces", "building the tree"; stages come again when the automatic

@@ -147,6 +147,8 @@ struct FaceSampler {
         bool added = false; // its sample is in `out`
     };
     std::map<GridPoint, Corner> corners;
+    const std::atomic<bool>* cancel = nullptr; // the caller's: looked at every kSampleRun new corners and each planned step
+    bool stopped = false;                      // cancelled: the refinement ends where it stands
 
     Eigen::Vector3d point(int64_t i, int64_t j) const {
         return a + (double(i) / kGrid) * (b - a) + (double(j) / kGrid) * (c - a);
@@ -169,6 +171,7 @@ struct FaceSampler {
         if (it == corners.end()) {
             // One face can ask for more samples than memory holds (a tolerance far below its size).
             if (corners.size() >= room) throw TooManySamples{corners.size() + 1};
+            if (corners.size() % kSampleRun == 0 && detail::cancel_requested(cancel)) stopped = true;
             const float cap = cap_at(i, j);
             it = corners.emplace(GridPoint{i, j}, Corner{cap, radius_for(cap), false}).first;
         }
@@ -211,10 +214,11 @@ struct FaceSampler {
         return true;
     }
     void refine(const SubTriangle& v) {
+        if (stopped) return;
         float r = INFINITY;
         for (auto [i, j] : v) r = std::min(r, corner(i, j));
         SubTriangle left, right;
-        if (!split(v, r, left, right)) return;
+        if (stopped || !split(v, r, left, right)) return;
         refine(left);
         refine(right);
     }
@@ -229,6 +233,10 @@ struct FaceSampler {
         std::vector<std::map<GridPoint, Corner>::iterator> todo; // this step's new corners
         std::vector<float> caps;
         while (!level.empty()) {
+            if (detail::cancel_requested(cancel)) {
+                stopped = true;
+                return;
+            }
             todo.clear();
             for (const SubTriangle& v : level)
                 for (const GridPoint& g : v)
@@ -236,9 +244,18 @@ struct FaceSampler {
             if (corners.size() > room) throw TooManySamples{room + 1};
             caps.resize(todo.size());
             // A few probes are not worth a hand-over to other threads.
+            // Cancelled: the rest of the step's probes are skipped, and so is the refinement.
+            std::atomic<bool> skipped{false};
             detail::parallel_for(todo.size(), todo.size() >= 16 ? threads : 1,
-                                 [&](size_t q, int) { caps[q] = cap_at(todo[q]->first.first, todo[q]->first.second); },
+                                 [&](size_t q, int) {
+                                     if (detail::cancel_requested(cancel)) skipped.store(true, std::memory_order_relaxed);
+                                     else caps[q] = cap_at(todo[q]->first.first, todo[q]->first.second);
+                                 },
                                  tasks);
+            if (skipped.load(std::memory_order_relaxed)) {
+                stopped = true;
+                return;
+            }
             for (size_t q = 0; q < todo.size(); ++q) todo[q]->second = Corner{caps[q], radius_for(caps[q]), false};
             next.clear();
             for (const SubTriangle& v : level) {
@@ -265,7 +282,8 @@ std::optional<FaceFrame> face_frame(const TriangleMesh& mesh, uint32_t face) {
 }
 
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t face, double eps,
-                      const RadiusRule& rule, float radius_factor, size_t room, int threads, TaskSystem* tasks) {
+                      const RadiusRule& rule, float radius_factor, size_t room, int threads, TaskSystem* tasks,
+                      const std::atomic<bool>* cancel) {
     const TriangleMesh& mesh = limiter.mesh();
     const std::optional<FaceFrame> frame = face_frame(mesh, face);
     if (!frame) return;
@@ -278,8 +296,9 @@ void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t
                    spacing, rule, radius_factor, eps, room, {}};
     const int64_t g = FaceSampler::kGrid;
     const FaceSampler::SubTriangle whole{FaceSampler::GridPoint{0, 0}, {g, 0}, {0, g}};
+    fs.cancel = cancel;
     if (threads > 1) fs.plan(whole, threads, tasks);
-    fs.refine(whole);
+    if (!fs.stopped) fs.refine(whole);
 }
 
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
@@ -294,7 +313,7 @@ SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& orig
             const size_t before = s.size(), so_far = made.load(std::memory_order_relaxed);
             try {
                 add_face_samples(s, limiter, f, eps, rule, radius_factor, max_samples - std::min(so_far, max_samples),
-                                 threads, tasks);
+                                 threads, tasks, cancel);
             } catch (const TooManySamples& t) {
                 throw TooManySamples{so_far + t.reached};
             }

@@ -73,15 +73,18 @@ inline size_t most_planned_sub_triangles = size_t(1) << 18;
 /// face's samples) before it would add more than `room` samples (on several threads, often before
 /// it adds any). On up to `threads` threads (the limiter's probes of each step of the refinement),
 /// with the same samples in the same order as on one: a face of a few large triangles can carry
-/// tens of thousands of samples, each probed at every pose.
+/// tens of thousands of samples, each probed at every pose. Once `cancel` (may be null) is set,
+/// stops within kSampleRun of its probes (on several threads, within a step's), leaving part of the face's samples in
+/// the set: the caller checks the flag after the call and discards the set.
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
                       const RadiusRule& rule, float radius_factor, size_t room = SIZE_MAX, int threads = 1,
-                      TaskSystem* tasks = nullptr);
+                      TaskSystem* tasks = nullptr, const std::atomic<bool>* cancel = nullptr);
 
 /// The face samples of every triangle of the limiter's mesh, in triangle order, relative to
 /// `origin` (add_face_samples of each), on up to `threads` threads with the same samples as on
 /// one. Once `cancel` (may be null) is set, the faces not yet begun are skipped (it is looked at
-/// every kSampleRun faces): the caller checks it after the call and discards the set.
+/// every kSampleRun faces) and a face under way stops (add_face_samples): the caller checks it
+/// after the call and discards the set.
 /// Throws TooManySamples once the set would hold more than `max_samples` samples (a face stops
 /// when its own samples would take the count past it; threads running at once may each reach it).
 SampleSet face_samples(const RadiusLimiter& limiter, const Eigen::Vector3d& origin, double eps, const RadiusRule& rule,
