@@ -74,8 +74,8 @@ inline size_t most_planned_sub_triangles = size_t(1) << 18;
 /// it adds any). On up to `threads` threads (the limiter's probes of each step of the refinement),
 /// with the same samples in the same order as on one: a face of a few large triangles can carry
 /// tens of thousands of samples, each probed at every pose. Once `cancel` (may be null) is set,
-/// stops within kSampleRun of its probes (on several threads, within a step's), leaving part of the face's samples in
-/// the set: the caller checks the flag after the call and discards the set.
+/// stops within kSampleRun of its probes (on several threads, within a step's), leaving part of
+/// the face's samples in the set: the caller checks the flag after the call and discards the set.
 void add_face_samples(SampleSet& samples, const RadiusLimiter& limiter, uint32_t triangle, double eps,
                       const RadiusRule& rule, float radius_factor, size_t room = SIZE_MAX, int threads = 1,
                       TaskSystem* tasks = nullptr, const std::atomic<bool>* cancel = nullptr);
