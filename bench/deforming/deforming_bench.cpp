@@ -607,11 +607,13 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
     add("spt spheres, 2 threads", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 2), true, true);
     add("spt spheres, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true), true, true);
     add("spt spheres, tight refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, false, true), true, true);
+    add("spt spheres, lazy tight", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true, true), true, true);
     add("FCL OBBRSS refit", std::make_unique<FclRunner>(c), true, true);
     add("Bullet GImpact", std::make_unique<BulletRunner>(c, false), true, true);
     add("Bullet GImpact rebuilt", std::make_unique<BulletRunner>(c, true), true, true);
     add("spheres query, deformed", std::make_unique<SptRunner>(c, QueryLevel::Spheres), false, false);
     add("spheres query, lazy refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true), false, false);
+    add("spheres query, lazy tight", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, true, true), false, false);
     add("spheres query, tight refit", std::make_unique<SptRunner>(c, QueryLevel::Spheres, 1, false, true), false, false);
     add("spheres query, rigid", std::make_unique<RigidRunner>(c, QueryLevel::Spheres, rigid_a, rigid_b, &fixed_b), false, false);
     add("exact query, deformed", std::make_unique<SptRunner>(c, QueryLevel::Exact), false, false);
@@ -891,9 +893,9 @@ int usage() {
                  "       --tolerance, --protrusion: every model converted with that tolerance or protrusion allowance,\n"
                  "       F a fraction of its own diagonal, instead of spt convert's defaults; --clip-poses: the deforming\n"
                  "       models' spheres limited at their clips' poses STEP seconds apart, ConvertOptions::poses)\n"
-                 "       deforming_bench --profile-update ITERATIONS [--profile-fbx] [--profile-spheres] [--profile-tight]\n"
+                 "       deforming_bench --profile-update ITERATIONS [--profile-fbx] [--profile-spheres] [--profile-tight] [--profile-lazy]\n"
                  "                       (spt's update alone, for perf; --profile-spheres: without the triangles;\n"
-                 "                       --profile-tight: set_tight_refit)\n");
+                 "                       --profile-tight: set_tight_refit; --profile-lazy: pose_lazily_on, the pose alone)\n");
     return 1;
 }
 
@@ -906,6 +908,7 @@ int main(int argc, char** argv) {
     bool profile_fbx = false;
     bool profile_spheres = false; // the spheres level's pose: no triangle tree
     bool profile_tight = false;   // DeformingModel::set_tight_refit
+    bool profile_lazy = false;    // DeformingModel::pose_lazily_on (the pose alone: no query poses a region)
     std::string figure = SPT_SOURCE_DIR "/resources/models/walking_figure.gltf";
     std::string fbx = "/usr/share/assimp/models/FBX/animation_with_skeleton.fbx";
     std::string open_model; // --open: a case more
@@ -936,6 +939,7 @@ int main(int argc, char** argv) {
         else if (a == "--profile-fbx") profile_fbx = true;
         else if (a == "--profile-spheres") profile_spheres = true;
         else if (a == "--profile-tight") profile_tight = true;
+        else if (a == "--profile-lazy") profile_lazy = true;
         else if (a == "--lazy-region") g_lazy_region = uint32_t(number(1, 100000000));
         else if (a == "--clip-poses") {
             const std::string v = value();
@@ -968,7 +972,8 @@ int main(int argc, char** argv) {
             std::vector<double> ns;
             for (long k = 0; k < profile; ++k) {
                 const auto t0 = Clock::now();
-                m.pose_on(an.frames[size_t(k) % frames]);
+                if (profile_lazy) m.pose_lazily_on(an.frames[size_t(k) % frames]);
+                else m.pose_on(an.frames[size_t(k) % frames]);
                 ns.push_back(since_ns(t0));
             }
             // What the last pose left, hashed (FNV-1a): a change meant to be faster, not different,

@@ -69,7 +69,10 @@ public:
     /// Refits inner bounding spheres tight, by searching the spheres below each that holds at
     /// least CompactTree::kTightSearchFrom (default off): a pose costs about 1.15x as much, and a
     /// query on it walks about as many node pairs as on a tree built at the pose
-    /// (docs/deforming.md, "Refit"). Applies from the next pose.
+    /// (docs/deforming.md, "Refit"). A lazy pose then also bounds the balls near the root by the
+    /// posed face normals (which side of the surface each sphere lies on), several times its cost
+    /// for a repeated query near the rigid tree's (docs/deforming.md, "Lazy refit"). Applies from
+    /// the next pose.
     void set_tight_refit(bool tight);
 
     /// The model at the current pose.

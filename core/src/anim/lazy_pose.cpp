@@ -6,6 +6,8 @@
 #include "sampling/encoding.hpp"
 #include "spt/samples.hpp"
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace spt::detail {
 namespace {
@@ -18,6 +20,24 @@ struct IdSet {
     void clear() { ids.clear(), ++epoch; }
     void add(uint32_t id) {
         if (stamp[id] != epoch) stamp[id] = epoch, ids.push_back(id);
+    }
+};
+
+// Unique ids, each with the largest value it was added with.
+struct IdMax {
+    IdSet set;
+    std::vector<float> value;
+    explicit IdMax(size_t n) : set(n), value(n, 0) {}
+    void clear() { set.clear(); }
+    void add(uint32_t id, float v) {
+        const bool fresh = set.stamp[id] != set.epoch;
+        set.add(id);
+        value[id] = fresh ? v : std::max(value[id], v);
+    }
+    std::vector<float> values() const {
+        std::vector<float> out;
+        for (uint32_t id : set.ids) out.push_back(value[id]);
+        return out;
     }
 };
 
@@ -54,14 +74,17 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
     std::vector<uint8_t> kept(n, 1);
     // Vertex to faces, for the faces whose normals a vertex sums.
     const size_t nv = mesh.positions.size();
-    const detail::VertexFaces around = detail::vertex_faces(nv, mesh.triangles);
-    const std::vector<uint32_t>&face_start = around.start, &faces = around.faces;
+    layout->around = detail::vertex_faces(nv, mesh.triangles);
+    const std::vector<uint32_t>&face_start = layout->around.start, &faces = layout->around.faces;
     auto each_sample = [&](uint32_t first, uint32_t last, auto&& f) {
         for (uint32_t i = first; i < last; ++i)
             if (nodes[i].is_active())
                 for (uint32_t k = nodes[i].first; k < nodes[i].first + nodes[i].count; ++k) f(tree.sample_index()[k]);
     };
     IdSet vertex_set(nv), face_set(mesh.triangles.size()), sampled_set(mesh.triangles.size());
+    IdMax cover_faces(mesh.triangles.size()), cover_flat_faces(mesh.triangles.size()), cover_vertices(nv),
+        cover_flat_vertices(nv);
+    std::vector<Eigen::Vector3d> least_weight(mesh.triangles.size()); // per face: each weight's least over its samples in hand
     std::vector<uint32_t> slot_of(nv, kNoSlot), face_slot_of(mesh.triangles.size(), kNoSlot);
     for (uint32_t r = 0; r < frontier.size(); ++r) {
         const uint32_t f = frontier[r], end = f + size[f];
@@ -78,24 +101,41 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
             kept[c] = 1;
             LazyLayout::Cover cover;
             cover.node = c;
-            float reach = 0;
-            double off = 0;
+            // Four sets, each collected once: one-sided faces and vertices, then two-sided; each
+            // with the largest radius of a sphere on it here.
+            for (IdMax* set : {&cover_faces, &cover_vertices, &cover_flat_faces, &cover_flat_vertices}) set->clear();
             vertex_set.clear();
-            each_sample(c, c + size[c], [&](uint32_t s) {
-                const uint32_t src = source[s] & kMaxSourceIndex;
-                off = std::max(off, offset[s]);
-                if (source[s] & kFaceSampleBit) {
-                    for (int k = 0; k < 3; ++k) vertex_set.add(mesh.triangles[src][k]);
-                    cover.spread = std::max(cover.spread, barycentric[s].cwiseAbs().sum());
-                } else {
-                    vertex_set.add(src);
+            double reach = 0;
+            for (uint32_t i = c; i < c + size[c]; ++i) {
+                if (!nodes[i].is_active()) continue;
+                const float r = nodes[i].ss_radius;
+                reach = std::max(reach, double(r));
+                for (uint32_t k = nodes[i].first; k < nodes[i].first + nodes[i].count; ++k) {
+                    const uint32_t s = tree.sample_index()[k], src = source[s] & kMaxSourceIndex;
+                    const bool flat = tree.two_sided() && tree.two_sided()[k];
+                    cover.off = std::max(cover.off, offset[s]);
+                    if (source[s] & kFaceSampleBit) {
+                        for (int j = 0; j < 3; ++j) vertex_set.add(mesh.triangles[src][j]);
+                        cover.spread = std::max(cover.spread, barycentric[s].cwiseAbs().sum());
+                        IdMax& set = flat ? cover_flat_faces : cover_faces;
+                        const bool fresh = set.set.stamp[src] != set.set.epoch;
+                        set.add(src, r);
+                        least_weight[src] = fresh ? barycentric[s] : least_weight[src].cwiseMin(barycentric[s]);
+                    } else {
+                        vertex_set.add(src);
+                        (flat ? cover_flat_vertices : cover_vertices).add(src, r);
+                    }
                 }
-            });
-            for (uint32_t i = c; i < c + size[c]; ++i)
-                if (nodes[i].is_active()) reach = std::max(reach, nodes[i].ss_radius);
+            }
+            for (IdMax* set : {&cover_faces, &cover_flat_faces})
+                for (uint32_t f : set->set.ids) (set == &cover_faces ? cover.face_least : cover.flat_face_least).push_back(least_weight[f]);
+            cover.faces = cover_faces.set.ids, cover.face_reach = cover_faces.values();
+            cover.vertices = cover_vertices.set.ids, cover.vertex_reach = cover_vertices.values();
+            cover.flat_faces = cover_flat_faces.set.ids, cover.flat_face_reach = cover_flat_faces.values();
+            cover.flat_vertices = cover_flat_vertices.set.ids, cover.flat_vertex_reach = cover_flat_vertices.values();
             // A sphere lies within twice its radius of its surface point (its centre is p - r*n).
-            cover.grow = 2 * double(reach) * (1 + 1e-6) + off;
-            cover.vertices = vertex_set.ids;
+            cover.corners = vertex_set.ids, cover.grow = 2 * reach * (1 + 1e-6) + cover.off;
+            layout->items += 3 * (cover.faces.size() + cover.flat_faces.size()) + cover.vertices.size() + cover.flat_vertices.size();
             layout->covers.push_back(std::move(cover));
         }
         LazyLayout::Region region;
@@ -145,12 +185,26 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
     for (const LazyLayout::Cover& c : layout->covers) is_cover[c.node] = 1;
     for (size_t i = n; i-- > 0;)
         if (kept[i] && !is_cover[i] && !nodes[i].is_active()) layout->upper.push_back(uint32_t(i));
+    // Covers come in node order, and a node's subtree is a run of nodes: the covers below an upper
+    // node are a run too.
+    for (uint32_t i : layout->upper) {
+        auto below = [&](uint32_t node) {
+            return uint32_t(std::lower_bound(layout->covers.begin(), layout->covers.end(), node,
+                                             [](const LazyLayout::Cover& c, uint32_t x) { return c.node < x; }) -
+                            layout->covers.begin());
+        };
+        layout->upper_covers.emplace_back(below(i), below(i + size[i]));
+    }
+    layout->loose.assign(n, 0);
+    for (const LazyLayout::Cover& c : layout->covers) layout->loose[c.node] = 1;
+    for (uint32_t i : layout->upper) layout->loose[i] = 1;
     return layout;
 }
 
 LazyPose::LazyPose(DeformingModel* owner, std::shared_ptr<const LazyLayout> layout)
     : owner_(owner), layout_(std::move(layout)), posed_flags_(new std::atomic<uint8_t>[layout_->regions.size()]) {
     need_ = layout_->need.data();
+    loose_ = layout_->loose.data();
     posed_ = posed_flags_.get();
 }
 
@@ -172,20 +226,24 @@ void LazyPose::begin() {
     CompactTree& tree = model.tree_;
     tree.ensure_boxes(); // before any walk: regions refit their nodes' boxes while walks read balls
     const std::vector<Eigen::Vector3d>& v = owner_->vertices_;
-    const Eigen::Vector3d& origin = tree.origin();
-    for (const LazyLayout::Cover& c : layout_->covers) {
-        Eigen::Vector3d lo = v[c.vertices.front()], hi = lo;
-        for (uint32_t k : c.vertices) lo = lo.cwiseMin(v[k]), hi = hi.cwiseMax(v[k]);
-        const Eigen::Vector3d mid = 0.5 * (lo + hi);
-        double far = 0;
-        for (uint32_t k : c.vertices) far = std::max(far, (v[k] - mid).norm());
-        // A sample is a weighted sum of its vertices (weights summing to 1), so it lies within
-        // spread * far of the middle; the float layout rounds within a millionth of where it lies.
-        const Eigen::Vector3d centre = mid - origin;
-        const double r = c.spread * far + c.grow;
-        tree.set_ball(c.node, centre, r + 1e-6 * (centre.norm() + r));
+    if (tree.tight_refit_) {
+        fit_tight_covers();
+    } else {
+        const Eigen::Vector3d& origin = tree.origin();
+        for (const LazyLayout::Cover& c : layout_->covers) {
+            Eigen::Vector3d lo = v[c.corners.front()], hi = lo;
+            for (uint32_t k : c.corners) lo = lo.cwiseMin(v[k]), hi = hi.cwiseMax(v[k]);
+            const Eigen::Vector3d mid = 0.5 * (lo + hi);
+            double far = 0;
+            for (uint32_t k : c.corners) far = std::max(far, (v[k] - mid).norm());
+            // A sample is a weighted sum of its vertices (weights summing to 1), so it lies within
+            // spread * far of the middle; the float layout rounds within a millionth of where it lies.
+            const Eigen::Vector3d centre = mid - origin;
+            const double r = c.spread * far + c.grow;
+            tree.set_ball(c.node, centre, r + 1e-6 * (centre.norm() + r));
+        }
+        for (uint32_t i : layout_->upper) tree.fit_inner_ball(i, false); // the spheres below may be unposed
     }
-    for (uint32_t i : layout_->upper) tree.fit_inner_ball(i, false); // the spheres below may be unposed
     // Two-sided spheres: a node's disc is fitted to the spheres below it, which may be unposed; the
     // covers and the nodes above are balls until a settle (a walk tests a node without a disc by
     // its ball), and a region fits its own nodes' discs when it is posed.
@@ -197,7 +255,7 @@ void LazyPose::begin() {
     const CompactNode& root = tree.nodes()[0];
     const Eigen::Vector3d c(root.center[0], root.center[1], root.center[2]);
     model.extent_ = c.norm() + root.bv_radius;
-    model.reach_ = (c + origin).norm() + root.bv_radius;
+    model.reach_ = (c + tree.origin()).norm() + root.bv_radius;
     // Without the triangles a pose has no exact level and no containment, as a full pose has
     // none: nothing then needs the rest posed but an explicit settle.
     if (!owner_->triangles_) model.exact_.reset(), model.solid_.reset();
@@ -209,6 +267,137 @@ void LazyPose::begin() {
     model.grow_to_hold_triangles();
     triangles_posed_.store(0, std::memory_order_relaxed);
     model.pending_.pose = this;
+}
+
+void LazyPose::fit_tight_covers() {
+    const TriangleMesh& mesh = owner_->mesh_->imported.mesh;
+    const size_t faces = mesh.triangles.size();
+    const std::vector<Eigen::Vector3d>& v = owner_->vertices_;
+    CompactTree& tree = owner_->model_.tree_;
+    // Every face's unit normal as a full pose makes it (follow()), and whether it has a share in
+    // its corners' vertex normals (vertex_normals.hpp): a cover then knows on which side of its
+    // surface points its spheres lie.
+    cover_unit_.resize(faces), cover_share_.resize(faces);
+    const double area_eps = degenerate_twice_area(owner_->diagonal_);
+    for (size_t f = 0; f < faces; ++f) {
+        const Triangle& t = mesh.triangles[f];
+        const Eigen::Vector3d fn = (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]);
+        const double len = fn.norm();
+        cover_unit_[f] = len > 0 ? Eigen::Vector3d(fn / len) : Eigen::Vector3d::Zero();
+        cover_share_[f] = len > area_eps && !mesh.copies_earlier_face(f);
+    }
+    // The covers from their items, then the nodes above from the covers.
+    const std::vector<LazyLayout::Cover>& covers = layout_->covers;
+    items_.resize(layout_->items);
+    item_start_.resize(covers.size() + 1);
+    size_t filled = 0;
+    for (size_t k = 0; k < covers.size(); ++k) {
+        item_start_[k] = filled;
+        filled = cover_items(covers[k], filled);
+    }
+    item_start_.back() = filled;
+    cover_box_.resize(2 * covers.size());
+    for (size_t k = 0; k < covers.size(); ++k) fit_cover(k);
+    // An upper node: the ball around the middle of its covers' items' boxes holding their balls
+    // (fitted to the covers, not to two children's balls, whose slack grows with every level).
+    const CompactNode* nodes = tree.nodes().data();
+    for (size_t u = 0; u < layout_->upper.size(); ++u) {
+        const auto [first, last] = layout_->upper_covers[u];
+        Eigen::Vector3d lo = cover_box_[2 * first], hi = cover_box_[2 * first + 1];
+        for (uint32_t k = first + 1; k < last; ++k) lo = lo.cwiseMin(cover_box_[2 * k]), hi = hi.cwiseMax(cover_box_[2 * k + 1]);
+        const Eigen::Vector3d mid = 0.5 * (lo + hi);
+        double far = 0;
+        for (uint32_t k = first; k < last; ++k) {
+            const CompactNode& n = nodes[covers[k].node];
+            far = std::max(far, (Eigen::Vector3d(n.center[0], n.center[1], n.center[2]) - mid).norm() + double(n.bv_radius));
+        }
+        tree.set_ball(layout_->upper[u], mid, far + 1e-6 * (mid.norm() + far)); // (the float centre's rounding)
+    }
+}
+
+size_t LazyPose::cover_items(const LazyLayout::Cover& c, size_t at) {
+    const TriangleMesh& mesh = owner_->mesh_->imported.mesh;
+    const std::vector<Eigen::Vector3d>& v = owner_->vertices_;
+    // A sphere of radius r <= R tangent at p on the inner side of unit normal n lies in the ball of
+    // radius R tangent there, centred at q = p - R n. Stored normals are snapped within a
+    // thousandth of the unit normal. Each item is a point q and how far past it the spheres it
+    // stands for reach.
+    constexpr double eps = 1e-3;
+    Eigen::Vector4d* out = items_.data() + at;
+    auto item = [&](const Eigen::Vector3d& q, double add) { *out++ = Eigen::Vector4d(q.x(), q.y(), q.z(), add + c.off); };
+    // A face's samples here have barycentric weights w with w_k >= a_k (the least over them) and
+    // sum 1: they lie in the triangle of the three points where two of the weights are least, and
+    // so does each posed sample (posing is linear in the face's corners).
+    auto each_corner = [&](uint32_t f, const Eigen::Vector3d& a, auto&& to) {
+        const Triangle& t = mesh.triangles[f];
+        const Eigen::Vector3d &p0 = v[t[0]], &p1 = v[t[1]], &p2 = v[t[2]];
+        to((1 - a[1] - a[2]) * p0 + a[1] * p1 + a[2] * p2);
+        to(a[0] * p0 + (1 - a[0] - a[2]) * p1 + a[2] * p2);
+        to(a[0] * p0 + a[1] * p1 + (1 - a[0] - a[1]) * p2);
+    };
+    for (size_t j = 0; j < c.faces.size(); ++j) {
+        // Without a normal of its own (a face squeezed flat) a face's samples take one that may
+        // point anywhere: then a sphere lies within 2R of its surface point.
+        const uint32_t f = c.faces[j];
+        const double R = c.face_reach[j];
+        const Eigen::Vector3d shift = R * cover_unit_[f];
+        const double add = cover_unit_[f].squaredNorm() > 0 ? R * (1 + 2 * eps) : 2 * R * (1 + eps);
+        each_corner(f, c.face_least[j], [&](const Eigen::Vector3d& p) { item(p - shift, add); });
+    }
+    for (size_t j = 0; j < c.flat_faces.size(); ++j) {
+        const double add = c.flat_face_reach[j] * (1 + eps);
+        each_corner(c.flat_faces[j], c.flat_face_least[j], [&](const Eigen::Vector3d& p) { item(p, add); });
+    }
+    // A vertex's normal is the unit sum of its faces' normals weighted by their angles there
+    // (vertex_normals.hpp). When every such face's normal lies within angle t of their mean m
+    // (t below a quarter turn), so does the unit sum (the cone is convex), which is then within
+    // 2 sin(t / 2) of m. The sum has a direction (finish_normal) when it is longer than 1e-12,
+    // as it is when one face's angle (at least its sine) times its cos t is: then the rest of the
+    // sum, each term along m at least 0, cannot shorten it.
+    const std::vector<uint32_t>&start = layout_->around.start, &around = layout_->around.faces;
+    for (size_t j = 0; j < c.vertices.size(); ++j) {
+        const uint32_t i = c.vertices[j];
+        const double R = c.vertex_reach[j];
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        uint32_t some = kNoSlot;
+        for (uint32_t a = start[i]; a < start[i + 1]; ++a)
+            if (cover_share_[around[a]]) mean += cover_unit_[around[a]], some = around[a];
+        double least = mean.norm() > 0 ? 1 : -1;
+        if (least > 0) mean.normalize();
+        for (uint32_t a = start[i]; a < start[i + 1] && least >= 0; ++a)
+            if (cover_share_[around[a]]) least = std::min(least, cover_unit_[around[a]].dot(mean));
+        bool sure = false;
+        if (least >= 0) { // sin^2 of some's angle at i, times least^2, past 1e-24 (squares: no root)
+            const Triangle& t = mesh.triangles[some];
+            const int k = t[0] == i ? 0 : t[1] == i ? 1 : 2;
+            const Eigen::Vector3d e1 = v[t[(k + 1) % 3]] - v[i], e2 = v[t[(k + 2) % 3]] - v[i];
+            sure = e1.cross(e2).squaredNorm() * least * least > 4e-24 * e1.squaredNorm() * e2.squaredNorm();
+        }
+        if (sure)
+            item(v[i] - R * mean, R * (1 + std::sqrt(std::max(0.0, 2 - 2 * least)) + 2 * eps));
+        else
+            item(v[i], 2 * R * (1 + eps));
+    }
+    for (size_t j = 0; j < c.flat_vertices.size(); ++j) item(v[c.flat_vertices[j]], c.flat_vertex_reach[j] * (1 + eps));
+    return size_t(out - items_.data());
+}
+
+void LazyPose::fit_cover(size_t k) {
+    // The ball around the middle of the items' box reaching past every item.
+    const size_t first = item_start_[k], last = item_start_[k + 1];
+    CompactTree& tree = owner_->model_.tree_;
+    const Eigen::Vector3d origin = tree.origin();
+    Eigen::Vector3d lo = items_[first].head<3>() - origin, hi = lo;
+    for (size_t i = first + 1; i < last; ++i) {
+        const Eigen::Vector3d q = items_[i].head<3>() - origin;
+        lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    }
+    const Eigen::Vector3d mid = 0.5 * (lo + hi);
+    double far = 0;
+    for (size_t i = first; i < last; ++i) far = std::max(far, (items_[i].head<3>() - origin - mid).norm() + items_[i][3]);
+    cover_box_[2 * k] = lo, cover_box_[2 * k + 1] = hi;
+    // The float layout rounds within a millionth of where a centre lies.
+    tree.set_ball(layout_->covers[k].node, mid, far + 1e-6 * (mid.norm() + far));
 }
 
 void LazyPose::settle() {

@@ -3,6 +3,7 @@
 // a pose moves the bounding spheres of the few nodes near the root at once, each from the posed
 // vertices its samples hang on, and leaves the parts below (regions) for the query that first
 // descends into them.
+#include "geometry/vertex_faces.hpp"
 #include "query/pending_pose.hpp"
 #include "spt/deforming_model.hpp"
 #include <memory>
@@ -28,18 +29,30 @@ struct LazyLayout {
         std::vector<uint32_t> sampled_faces;  // faces whose samples lie here (each a face slot)
         std::vector<uint32_t> sampled_corner_slot; // per sampled face, 3 vertex slots
     };
-    /// A node whose ball a pose fits from the posed vertices under it: a frontier node's children,
-    /// or an active frontier node.
+    /// A node whose ball a pose fits from the posed vertices and face normals under it: a frontier
+    /// node's children, or an active frontier node.
     struct Cover {
         uint32_t node;
-        std::vector<uint32_t> vertices; // every vertex a sample below hangs on
-        double spread = 1;              // the most sum |barycentric weight| of a sample below (1 for a vertex)
-        double grow = 0;                // how far a sphere below reaches past its surface point, model units
+        // Faces and vertices with samples below, one-sided and two-sided, each with the largest
+        // radius of those samples' spheres (model units).
+        std::vector<uint32_t> faces, vertices, flat_faces, flat_vertices;
+        std::vector<float> face_reach, vertex_reach, flat_face_reach, flat_vertex_reach;
+        std::vector<Eigen::Vector3d> face_least, flat_face_least; // per face: each barycentric weight's least
+        double off = 0;    // the most a stored point lies from its surface point, model units
+        // Without normals (the lazy pose's default): every vertex a sample below hangs on, the
+        // most sum |barycentric weight| of a sample below, and how far a sphere reaches past its
+        // surface point (model units).
+        std::vector<uint32_t> corners;
+        double spread = 1, grow = 0;
     };
     std::vector<uint32_t> need; // per compact node: the region to pose before reading below it
     std::vector<Region> regions;
     std::vector<Cover> covers;
+    size_t items = 0; // the covers' items at a pose (LazyPose::cover_items)
     std::vector<uint32_t> upper; // inner nodes above the covers, from the last back
+    std::vector<std::pair<uint32_t, uint32_t>> upper_covers; // per upper node: its run of covers
+    std::vector<uint8_t> loose;  // per compact node: 1 for a cover or an upper node
+    VertexFaces around;          // every face around each vertex (the covers' vertex normals)
 };
 
 /// The layout for `model`'s tree (bound to `mesh` with the per-sample `source`, `barycentric`
@@ -84,7 +97,17 @@ private:
     std::vector<Eigen::Vector3d> vertex_unit_;
     std::vector<Eigen::Vector3f> vertex_snap_, face_snap_;
     std::vector<uint8_t> vertex_ok_, face_ok_;
+    // Per face at this pose, for tight covers: its unit normal (zero without one) and whether it has
+    // a share in its corners' vertex normals.
+    std::vector<Eigen::Vector3d> cover_unit_;
+    std::vector<uint8_t> cover_share_;
     void pose_region_locked(uint32_t r); // with mutex_ held
+    std::vector<Eigen::Vector4d> items_; // per cover, at this pose: points and reaches past them
+    std::vector<size_t> item_start_;     // per cover: its first item (and one past the last)
+    size_t cover_items(const LazyLayout::Cover& c, size_t at); // writes c's items from `at`, returns the end
+    std::vector<Eigen::Vector3d> cover_box_; // per cover, at this pose: its items' box (least, most), the tree's frame
+    void fit_cover(size_t k);
+    void fit_tight_covers(); // the covers from the posed face normals, the nodes above from the covers
 };
 
 } // namespace spt::detail

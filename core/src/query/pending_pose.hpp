@@ -20,6 +20,10 @@ public:
         const uint32_t r = need_[node];
         if (r != kNoRegion && !posed_[r].load(std::memory_order_acquire)) pose_region(r);
     }
+    /// Whether compact node `node`'s ball is fitted from the posed vertices rather than the spheres
+    /// below (a cover or a node above the covers): looser than its children's, so a walk splits
+    /// it before a fitted node.
+    bool loose(uint32_t node) const { return loose_[node] != 0; }
     /// Poses the rest: the model becomes what a full pose makes, and is no longer pending.
     virtual void settle() = 0;
     /// Readies the exact level: the triangles' balls and tree refit around the posed corners (at
@@ -31,6 +35,7 @@ public:
 protected:
     const uint32_t* need_ = nullptr; // per compact node: the region to pose before reading below it
     std::atomic<uint8_t>* posed_ = nullptr; // per region: posed at the current pose
+    const uint8_t* loose_ = nullptr;        // per compact node: 1 for a cover or a node above them
     virtual void pose_region(uint32_t r) = 0;
     virtual void pose_triangles() = 0;
     std::atomic<uint8_t> triangles_posed_{0}; // the triangle tree refit at the current pose
