@@ -41,7 +41,7 @@ int lane_of_min(v4f v, v4i mask) {
 }
 
 constexpr uint32_t kActive = 0x80000000u; // a stack reference to an active node
-constexpr float kLooseWeight = 3; // measured: 1.5, 2 and 4 walked more node pairs on deforming_bench
+constexpr float kLooseWeight = 3; // measured: 1.5, 2 and 4 walked more node pairs (docs/deforming.md)
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 // The children of inner node i, with each inner child replaced by its own two
