@@ -7,7 +7,6 @@
 #include "spt/samples.hpp"
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace spt::detail {
 namespace {
@@ -29,10 +28,12 @@ struct IdMax {
     std::vector<float> value;
     explicit IdMax(size_t n) : set(n), value(n, 0) {}
     void clear() { set.clear(); }
-    void add(uint32_t id, float v) {
+    /// Adds id with value v; true when id is new since the last clear.
+    bool add(uint32_t id, float v) {
         const bool fresh = set.stamp[id] != set.epoch;
         set.add(id);
         value[id] = fresh ? v : std::max(value[id], v);
+        return fresh;
     }
     std::vector<float> values() const {
         std::vector<float> out;
@@ -117,9 +118,7 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
                     if (source[s] & kFaceSampleBit) {
                         for (int j = 0; j < 3; ++j) vertex_set.add(mesh.triangles[src][j]);
                         cover.spread = std::max(cover.spread, barycentric[s].cwiseAbs().sum());
-                        IdMax& set = flat ? cover_flat_faces : cover_faces;
-                        const bool fresh = set.set.stamp[src] != set.set.epoch;
-                        set.add(src, r);
+                        const bool fresh = (flat ? cover_flat_faces : cover_faces).add(src, r);
                         least_weight[src] = fresh ? barycentric[s] : least_weight[src].cwiseMin(barycentric[s]);
                     } else {
                         vertex_set.add(src);
@@ -187,14 +186,12 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
         if (kept[i] && !is_cover[i] && !nodes[i].is_active()) layout->upper.push_back(uint32_t(i));
     // Covers come in node order, and a node's subtree is a run of nodes: the covers below an upper
     // node are a run too.
-    for (uint32_t i : layout->upper) {
-        auto below = [&](uint32_t node) {
-            return uint32_t(std::lower_bound(layout->covers.begin(), layout->covers.end(), node,
-                                             [](const LazyLayout::Cover& c, uint32_t x) { return c.node < x; }) -
-                            layout->covers.begin());
-        };
-        layout->upper_covers.emplace_back(below(i), below(i + size[i]));
-    }
+    auto first_cover_from = [&](uint32_t node) {
+        return uint32_t(std::lower_bound(layout->covers.begin(), layout->covers.end(), node,
+                                         [](const LazyLayout::Cover& c, uint32_t x) { return c.node < x; }) -
+                        layout->covers.begin());
+    };
+    for (uint32_t i : layout->upper) layout->upper_covers.emplace_back(first_cover_from(i), first_cover_from(i + size[i]));
     layout->loose.assign(n, 0);
     for (const LazyLayout::Cover& c : layout->covers) layout->loose[c.node] = 1;
     for (uint32_t i : layout->upper) layout->loose[i] = 1;

@@ -21,8 +21,8 @@ public:
         if (r != kNoRegion && !posed_[r].load(std::memory_order_acquire)) pose_region(r);
     }
     /// Whether compact node `node`'s ball is fitted from the posed vertices rather than the spheres
-    /// below (a cover or a node above the covers): looser than its children's, so a walk splits
-    /// it before a fitted node.
+    /// below (a cover or a node above the covers): looser than its children's, so a walk counts
+    /// it as larger when it chooses which ball of a pair to split.
     bool loose(uint32_t node) const { return loose_[node] != 0; }
     /// Poses the rest: the model becomes what a full pose makes, and is no longer pending.
     virtual void settle() = 0;
