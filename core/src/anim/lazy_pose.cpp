@@ -134,7 +134,8 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
             cover.flat_vertices = cover_flat_vertices.set.ids, cover.flat_vertex_reach = cover_flat_vertices.values();
             // A sphere lies within twice its radius of its surface point (its centre is p - r*n).
             cover.corners = vertex_set.ids, cover.grow = 2 * reach * (1 + 1e-6) + cover.off;
-            layout->items += 3 * (cover.faces.size() + cover.flat_faces.size()) + cover.vertices.size() + cover.flat_vertices.size();
+            layout->most_items = std::max(layout->most_items, 3 * (cover.faces.size() + cover.flat_faces.size()) +
+                                                                  cover.vertices.size() + cover.flat_vertices.size());
             layout->covers.push_back(std::move(cover));
         }
         LazyLayout::Region region;
@@ -278,23 +279,14 @@ void LazyPose::fit_tight_covers() {
     const double area_eps = degenerate_twice_area(owner_->diagonal_);
     for (size_t f = 0; f < faces; ++f) {
         const Triangle& t = mesh.triangles[f];
-        const Eigen::Vector3d fn = (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]);
-        const double len = fn.norm();
-        cover_unit_[f] = len > 0 ? Eigen::Vector3d(fn / len) : Eigen::Vector3d::Zero();
-        cover_share_[f] = len > area_eps && !mesh.copies_earlier_face(f);
+        cover_share_[f] = face_unit_normal(v[t[0]], v[t[1]], v[t[2]], area_eps, cover_unit_[f]) && !mesh.copies_earlier_face(f);
     }
-    // The covers from their items, then the nodes above from the covers.
+    // Each cover from its items, made and fitted while they are in cache; then the nodes above
+    // from the covers.
     const std::vector<LazyLayout::Cover>& covers = layout_->covers;
-    items_.resize(layout_->items);
-    item_start_.resize(covers.size() + 1);
-    size_t filled = 0;
-    for (size_t k = 0; k < covers.size(); ++k) {
-        item_start_[k] = filled;
-        filled = cover_items(covers[k], filled);
-    }
-    item_start_.back() = filled;
+    items_.resize(layout_->most_items);
     cover_box_.resize(2 * covers.size());
-    for (size_t k = 0; k < covers.size(); ++k) fit_cover(k);
+    for (size_t k = 0; k < covers.size(); ++k) fit_cover(k, cover_items(covers[k]));
     // An upper node: the ball around the middle of its covers' items' boxes holding their balls
     // (fitted to the covers, not to two children's balls, whose slack grows with every level).
     const CompactNode* nodes = tree.nodes().data();
@@ -312,7 +304,7 @@ void LazyPose::fit_tight_covers() {
     }
 }
 
-size_t LazyPose::cover_items(const LazyLayout::Cover& c, size_t at) {
+size_t LazyPose::cover_items(const LazyLayout::Cover& c) {
     const TriangleMesh& mesh = owner_->mesh_->imported.mesh;
     const std::vector<Eigen::Vector3d>& v = owner_->vertices_;
     // A sphere of radius r <= R tangent at p on the inner side of unit normal n lies in the ball of
@@ -320,7 +312,7 @@ size_t LazyPose::cover_items(const LazyLayout::Cover& c, size_t at) {
     // thousandth of the unit normal. Each item is a point q and how far past it the spheres it
     // stands for reach.
     constexpr double eps = 1e-3;
-    Eigen::Vector4d* out = items_.data() + at;
+    Eigen::Vector4d* out = items_.data();
     auto item = [&](const Eigen::Vector3d& q, double add) { *out++ = Eigen::Vector4d(q.x(), q.y(), q.z(), add + c.off); };
     // A face's samples here have barycentric weights w with w_k >= a_k (the least over them) and
     // sum 1: they lie in the triangle of the three points where two of the weights are least, and
@@ -379,20 +371,35 @@ size_t LazyPose::cover_items(const LazyLayout::Cover& c, size_t at) {
     return size_t(out - items_.data());
 }
 
-void LazyPose::fit_cover(size_t k) {
+void LazyPose::fit_cover(size_t k, size_t items) {
     // The ball around the middle of the items' box reaching past every item.
-    const size_t first = item_start_[k], last = item_start_[k + 1];
     CompactTree& tree = owner_->model_.tree_;
     const Eigen::Vector3d origin = tree.origin();
-    Eigen::Vector3d lo = items_[first].head<3>() - origin, hi = lo;
-    for (size_t i = first + 1; i < last; ++i) {
+    // Four boxes, each over every fourth item, so that one min does not wait on the last
+    // (a min is exact: the same box whichever way the items are grouped).
+    Eigen::Vector3d lo[4], hi[4];
+    for (int g = 0; g < 4; ++g) lo[g] = hi[g] = items_[0].head<3>() - origin;
+    size_t i = 1;
+    for (; i + 4 <= items; i += 4)
+        for (int g = 0; g < 4; ++g) {
+            const Eigen::Vector3d q = items_[i + size_t(g)].head<3>() - origin;
+            lo[g] = lo[g].cwiseMin(q), hi[g] = hi[g].cwiseMax(q);
+        }
+    for (; i < items; ++i) {
         const Eigen::Vector3d q = items_[i].head<3>() - origin;
-        lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+        lo[0] = lo[0].cwiseMin(q), hi[0] = hi[0].cwiseMax(q);
     }
-    const Eigen::Vector3d mid = 0.5 * (lo + hi);
+    for (int g = 1; g < 4; ++g) lo[0] = lo[0].cwiseMin(lo[g]), hi[0] = hi[0].cwiseMax(hi[g]);
+    const Eigen::Vector3d mid = 0.5 * (lo[0] + hi[0]);
     double far = 0;
-    for (size_t i = first; i < last; ++i) far = std::max(far, (items_[i].head<3>() - origin - mid).norm() + items_[i][3]);
-    cover_box_[2 * k] = lo, cover_box_[2 * k + 1] = hi;
+    for (size_t i = 0; i < items; ++i) {
+        // Most items lie well inside the reach so far: told by squares, without the root (a margin
+        // far above the rounding keeps the reach the same, bit for bit).
+        const double d2 = (items_[i].head<3>() - origin - mid).squaredNorm(), room = far - items_[i][3];
+        if (room > 0 && d2 < room * room * (1 - 1e-9)) continue;
+        far = std::max(far, std::sqrt(d2) + items_[i][3]);
+    }
+    cover_box_[2 * k] = lo[0], cover_box_[2 * k + 1] = hi[0];
     // The float layout rounds within a millionth of where a centre lies.
     tree.set_ball(layout_->covers[k].node, mid, far + 1e-6 * (mid.norm() + far));
 }

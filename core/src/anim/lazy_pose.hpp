@@ -48,7 +48,7 @@ struct LazyLayout {
     std::vector<uint32_t> need; // per compact node: the region to pose before reading below it
     std::vector<Region> regions;
     std::vector<Cover> covers;
-    size_t items = 0; // the covers' items at a pose (LazyPose::cover_items)
+    size_t most_items = 0; // the most items of one cover at a pose (LazyPose::cover_items)
     std::vector<uint32_t> upper; // inner nodes above the covers, from the last back
     std::vector<std::pair<uint32_t, uint32_t>> upper_covers; // per upper node: its run of covers
     std::vector<uint8_t> loose;  // per compact node: 1 for a cover or an upper node
@@ -102,11 +102,10 @@ private:
     std::vector<Eigen::Vector3d> cover_unit_;
     std::vector<uint8_t> cover_share_;
     void pose_region_locked(uint32_t r); // with mutex_ held
-    std::vector<Eigen::Vector4d> items_; // per cover, at this pose: points and reaches past them
-    std::vector<size_t> item_start_;     // per cover: its first item (and one past the last)
-    size_t cover_items(const LazyLayout::Cover& c, size_t at); // writes c's items from `at`, returns the end
+    std::vector<Eigen::Vector4d> items_; // the cover in hand's, at this pose: points and reaches past them
+    size_t cover_items(const LazyLayout::Cover& c); // writes c's items into items_, returns how many
     std::vector<Eigen::Vector3d> cover_box_; // per cover, at this pose: its items' box (least, most), the tree's frame
-    void fit_cover(size_t k);
+    void fit_cover(size_t k, size_t items); // cover k's ball around the first `items` of items_
     void fit_tight_covers(); // the covers from the posed face normals, the nodes above from the covers
 };
 

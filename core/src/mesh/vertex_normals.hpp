@@ -12,14 +12,22 @@ namespace spt::detail {
 // (import's rule; a pose of the mesh keeps it).
 inline double degenerate_twice_area(double diagonal) { return 1e-14 * diagonal * diagonal; }
 
+// Face (p0, p1, p2)'s unit normal into `unit` (zero when its corners are in line); true when the
+// face has a share in its corners' vertex normals, its twice-area above `area_eps`.
+inline bool face_unit_normal(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                             double area_eps, Eigen::Vector3d& unit) {
+    const Eigen::Vector3d fn = (p1 - p0).cross(p2 - p0);
+    const double len = fn.norm();
+    unit = len > 0 ? Eigen::Vector3d(fn / len) : Eigen::Vector3d::Zero();
+    return len > area_eps;
+}
+
 // What face (p0, p1, p2) adds to its corners' normals: its unit normal times its angle at each
 // corner; false for a face of twice-area at most `area_eps` (no direction to contribute).
 inline bool face_corner_normals(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                                 double area_eps, Eigen::Vector3d out[3]) {
-    const Eigen::Vector3d fn = (p1 - p0).cross(p2 - p0);
-    const double len = fn.norm();
-    if (!(len > area_eps)) return false;
-    const Eigen::Vector3d unit = fn / len;
+    Eigen::Vector3d unit;
+    if (!face_unit_normal(p0, p1, p2, area_eps, unit)) return false;
     // Edge k runs from corner k to corner k + 1; corner k's other edge is edge k + 2 reversed
     // (a - b is exactly -(b - a), and so are its length and direction).
     const Eigen::Vector3d edge[3] = {(p1 - p0).normalized(), (p2 - p1).normalized(), (p0 - p2).normalized()};
