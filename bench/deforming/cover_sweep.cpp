@@ -4,7 +4,7 @@
 // with the default and the tight covers (DeformingModel::set_tight_refit), in regions of 512 and
 // of 16 samples. Prints a line a model and region size; exit 1 when a sphere escapes a ball.
 // (docs/deforming.md, "Lazy refit")
-#include "anim/lazy_pose.hpp"
+#include "query/pending_pose.hpp"
 #include "spt/animation.hpp"
 #include "spt/convert.hpp"
 #include "spt/deforming_model.hpp"
@@ -24,20 +24,16 @@ struct Tally {
     double slack = 0; // how much larger than their spheres need the balls are, summed (model units)
 };
 
-// The covers and the nodes above them for `tree` in regions of at most `region` samples.
-std::vector<uint8_t> near_root_nodes(const CompactTree& tree, const SptDocument& doc, const TriangleMesh& mesh,
-                                     uint32_t region) {
-    const auto layout = detail::make_lazy_layout(tree, mesh, std::vector<uint32_t>(doc.samples.sources),
-                                                 std::vector<Eigen::Vector3d>(doc.samples.size(), Eigen::Vector3d(1, 0, 0)),
-                                                 std::vector<double>(doc.samples.size(), 0.0), region);
-    return layout ? layout->loose : std::vector<uint8_t>(tree.nodes().size(), 0);
-}
-
-void check(const CompactTree& lazy, const CompactTree& full, const std::vector<uint8_t>& near, Tally& t) {
+// Every sphere of the full pose's tree `full` against each ball the lazy pose `lazy` fits at once
+// (its covers and the nodes above them: PendingPose::loose).
+void check(const CollisionModel& lazy, const CompactTree& full, Tally& t) {
+    const detail::PendingPose* pending = detail::pending_of(lazy);
+    if (!pending) return; // posed in full: no ball is fitted before its spheres
+    const CompactTree& tree = lazy.tree();
     std::vector<uint32_t> stack;
-    for (uint32_t a = 0; a < lazy.nodes().size(); ++a) {
-        if (!near[a]) continue;
-        const CompactNode& n = lazy.nodes()[a];
+    for (uint32_t a = 0; a < tree.nodes().size(); ++a) {
+        if (!pending->loose(a)) continue;
+        const CompactNode& n = tree.nodes()[a];
         const Eigen::Vector3f c(n.center[0], n.center[1], n.center[2]);
         float farthest = 0;
         stack.assign(1, a);
@@ -87,7 +83,6 @@ int main(int argc, char** argv) {
             if (doc.samples.size() == 0) continue;
             for (uint32_t region : {512u, 16u}) {
                 DeformingModel full(doc, mesh, "", false);
-                const std::vector<uint8_t> near = near_root_nodes(full.model().tree(), doc, mesh->imported.mesh, region);
                 Tally tally[2];
                 for (int tight = 0; tight < 2; ++tight) {
                     DeformingModel lazy(doc, mesh, "", false);
@@ -98,7 +93,7 @@ int main(int argc, char** argv) {
                             const double t = clip.duration * k / frames;
                             lazy.pose_lazily(&clip, t);
                             full.pose(&clip, t);
-                            check(lazy.model().tree(), full.model().tree(), near, tally[tight]);
+                            check(lazy.model(), full.model().tree(), tally[tight]);
                         }
                 }
                 escaped += tally[0].escaped + tally[1].escaped;

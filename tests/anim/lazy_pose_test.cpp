@@ -1,7 +1,7 @@
 // Lazy refit: a pose that fits the balls near the root and leaves each part below for the query
 // that descends into it (core/src/anim/lazy_pose.cpp).
-#include "anim/lazy_pose.hpp"
 #include "bending_bar.hpp"
+#include "query/pending_pose.hpp"
 #include "spt/deforming_model.hpp"
 #include "spt/error.hpp"
 #include "spt/query.hpp"
@@ -117,24 +117,21 @@ std::vector<Eigen::Vector3d> pose_at(const bending::Bar& m, double t) {
     return v;
 }
 
-// The balls a lazy pose fits at once (the covers and the nodes above them) for `full`'s tree in
-// regions of at most `region` samples: 1 per such node (LazyLayout::loose).
-std::vector<uint8_t> near_root_nodes(const DeformingModel& full, const SptDocument& doc, const TriangleMesh& mesh,
-                                     uint32_t region) {
-    const auto layout = detail::make_lazy_layout(full.model().tree(), mesh, std::vector<uint32_t>(doc.samples.sources),
-                                                 std::vector<Eigen::Vector3d>(doc.samples.size(), Eigen::Vector3d(1, 0, 0)),
-                                                 std::vector<double>(doc.samples.size(), 0.0), region);
-    return layout ? layout->loose : std::vector<uint8_t>(full.model().tree().nodes().size(), 0);
-}
-
-// Every sphere of the full pose's tree `f` below each near-root ball of the lazy pose's tree `l`
-// lies in that ball; the balls' slack (how much larger than their spheres need), summed, or NaN
-// after a failure.
-double slack_near_root(const CompactTree& l, const CompactTree& f, const std::vector<uint8_t>& near_root,
-                       const std::string& what) {
+// Every sphere of the full pose's tree `f` below each ball the lazy pose `lazy` fits at once (its
+// covers and the nodes above them: PendingPose::loose) lies in that ball; the balls' slack (how
+// much larger than their spheres need), summed, or NaN after a failure. `balls`: how many it checked.
+double slack_near_root(const CollisionModel& lazy, const CompactTree& f, const std::string& what, size_t& balls) {
+    const detail::PendingPose* pending = detail::pending_of(lazy);
+    if (!pending) {
+        ADD_FAILURE() << what << ": the model is not posed lazily";
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    const CompactTree& l = lazy.tree();
     double slack = 0;
+    balls = 0;
     for (uint32_t a = 0; a < l.nodes().size(); ++a) {
-        if (!near_root[a]) continue;
+        if (!pending->loose(a)) continue;
+        ++balls;
         const CompactNode& n = l.nodes()[a];
         const Eigen::Vector3f c(n.center[0], n.center[1], n.center[2]);
         float farthest = 0;
@@ -167,8 +164,6 @@ TEST(LazyPose, TheBallsNearTheRootHoldEveryPosedSphereBelowThem) {
         for (bool tight : {false, true}) { // covers from the vertices alone, or from the face normals too
             DeformingModel lazy = small_regions(true, *m), full(m->doc, m->mesh);
             lazy.set_tight_refit(tight);
-            const std::vector<uint8_t> near_root = near_root_nodes(full, m->doc, m->mesh->imported.mesh, 16);
-            ASSERT_GT(std::count(near_root.begin(), near_root.end(), 1), 8);
             QueryScratch scratch;
             QueryOptions o;
             o.solids = false;
@@ -179,8 +174,10 @@ TEST(LazyPose, TheBallsNearTheRootHoldEveryPosedSphereBelowThem) {
                     for (const Pose& p : probe_poses(queries, unsigned(t * 10 + 10))) collide_relative(lazy.model(), probe(), p, o, scratch);
                     full.pose_on(v);
                     const std::string what = "t " + std::to_string(t) + (tight ? " tight" : "");
-                    const double slack = slack_near_root(lazy.model().tree(), full.model().tree(), near_root, what);
+                    size_t balls = 0;
+                    const double slack = slack_near_root(lazy.model(), full.model().tree(), what, balls);
                     ASSERT_FALSE(std::isnan(slack));
+                    ASSERT_GT(balls, 8u);
                     // Not a loose bound that holds anything: the balls stay within the bar's thickness.
                     // Face normals make the covers tighter: the slack falls by more than a third.
                     double& loose_slack = slack_without_normals[{t, queries}];
@@ -201,8 +198,6 @@ TEST(LazyPose, ASkinnedFiguresCoversHoldEverySphereAlongItsClips) {
     const SptDocument doc = make_document(figure->imported.mesh);
     ASSERT_GE(figure->clips.size(), 2u);
     DeformingModel full(doc, figure, "", false);
-    const std::vector<uint8_t> near_root = near_root_nodes(full, doc, figure->imported.mesh, 512);
-    ASSERT_GT(std::count(near_root.begin(), near_root.end(), 1), 100);
     double slack[2] = {0, 0};
     for (bool tight : {false, true}) {
         DeformingModel lazy(doc, figure, "", false);
@@ -213,8 +208,10 @@ TEST(LazyPose, ASkinnedFiguresCoversHoldEverySphereAlongItsClips) {
                 lazy.pose_lazily(&clip, t);
                 full.pose(&clip, t);
                 const std::string what = clip.name + " at " + std::to_string(t) + (tight ? " tight" : "");
-                const double s = slack_near_root(lazy.model().tree(), full.model().tree(), near_root, what);
+                size_t balls = 0;
+                const double s = slack_near_root(lazy.model(), full.model().tree(), what, balls);
                 ASSERT_FALSE(std::isnan(s));
+                ASSERT_GT(balls, 100u);
                 slack[tight] += s;
             }
     }
