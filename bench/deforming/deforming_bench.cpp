@@ -19,6 +19,7 @@
 #include <btBulletCollisionCommon.h>
 #include <fcl/fcl.h>
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -670,14 +671,36 @@ CaseResult measure(const Case& c, int rounds, double near_band) {
 // ---------------------------------------------------------------------------------------------
 // Output
 
+/// A CSV column name for a row's name: each run of characters other than letters and digits
+/// becomes one '_' ("spt spheres, lazy refit" -> "spt_spheres_lazy_refit"), so that no name
+/// holds the separator.
+std::string column_name(const std::string& name) {
+    std::string n;
+    for (const char ch : name)
+        if (std::isalnum(static_cast<unsigned char>(ch)))
+            n += ch;
+        else if (!n.empty() && n.back() != '_')
+            n += '_';
+    while (!n.empty() && n.back() == '_') n.pop_back();
+    return n;
+}
+
+/// A CSV field as RFC 4180 writes it: quoted, its quotes doubled, when it holds a comma, a quote
+/// or a line break ("spt spheres, 2 threads" is one field).
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+    std::string q = "\"";
+    for (const char ch : text) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return q + "\"";
+}
+
 void write_frames_csv(const std::string& path, const std::vector<CaseResult>& results) {
     std::ofstream o(path);
     if (!o) throw Error(ErrorKind::CannotWrite, path + ": cannot write");
     o << "case,frame,clip_time_s,offset_over_diag,first_contact_over_diag,near,fcl_fresh";
     for (const auto& t : results.front().timings)
         if (t.in_main_table) {
-            std::string n = t.name;
-            std::replace(n.begin(), n.end(), ' ', '_');
+            const std::string n = column_name(t.name);
             o << "," << n << "," << n << "_median_us";
         }
     o << "\n";
@@ -706,7 +729,7 @@ void write_summary_csv(const std::string& path, const std::vector<CaseResult>& r
         for (size_t i = 0; i < r.timings.size(); ++i) {
             const Summary& s = r.summary[i];
             const auto pct = [](size_t a, size_t n) { return n ? fixed(100.0 * double(a) / double(n), 2) : std::string(); };
-            o << r.c->name << "," << r.timings[i].name << "," << fixed(s.update / 1e3, 3) << "," << fixed(s.query / 1e3, 3)
+            o << r.c->name << "," << csv_field(r.timings[i].name) << "," << fixed(s.update / 1e3, 3) << "," << fixed(s.query / 1e3, 3)
               << "," << fixed(s.total / 1e3, 3) << "," << fixed(s.best / 1e3, 3) << "," << pct(s.agree_all, r.truth.size())
               << "," << s.near << "," << pct(s.agree_near, s.near) << "," << s.pushed << "," << pct(s.agree_pushed, s.pushed)
               << "\n";
