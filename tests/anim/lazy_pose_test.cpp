@@ -1,5 +1,6 @@
 // Lazy refit: a pose that fits the balls near the root and leaves each part below for the query
 // that descends into it (core/src/anim/lazy_pose.cpp).
+#include "anim/lazy_pose.hpp"
 #include "bending_bar.hpp"
 #include "query/pending_pose.hpp"
 #include "spt/deforming_model.hpp"
@@ -156,6 +157,100 @@ double slack_near_root(const CollisionModel& lazy, const CompactTree& f, const s
         slack += double(n.bv_radius - farthest);
     }
     return slack;
+}
+
+// Whether weights w lie in the hull of `corners` in (w_0, w_1) (a polygon, a segment or a point),
+// within `tol`: in the corners' box, and on the inner side of every edge of their hull.
+bool in_patch(const Eigen::Vector3d& w, std::vector<Eigen::Vector3d> corners, double tol) {
+    Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+    for (const Eigen::Vector3d& c : corners) lo = lo.cwiseMin(c.head<2>()), hi = hi.cwiseMax(c.head<2>());
+    if ((w.head<2>() - lo).minCoeff() < -tol || (hi - w.head<2>()).minCoeff() < -tol) return false;
+    // The hull, counter-clockwise (Andrew's monotone chain).
+    std::sort(corners.begin(), corners.end(), [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+        return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+    });
+    auto turn = [](const Eigen::Vector3d& o, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    };
+    std::vector<Eigen::Vector3d> hull;
+    for (int pass = 0; pass < 2; ++pass) {
+        const size_t start = hull.size();
+        for (const Eigen::Vector3d& c : corners) {
+            while (hull.size() >= start + 2 && turn(hull[hull.size() - 2], hull.back(), c) <= 0) hull.pop_back();
+            hull.push_back(c);
+        }
+        hull.pop_back();
+        std::reverse(corners.begin(), corners.end());
+    }
+    for (size_t k = 0; k < hull.size(); ++k) {
+        const Eigen::Vector2d a = hull[k].head<2>(), e = hull[(k + 1) % hull.size()].head<2>() - a;
+        if (e.norm() < 1e-12) continue;
+        const Eigen::Vector2d d = w.head<2>() - a;
+        if ((e.x() * d.y() - e.y() * d.x()) / e.norm() < -tol) return false;
+    }
+    return true;
+}
+
+TEST(LazyPose, APatchsCornersHoldItsSamplesAndNoMoreThanTheirWeightsRange) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    auto inside = [&] {
+        double a = unit(rng), b = unit(rng);
+        if (a + b > 1) a = 1 - a, b = 1 - b;
+        return Eigen::Vector3d(a, b, 1 - a - b);
+    };
+    // Weights as a face's samples have them: anywhere, along an edge with one weight held at a
+    // float's rounding off 0 (the bending bar's), in a corner, one sample, and the whole face.
+    const double held[] = {0.0, -5.96046e-08, 2.98023e-08};
+    for (int trial = 0; trial < 3000; ++trial) {
+        std::vector<Eigen::Vector3d> w;
+        const int kind = trial % 5, count = 1 + int(rng() % 12);
+        for (int i = 0; i < count; ++i) {
+            Eigen::Vector3d x = inside();
+            if (kind == 1) { // along edge k: weight k held, the other two share the rest
+                const int k = trial % 3;
+                const double h = held[trial % 3], t = unit(rng) * (1 - h);
+                x[k] = h, x[(k + 1) % 3] = t, x[(k + 2) % 3] = 1 - h - t;
+            } else if (kind == 2) { // near corner 0
+                x = Eigen::Vector3d(1, 0, 0) + 0.1 * (x - Eigen::Vector3d(1, 0, 0));
+            } else if (kind == 3 && i > 0) { // one sample, many times
+                x = w[0];
+            }
+            w.push_back(x);
+        }
+        if (kind == 4) w.insert(w.end(), {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)});
+        Eigen::Vector3d least = w[0], most = w[0];
+        for (const Eigen::Vector3d& x : w) least = least.cwiseMin(x), most = most.cwiseMax(x);
+        for (const double overshoot : {0.0, 0.5}) {
+            std::vector<Eigen::Vector3d> corners{Eigen::Vector3d::Constant(7)}; // appended after what is there
+            uint8_t n = detail::patch_corners(least, most, overshoot, corners);
+            corners.erase(corners.begin());
+            ASSERT_EQ(corners.size(), size_t(n));
+            ASSERT_LE(n, 12);
+            if (n == 0) { // the triangle of the least weights
+                corners = {{1 - least[1] - least[2], least[1], least[2]},
+                           {least[0], 1 - least[0] - least[2], least[2]},
+                           {least[0], least[1], 1 - least[0] - least[1]}};
+                n = 3;
+            }
+            // No larger than the weights' range (a billionth's slack), but for the overshoot allowed.
+            const double side = 1 - least.sum(), past = overshoot * side + 3e-9;
+            for (const Eigen::Vector3d& c : corners) {
+                EXPECT_NEAR(c.sum(), 1.0, 1e-12);
+                for (int k = 0; k < 3; ++k) {
+                    EXPECT_GE(c[k], least[k] - 3e-9) << "trial " << trial;
+                    EXPECT_LE(c[k], most[k] + past) << "trial " << trial;
+                }
+            }
+            for (const Eigen::Vector3d& x : w) ASSERT_TRUE(in_patch(x, corners, 1e-13)) << "trial " << trial << " kind " << kind;
+            if (kind == 4) {
+                EXPECT_EQ(n, 3); // the whole face: its three corners
+            }
+            if (kind == 1 && least[trial % 3] == most[trial % 3]) {
+                EXPECT_LE(n, 6); // along an edge: a segment's two ends (each with its near twins)
+            }
+        }
+    }
 }
 
 TEST(LazyPose, TheBallsNearTheRootHoldEveryPosedSphereBelowThem) {

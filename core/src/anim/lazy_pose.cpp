@@ -44,6 +44,37 @@ struct IdMax {
 
 } // namespace
 
+// The corners, as barycentric weights, of the patch of a face where each weight w_k lies in
+// [least_k, most_k] (and they sum to 1). Each corner of that polygon (at most six) holds two of
+// the bounds, so each is among the twelve points that hold two bounds of two weights, taken when
+// the third weight is in its range too; a billionth of slack there keeps a corner that rounding
+// puts a hair outside (samples along an edge hold one weight at the same value: the patch is a
+// segment, and both its ends lie on the third weight's bounds). Posing is linear in the face's
+// corners, so a face's posed samples lie in the hull of its posed patch corners: a patch along an
+// edge or in a corner of a large face is much smaller than the triangle that the least weights
+// alone give. Where no corner of that triangle reaches past its weight's most by more than
+// `overshoot` times the triangle's side, nothing is appended and 0 returned: the triangle then
+// (three corners made from the least weights, fewer items and less to read a pose).
+// Else appended to `out`; returns how many (no point twice).
+uint8_t patch_corners(const Eigen::Vector3d& least, const Eigen::Vector3d& most, double overshoot,
+                      std::vector<Eigen::Vector3d>& out) {
+    const double side = 1 - least.sum();
+    if ((Eigen::Vector3d::Constant(side) + least - most).maxCoeff() <= overshoot * side) return 0;
+    constexpr double slack = 1e-9;
+    const size_t first = out.size();
+    for (int k = 0; k < 3; ++k) { // k: the weight that follows from the other two
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (const double wi : {least[i], most[i]})
+            for (const double wj : {least[j], most[j]}) {
+                Eigen::Vector3d w;
+                w[i] = wi, w[j] = wj, w[k] = 1 - wi - wj;
+                if (!(w[k] >= least[k] - slack && w[k] <= most[k] + slack)) continue;
+                if (std::find(out.begin() + std::ptrdiff_t(first), out.end(), w) == out.end()) out.push_back(w);
+            }
+    }
+    return uint8_t(out.size() - first); // 0 only for weights that do not sum to 1: the triangle then
+}
+
 std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, const TriangleMesh& mesh,
                                                    const std::vector<uint32_t>& source,
                                                    const std::vector<Eigen::Vector3d>& barycentric,
@@ -85,7 +116,8 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
     IdSet vertex_set(nv), face_set(mesh.triangles.size()), sampled_set(mesh.triangles.size());
     IdMax cover_faces(mesh.triangles.size()), cover_flat_faces(mesh.triangles.size()), cover_vertices(nv),
         cover_flat_vertices(nv);
-    std::vector<Eigen::Vector3d> least_weight(mesh.triangles.size()); // per face: each weight's least over its samples in hand
+    // Per face: each weight's least and most over its samples in hand.
+    std::vector<Eigen::Vector3d> least_weight(mesh.triangles.size()), most_weight(mesh.triangles.size());
     std::vector<uint32_t> slot_of(nv, kNoSlot), face_slot_of(mesh.triangles.size(), kNoSlot);
     for (uint32_t r = 0; r < frontier.size(); ++r) {
         const uint32_t f = frontier[r], end = f + size[f];
@@ -107,6 +139,9 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
             for (IdMax* set : {&cover_faces, &cover_vertices, &cover_flat_faces, &cover_flat_vertices}) set->clear();
             vertex_set.clear();
             double reach = 0;
+            // The box of the samples' surface points at bind: a face's triangle of least weights
+            // with a corner outside it widens the cover; one within it, hardly.
+            Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
             for (uint32_t i = c; i < c + size[c]; ++i) {
                 if (!nodes[i].is_active()) continue;
                 const float r = nodes[i].ss_radius;
@@ -120,22 +155,48 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
                         cover.spread = std::max(cover.spread, barycentric[s].cwiseAbs().sum());
                         const bool fresh = (flat ? cover_flat_faces : cover_faces).add(src, r);
                         least_weight[src] = fresh ? barycentric[s] : least_weight[src].cwiseMin(barycentric[s]);
+                        most_weight[src] = fresh ? barycentric[s] : most_weight[src].cwiseMax(barycentric[s]);
+                        const Triangle& t = mesh.triangles[src];
+                        const Eigen::Vector3d& w = barycentric[s];
+                        const Eigen::Vector3d p = w[0] * mesh.positions[t[0]] + w[1] * mesh.positions[t[1]] + w[2] * mesh.positions[t[2]];
+                        lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
                     } else {
+                        lo = lo.cwiseMin(mesh.positions[src]), hi = hi.cwiseMax(mesh.positions[src]);
                         vertex_set.add(src);
                         (flat ? cover_flat_vertices : cover_vertices).add(src, r);
                     }
                 }
             }
-            for (IdMax* set : {&cover_faces, &cover_flat_faces})
-                for (uint32_t f : set->set.ids) (set == &cover_faces ? cover.face_least : cover.flat_face_least).push_back(least_weight[f]);
+            // A face takes its patch's corners (more items a pose) only where a corner of its
+            // least weights' triangle lies outside that box by more than a millionth of the box.
+            const double margin = 1e-6 * (hi - lo).norm();
+            auto sticks_out = [&](uint32_t f) {
+                const Triangle& t = mesh.triangles[f];
+                const Eigen::Vector3d &a = least_weight[f], &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]],
+                                      &p2 = mesh.positions[t[2]];
+                for (const Eigen::Vector3d& q : {Eigen::Vector3d((1 - a[1] - a[2]) * p0 + a[1] * p1 + a[2] * p2),
+                                                 Eigen::Vector3d(a[0] * p0 + (1 - a[0] - a[2]) * p1 + a[2] * p2),
+                                                 Eigen::Vector3d(a[0] * p0 + a[1] * p1 + (1 - a[0] - a[1]) * p2)})
+                    if ((lo - q).maxCoeff() > margin || (q - hi).maxCoeff() > margin) return true;
+                return false;
+            };
+            size_t patch_items = 0;
+            for (const bool flat : {false, true})
+                for (uint32_t f : (flat ? cover_flat_faces : cover_faces).set.ids) {
+                    std::vector<Eigen::Vector3d>& out = flat ? cover.flat_face_patch : cover.face_patch;
+                    const uint8_t n = sticks_out(f) ? patch_corners(least_weight[f], most_weight[f], 0, out) : 0;
+                    (flat ? cover.flat_face_least : cover.face_least).push_back(least_weight[f]);
+                    (flat ? cover.flat_face_patch_size : cover.face_patch_size).push_back(n);
+                    patch_items += n ? n : 3;
+                }
             cover.faces = cover_faces.set.ids, cover.face_reach = cover_faces.values();
             cover.vertices = cover_vertices.set.ids, cover.vertex_reach = cover_vertices.values();
             cover.flat_faces = cover_flat_faces.set.ids, cover.flat_face_reach = cover_flat_faces.values();
             cover.flat_vertices = cover_flat_vertices.set.ids, cover.flat_vertex_reach = cover_flat_vertices.values();
             // A sphere lies within twice its radius of its surface point (its centre is p - r*n).
             cover.corners = vertex_set.ids, cover.grow = 2 * reach * (1 + 1e-6) + cover.off;
-            layout->most_items = std::max(layout->most_items, 3 * (cover.faces.size() + cover.flat_faces.size()) +
-                                                                  cover.vertices.size() + cover.flat_vertices.size());
+            layout->most_items =
+                std::max(layout->most_items, patch_items + cover.vertices.size() + cover.flat_vertices.size());
             layout->covers.push_back(std::move(cover));
         }
         LazyLayout::Region region;
@@ -315,14 +376,19 @@ size_t LazyPose::cover_items(const LazyLayout::Cover& c) {
     Eigen::Vector4d* out = items_.data();
     auto item = [&](const Eigen::Vector3d& q, double add) { *out++ = Eigen::Vector4d(q.x(), q.y(), q.z(), add + c.off); };
     // A face's samples here have barycentric weights w with w_k >= a_k (the least over them) and
-    // sum 1: they lie in the triangle of the three points where two of the weights are least, and
-    // so does each posed sample (posing is linear in the face's corners).
-    auto each_corner = [&](uint32_t f, const Eigen::Vector3d& a, auto&& to) {
+    // sum 1: they lie in the triangle of the three points where two of the weights are least, or,
+    // where that triangle would widen the cover, in the hull of their patch's corners
+    // (patch_corners); and so does each posed sample (posing is linear in the face's corners).
+    const Eigen::Vector3d* patch = c.face_patch.data();
+    auto each_corner = [&](uint32_t f, const Eigen::Vector3d& a, uint8_t corners, auto&& to) {
         const Triangle& t = mesh.triangles[f];
         const Eigen::Vector3d &p0 = v[t[0]], &p1 = v[t[1]], &p2 = v[t[2]];
-        to((1 - a[1] - a[2]) * p0 + a[1] * p1 + a[2] * p2);
-        to(a[0] * p0 + (1 - a[0] - a[2]) * p1 + a[2] * p2);
-        to(a[0] * p0 + a[1] * p1 + (1 - a[0] - a[1]) * p2);
+        if (corners == 0) {
+            to((1 - a[1] - a[2]) * p0 + a[1] * p1 + a[2] * p2);
+            to(a[0] * p0 + (1 - a[0] - a[2]) * p1 + a[2] * p2);
+            to(a[0] * p0 + a[1] * p1 + (1 - a[0] - a[1]) * p2);
+        }
+        for (uint8_t k = 0; k < corners; ++k, ++patch) to((*patch)[0] * p0 + (*patch)[1] * p1 + (*patch)[2] * p2);
     };
     for (size_t j = 0; j < c.faces.size(); ++j) {
         // Without a normal of its own (a face squeezed flat) a face's samples take one that may
@@ -331,11 +397,13 @@ size_t LazyPose::cover_items(const LazyLayout::Cover& c) {
         const double R = c.face_reach[j];
         const Eigen::Vector3d shift = R * cover_unit_[f];
         const double add = cover_unit_[f].squaredNorm() > 0 ? R * (1 + 2 * eps) : 2 * R * (1 + eps);
-        each_corner(f, c.face_least[j], [&](const Eigen::Vector3d& p) { item(p - shift, add); });
+        each_corner(f, c.face_least[j], c.face_patch_size[j], [&](const Eigen::Vector3d& p) { item(p - shift, add); });
     }
+    patch = c.flat_face_patch.data();
     for (size_t j = 0; j < c.flat_faces.size(); ++j) {
         const double add = c.flat_face_reach[j] * (1 + eps);
-        each_corner(c.flat_faces[j], c.flat_face_least[j], [&](const Eigen::Vector3d& p) { item(p, add); });
+        each_corner(c.flat_faces[j], c.flat_face_least[j], c.flat_face_patch_size[j],
+                    [&](const Eigen::Vector3d& p) { item(p, add); });
     }
     // A vertex's normal is the unit sum of its faces' normals weighted by their angles there
     // (vertex_normals.hpp). When every such face's normal lies within angle t of their mean m

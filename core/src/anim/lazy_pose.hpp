@@ -37,7 +37,11 @@ struct LazyLayout {
         // radius of those samples' spheres (model units).
         std::vector<uint32_t> faces, vertices, flat_faces, flat_vertices;
         std::vector<float> face_reach, vertex_reach, flat_face_reach, flat_vertex_reach;
-        std::vector<Eigen::Vector3d> face_least, flat_face_least; // per face: each barycentric weight's least
+        // Per face: each barycentric weight's least over its samples here, and how many corners
+        // of its patch face_patch holds for it in turn (patch_corners; 0: the least weights'
+        // triangle, which does not reach past the box of the cover's samples at bind).
+        std::vector<Eigen::Vector3d> face_least, flat_face_least, face_patch, flat_face_patch;
+        std::vector<uint8_t> face_patch_size, flat_face_patch_size;
         double off = 0;    // the most a stored point lies from its surface point, model units
         // Without normals (the lazy pose's default): every vertex a sample below hangs on, the
         // most sum |barycentric weight| of a sample below, and how far a sphere reaches past its
@@ -54,6 +58,15 @@ struct LazyLayout {
     std::vector<uint8_t> loose;  // per compact node: 1 for a cover or an upper node
     VertexFaces around;          // every face around each vertex (the covers' vertex normals)
 };
+
+/// Appends to `out` the corners (barycentric weights) of the patch of a face whose weights lie
+/// between `least` and `most` (each weight's least and most over some samples of it); returns how
+/// many (at most six, or twelve with rounding's near twins). The samples lie in the corners' hull,
+/// at any pose of the face. Appends nothing and returns 0 when no corner of the triangle of the
+/// least weights (which holds the samples too) reaches more than `overshoot` times its side past
+/// the most weights.
+uint8_t patch_corners(const Eigen::Vector3d& least, const Eigen::Vector3d& most, double overshoot,
+                      std::vector<Eigen::Vector3d>& out);
 
 /// The layout for `model`'s tree (bound to `mesh` with the per-sample `source`, `barycentric`
 /// and `offset` (the stored point's distance from its surface point at bind)), in regions of at
