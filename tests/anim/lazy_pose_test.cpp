@@ -221,9 +221,9 @@ TEST(LazyPose, APatchsCornersHoldItsSamplesAndNoMoreThanTheirWeightsRange) {
         if (kind == 4) w.insert(w.end(), {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)});
         Eigen::Vector3d least = w[0], most = w[0];
         for (const Eigen::Vector3d& x : w) least = least.cwiseMin(x), most = most.cwiseMax(x);
-        for (const double overshoot : {0.0, 0.5}) {
+        {
             std::vector<Eigen::Vector3d> corners{Eigen::Vector3d::Constant(7)}; // appended after what is there
-            uint8_t n = detail::patch_corners(least, most, overshoot, corners);
+            uint8_t n = detail::patch_corners(least, most, corners);
             corners.erase(corners.begin());
             ASSERT_EQ(corners.size(), size_t(n));
             ASSERT_LE(n, 12);
@@ -233,8 +233,8 @@ TEST(LazyPose, APatchsCornersHoldItsSamplesAndNoMoreThanTheirWeightsRange) {
                            {least[0], least[1], 1 - least[0] - least[1]}};
                 n = 3;
             }
-            // No larger than the weights' range (a billionth's slack), but for the overshoot allowed.
-            const double side = 1 - least.sum(), past = overshoot * side + 3e-9;
+            // No larger than the weights' range (a billionth's slack).
+            const double past = 3e-9;
             for (const Eigen::Vector3d& c : corners) {
                 EXPECT_NEAR(c.sum(), 1.0, 1e-12);
                 for (int k = 0; k < 3; ++k) {

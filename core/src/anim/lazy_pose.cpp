@@ -44,6 +44,16 @@ struct IdMax {
 
 } // namespace
 
+// The three corners of the triangle where two of a face's weights are at their least `a`
+// (p0, p1, p2 the face's corners), each given to `to`.
+template <class To>
+void least_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                    const Eigen::Vector3d& p2, To&& to) {
+    to((1 - a[1] - a[2]) * p0 + a[1] * p1 + a[2] * p2);
+    to(a[0] * p0 + (1 - a[0] - a[2]) * p1 + a[2] * p2);
+    to(a[0] * p0 + a[1] * p1 + (1 - a[0] - a[1]) * p2);
+}
+
 // The corners, as barycentric weights, of the patch of a face where each weight w_k lies in
 // [least_k, most_k] (and they sum to 1). Each corner of that polygon (at most six) holds two of
 // the bounds, so each is among the twelve points that hold two bounds of two weights, taken when
@@ -52,14 +62,12 @@ struct IdMax {
 // segment, and both its ends lie on the third weight's bounds). Posing is linear in the face's
 // corners, so a face's posed samples lie in the hull of its posed patch corners: a patch along an
 // edge or in a corner of a large face is much smaller than the triangle that the least weights
-// alone give. Where no corner of that triangle reaches past its weight's most by more than
-// `overshoot` times the triangle's side, nothing is appended and 0 returned: the triangle then
-// (three corners made from the least weights, fewer items and less to read a pose).
+// alone give. Where no corner of that triangle reaches past its weight's most, that triangle is
+// the patch: nothing is appended and 0 returned (three corners made from the least weights).
 // Else appended to `out`; returns how many (no point twice).
-uint8_t patch_corners(const Eigen::Vector3d& least, const Eigen::Vector3d& most, double overshoot,
-                      std::vector<Eigen::Vector3d>& out) {
+uint8_t patch_corners(const Eigen::Vector3d& least, const Eigen::Vector3d& most, std::vector<Eigen::Vector3d>& out) {
     const double side = 1 - least.sum();
-    if ((Eigen::Vector3d::Constant(side) + least - most).maxCoeff() <= overshoot * side) return 0;
+    if ((Eigen::Vector3d::Constant(side) + least - most).maxCoeff() <= 0) return 0;
     constexpr double slack = 1e-9;
     const size_t first = out.size();
     for (int k = 0; k < 3; ++k) { // k: the weight that follows from the other two
@@ -172,19 +180,18 @@ std::shared_ptr<const LazyLayout> make_lazy_layout(const CompactTree& tree, cons
             const double margin = 1e-6 * (hi - lo).norm();
             auto sticks_out = [&](uint32_t f) {
                 const Triangle& t = mesh.triangles[f];
-                const Eigen::Vector3d &a = least_weight[f], &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]],
-                                      &p2 = mesh.positions[t[2]];
-                for (const Eigen::Vector3d& q : {Eigen::Vector3d((1 - a[1] - a[2]) * p0 + a[1] * p1 + a[2] * p2),
-                                                 Eigen::Vector3d(a[0] * p0 + (1 - a[0] - a[2]) * p1 + a[2] * p2),
-                                                 Eigen::Vector3d(a[0] * p0 + a[1] * p1 + (1 - a[0] - a[1]) * p2)})
-                    if ((lo - q).maxCoeff() > margin || (q - hi).maxCoeff() > margin) return true;
-                return false;
+                bool outside = false;
+                least_triangle(least_weight[f], mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]],
+                               [&](const Eigen::Vector3d& q) {
+                                   outside |= (lo - q).maxCoeff() > margin || (q - hi).maxCoeff() > margin;
+                               });
+                return outside;
             };
             size_t patch_items = 0;
             for (const bool flat : {false, true})
                 for (uint32_t f : (flat ? cover_flat_faces : cover_faces).set.ids) {
                     std::vector<Eigen::Vector3d>& out = flat ? cover.flat_face_patch : cover.face_patch;
-                    const uint8_t n = sticks_out(f) ? patch_corners(least_weight[f], most_weight[f], 0, out) : 0;
+                    const uint8_t n = sticks_out(f) ? patch_corners(least_weight[f], most_weight[f], out) : 0;
                     (flat ? cover.flat_face_least : cover.face_least).push_back(least_weight[f]);
                     (flat ? cover.flat_face_patch_size : cover.face_patch_size).push_back(n);
                     patch_items += n ? n : 3;
@@ -383,11 +390,7 @@ size_t LazyPose::cover_items(const LazyLayout::Cover& c) {
     auto each_corner = [&](uint32_t f, const Eigen::Vector3d& a, uint8_t corners, auto&& to) {
         const Triangle& t = mesh.triangles[f];
         const Eigen::Vector3d &p0 = v[t[0]], &p1 = v[t[1]], &p2 = v[t[2]];
-        if (corners == 0) {
-            to((1 - a[1] - a[2]) * p0 + a[1] * p1 + a[2] * p2);
-            to(a[0] * p0 + (1 - a[0] - a[2]) * p1 + a[2] * p2);
-            to(a[0] * p0 + a[1] * p1 + (1 - a[0] - a[1]) * p2);
-        }
+        if (corners == 0) least_triangle(a, p0, p1, p2, to);
         for (uint8_t k = 0; k < corners; ++k, ++patch) to((*patch)[0] * p0 + (*patch)[1] * p1 + (*patch)[2] * p2);
     };
     for (size_t j = 0; j < c.faces.size(); ++j) {

@@ -62,11 +62,9 @@ struct LazyLayout {
 /// Appends to `out` the corners (barycentric weights) of the patch of a face whose weights lie
 /// between `least` and `most` (each weight's least and most over some samples of it); returns how
 /// many (at most six, or twelve with rounding's near twins). The samples lie in the corners' hull,
-/// at any pose of the face. Appends nothing and returns 0 when no corner of the triangle of the
-/// least weights (which holds the samples too) reaches more than `overshoot` times its side past
-/// the most weights.
-uint8_t patch_corners(const Eigen::Vector3d& least, const Eigen::Vector3d& most, double overshoot,
-                      std::vector<Eigen::Vector3d>& out);
+/// at any pose of the face. Appends nothing and returns 0 when that patch is the triangle of the
+/// least weights (no corner of it reaches past the most weights).
+uint8_t patch_corners(const Eigen::Vector3d& least, const Eigen::Vector3d& most, std::vector<Eigen::Vector3d>& out);
 
 /// The layout for `model`'s tree (bound to `mesh` with the per-sample `source`, `barycentric`
 /// and `offset` (the stored point's distance from its surface point at bind)), in regions of at
