@@ -208,8 +208,8 @@ TEST(LazyPose, APatchsCornersHoldItsSamplesAndNoMoreThanTheirWeightsRange) {
         for (int i = 0; i < count; ++i) {
             Eigen::Vector3d x = inside();
             if (kind == 1) { // along edge k: weight k held, the other two share the rest
-                const int k = trial % 3;
-                const double h = held[trial % 3], t = unit(rng) * (1 - h);
+                const int k = trial % 3; // every edge with every held value over 15 trials
+                const double h = held[(trial / 15) % 3], t = unit(rng) * (1 - h);
                 x[k] = h, x[(k + 1) % 3] = t, x[(k + 2) % 3] = 1 - h - t;
             } else if (kind == 2) { // near corner 0
                 x = Eigen::Vector3d(1, 0, 0) + 0.1 * (x - Eigen::Vector3d(1, 0, 0));
