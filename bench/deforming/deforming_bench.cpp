@@ -31,6 +31,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -720,6 +721,24 @@ void write_frames_csv(const std::string& path, const std::vector<CaseResult>& re
     }
 }
 
+/// Each library's work at each frame, one row a library and frame (long form: every row of the
+/// benchmark, the query-only ones too): its answer, node pairs and leaf tests (sphere and triangle
+/// tests) of the frame's query. Counts, not times: the same on any host, so two builds' walks can
+/// be compared frame by frame.
+void write_work_csv(const std::string& path, const std::vector<CaseResult>& results) {
+    std::ofstream o(path);
+    if (!o) throw Error(ErrorKind::CannotWrite, path + ": cannot write");
+    o << "case,frame,library,collide,node_pairs,leaf_tests\n";
+    for (const auto& r : results)
+        for (const auto& t : r.timings) {
+            if (t.name.rfind("spt", 0) != 0 && t.name.find("query") == std::string::npos) continue; // FCL, Bullet: no counts
+            for (size_t f = 0; f < r.c->frames; ++f)
+                o << r.c->name << "," << f << "," << csv_field(t.name) << "," << t.answer[f] << "," << uint64_t(t.node_pairs[f])
+                  << "," << uint64_t(t.leaf_tests[f]) << "\n";
+        }
+    if (!o) throw Error(ErrorKind::CannotWrite, path + ": cannot write");
+}
+
 void write_summary_csv(const std::string& path, const std::vector<CaseResult>& results) {
     std::ofstream o(path);
     if (!o) throw Error(ErrorKind::CannotWrite, path + ": cannot write");
@@ -910,12 +929,13 @@ int usage() {
     std::fprintf(stderr,
                  "usage: deforming_bench [--frames N] [--rounds R] [--figure GLTF] [--fbx FBX] [--out-dir DIR] [--stem NAME]\n"
                  "                       [--lazy-region SAMPLES] [--open MODEL] [--tolerance F] [--protrusion F]\n"
-                 "                       [--clip-poses STEP]\n"
+                 "                       [--clip-poses STEP] [--case NAME]...\n"
                  "       (--open: a case more, MODEL's first clip against a box, as the FBX model's; for an open\n"
                  "       mesh, whose spheres are two-sided, e.g. /usr/share/assimp/models/X/BCN_Epileptic.X;\n"
                  "       --tolerance, --protrusion: every model converted with that tolerance or protrusion allowance,\n"
                  "       F a fraction of its own diagonal, instead of spt convert's defaults; --clip-poses: the deforming\n"
-                 "       models' spheres limited at their clips' poses STEP seconds apart, ConvertOptions::poses)\n"
+                 "       models' spheres limited at their clips' poses STEP seconds apart, ConvertOptions::poses;\n"
+                 "       --case: only the named cases (figure-floor, fbx-box, open-box, figure-figure), once each)\n"
                  "       deforming_bench --profile-update ITERATIONS [--profile-fbx] [--profile-spheres] [--profile-tight] [--profile-lazy]\n"
                  "                       (spt's update alone, for perf; --profile-spheres: without the triangles;\n"
                  "                       --profile-tight: set_tight_refit; --profile-lazy: pose_lazily_on, the pose alone)\n");
@@ -936,6 +956,7 @@ int main(int argc, char** argv) {
     std::string fbx = "/usr/share/assimp/models/FBX/animation_with_skeleton.fbx";
     std::string open_model; // --open: a case more
     std::string out_dir, stem = "deforming-bench";
+    std::set<std::string> only_cases; // --case: empty for every case
     std::string command = argv[0];
     for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
     for (int i = 1; i < argc; ++i) {
@@ -963,6 +984,14 @@ int main(int argc, char** argv) {
         else if (a == "--profile-spheres") profile_spheres = true;
         else if (a == "--profile-tight") profile_tight = true;
         else if (a == "--profile-lazy") profile_lazy = true;
+        else if (a == "--case") {
+            const std::string name = value();
+            if (name != "figure-floor" && name != "fbx-box" && name != "open-box" && name != "figure-figure") {
+                std::fprintf(stderr, "deforming_bench: no case '%s' (figure-floor, fbx-box, open-box, figure-figure)\n", name.c_str());
+                return 1;
+            }
+            only_cases.insert(name);
+        }
         else if (a == "--lazy-region") g_lazy_region = uint32_t(number(1, 100000000));
         else if (a == "--clip-poses") {
             const std::string v = value();
@@ -978,6 +1007,10 @@ int main(int argc, char** argv) {
             (a == "--tolerance" ? g_tolerance : g_protrusion) = f;
         }
         else return usage();
+    }
+    if (only_cases.count("open-box") && open_model.empty()) {
+        std::fprintf(stderr, "deforming_bench: --case open-box needs --open MODEL\n");
+        return 1;
     }
     try {
         const std::string started = utc_now(), load0 = load_average();
@@ -1109,6 +1142,9 @@ int main(int argc, char** argv) {
 
         // Each case's offset: the median of the frames' first contacts, so that about half the
         // frames collide and the contact comes and goes along the clip.
+        if (!only_cases.empty())
+            cases.erase(std::remove_if(cases.begin(), cases.end(), [&](const Case& c) { return !only_cases.count(c.name); }),
+                        cases.end());
         for (Case& c : cases) {
             if (!c.placement.empty()) continue; // placed by hand
             std::vector<double> s;
@@ -1143,8 +1179,9 @@ int main(int argc, char** argv) {
             if (!o) throw Error(ErrorKind::CannotWrite, md + ": cannot write");
             write_frames_csv(out_dir + "/" + stem + "-frames.csv", results);
             write_summary_csv(out_dir + "/" + stem + ".csv", results);
+            write_work_csv(out_dir + "/" + stem + "-work.csv", results);
             write_svg(out_dir + "/" + stem + ".svg", results);
-            std::cerr << "wrote " << out_dir << "/" << stem << "{.md,.csv,-frames.csv,.svg}\n";
+            std::cerr << "wrote " << out_dir << "/" << stem << "{.md,.csv,-frames.csv,-work.csv,.svg}\n";
         }
         return 0;
     } catch (const Error& e) {
