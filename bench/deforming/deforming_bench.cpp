@@ -1140,11 +1140,11 @@ int main(int argc, char** argv) {
             cases.push_back(std::move(c));
         }
 
-        // Each case's offset: the median of the frames' first contacts, so that about half the
-        // frames collide and the contact comes and goes along the clip.
         if (!only_cases.empty())
             cases.erase(std::remove_if(cases.begin(), cases.end(), [&](const Case& c) { return !only_cases.count(c.name); }),
                         cases.end());
+        // Each case's offset: the median of the frames' first contacts, so that about half the
+        // frames collide and the contact comes and goes along the clip.
         for (Case& c : cases) {
             if (!c.placement.empty()) continue; // placed by hand
             std::vector<double> s;
