@@ -7,6 +7,8 @@
 #include "tree/bounds.hpp"
 #include "test_support.hpp"
 #include <gtest/gtest.h>
+#include <functional>
+#include <random>
 
 using namespace spt;
 
@@ -237,4 +239,39 @@ TEST(Split, HalvesOfARingAreBoundedNoLargerThanTheRing) {
         EXPECT_LE(t.find(half)->bv_radius, t.find(1)->bv_radius) << "node " << half;
     }
     EXPECT_EQ(t.validate(uint32_t(s.size())), "");
+}
+
+TEST(Split, EveryNodeOnADeepPathIsBoundedByItsOwnSamplesAlone) {
+    // Each split re-bounds the path from the root with one gathering of the spheres below the
+    // top, each node taking its own run of it: a run one node off would give some node another's
+    // box. The paper's bounds are the box of the samples' points, whatever their order.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1, 1);
+    SampleSet s;
+    for (uint32_t i = 0; i < 300; ++i) s.add({u(rng), u(rng), u(rng)}, {0, 0, 1}, i, 0.05f);
+    SamplingTree t("t", 300);
+    t.assign_radii(s, {});
+    t.compute_bounds(s, BoundsMethod::Paper);
+    NodeId rest = root_id();
+    for (int step = 0; step < 40; ++step) { // a chain 40 deep; every fifth left part split too
+        const TreeNode& n = *t.find(rest);
+        const std::vector<uint32_t> picked(n.samples.begin(), n.samples.begin() + 3 + step % 4);
+        ASSERT_TRUE(t.split(rest, picked, s, {}, BoundsMethod::Paper));
+        if (step % 5 == 4) {
+            ASSERT_TRUE(t.split(left_child(rest), {picked[0]}, s, {}, BoundsMethod::Paper));
+        }
+        rest = right_child(rest);
+    }
+    ASSERT_EQ(t.validate(300), "");
+    std::function<void(NodeId, Eigen::AlignedBox3f&)> box_below = [&](NodeId id, Eigen::AlignedBox3f& box) {
+        const TreeNode& n = *t.find(id);
+        for (uint32_t i : n.samples) box.extend(s.points[i]);
+        if (!n.active) box_below(left_child(id), box), box_below(right_child(id), box);
+    };
+    for (const TreeNode* n : t.nodes()) {
+        Eigen::AlignedBox3f box;
+        box_below(n->id, box);
+        EXPECT_EQ(n->center, Eigen::Vector3f((box.min() + box.max()) / 2)) << "node " << n->id;
+        EXPECT_EQ(n->bv_radius, (box.max() - box.min()).maxCoeff() / 2) << "node " << n->id;
+    }
 }

@@ -288,33 +288,53 @@ void SamplingTree::compute_bounds(const SampleSet& samples, BoundsMethod method)
 }
 
 void SamplingTree::refresh_path(NodeId from, const SampleSet& samples, BoundsMethod method) {
-    // Gather the samples below each node on the path and re-bound it.
-    for (NodeId id = from; id != 0; id = parent_of(id)) {
-        TreeNode* n = find_mutable(id);
-        if (!n) continue;
+    // The path's nodes, bottom up. Each one is re-bound from every sampling sphere below it; the
+    // spheres of a node on the path are a run of its parent's (depth first, left then right), so
+    // they are gathered once from the top, not once a node (a split deep in an authored tree
+    // would gather the whole tree at every level).
+    std::vector<TreeNode*> path;
+    for (NodeId id = from; id != 0; id = parent_of(id))
+        if (TreeNode* n = find_mutable(id)) path.push_back(n);
+    if (path.empty()) return;
+    std::vector<Eigen::Vector3f> c, p; // p only for the paper's bounds, the one method that reads it
+    std::vector<float> rad;
+    const bool points = method == BoundsMethod::Paper;
+    c.reserve(samples.size()), rad.reserve(samples.size()); // grown by doubling, a big tree's pages were most of a split
+    if (points) p.reserve(samples.size());
+    constexpr size_t kUnset = ~size_t(0);
+    std::vector<std::pair<size_t, size_t>> run(path.size(), {kUnset, kUnset});
+    const int from_depth = node_depth(from);
+    std::function<void(const TreeNode&)> gather = [&](const TreeNode& t) {
+        const size_t begin = c.size();
+        if (t.active) {
+            c.resize(begin + t.samples.size()), rad.resize(c.size());
+            if (points) p.resize(c.size());
+            put_spheres(t, samples, c.data() + begin, rad.data() + begin, points ? p.data() + begin : nullptr);
+        } else {
+            if (const TreeNode* l = find(left_child(t.id))) gather(*l);
+            if (const TreeNode* r = find(right_child(t.id))) gather(*r);
+        }
+        const int up = from_depth - node_depth(t.id);
+        if (up >= 0 && (from >> up) == t.id) // on the path: path[k] is `up` levels above `from`, less the missing
+            for (size_t k = 0; k < path.size(); ++k)
+                if (path[k] == &t) run[k] = {begin, c.size()};
+    };
+    for (size_t k = path.size(); k-- > 0;) // a missing ancestor (a broken tree) parts the path
+        if (run[k].first == kUnset) gather(*path[k]);
+    for (size_t k = 0; k < path.size(); ++k) {
+        TreeNode* n = path[k];
+        const NodeId id = n->id;
         if (!n->active) {
             const TreeNode* l = find(left_child(id));
             const TreeNode* r = find(right_child(id));
             n->ss_radius = std::max(l ? l->ss_radius : 0.0f, r ? r->ss_radius : 0.0f);
         }
-        std::vector<Eigen::Vector3f> c, p;
-        std::vector<float> rad;
-        std::function<void(const TreeNode&)> collect = [&](const TreeNode& t) {
-            if (t.active) {
-                const size_t at = c.size();
-                c.resize(at + t.samples.size()), rad.resize(c.size()), p.resize(c.size());
-                put_spheres(t, samples, c.data() + at, rad.data() + at, p.data() + at);
-                return;
-            }
-            if (const TreeNode* l = find(left_child(t.id))) collect(*l);
-            if (const TreeNode* r = find(right_child(t.id))) collect(*r);
-        };
-        collect(*n);
         detail::Ball hint;
         if (!n->active)
             for (NodeId child : {left_child(id), right_child(id)})
                 if (const TreeNode* ch = find(child)) hint = detail::merge_balls(hint, {ch->center.cast<double>(), ch->bv_radius});
-        detail::bound_run(*n, c.data(), rad.data(), p.data(), c.size(), hint, method);
+        const size_t begin = run[k].first, count = run[k].second - begin;
+        detail::bound_run(*n, c.data() + begin, rad.data() + begin, points ? p.data() + begin : nullptr, count, hint, method);
     }
 }
 
