@@ -6,22 +6,42 @@
 namespace spt::render {
 namespace {
 
-// Index of `id` in tree.nodes() order (increasing id), or -1.
-int64_t node_index(const std::vector<const TreeNode*>& nodes, NodeId id) {
-    auto it = std::lower_bound(nodes.begin(), nodes.end(), id, [](const TreeNode* n, NodeId v) { return n->id < v; });
-    return it != nodes.end() && (*it)->id == id ? int64_t(it - nodes.begin()) : -1;
+// A node of the layout found by walking the tree's ids from the root: the layout is depth-first,
+// so a node's first child comes right after it and its right child is at `first` (a
+// cost of the path, not of the tree: the editor asks this for every hidden or selected node).
+struct LayoutNode {
+    const TreeNode* node = nullptr;
+    uint32_t index = 0;
+};
+
+// The child of `at` on the left (or right) side, or none.
+LayoutNode child_of(const CompactTree& compact, const SamplingTree& tree, LayoutNode at, bool right) {
+    const TreeNode* left = tree.find(left_child(at.node->id));
+    const TreeNode* child = right ? tree.find(right_child(at.node->id)) : left;
+    if (!child) return {};
+    const uint32_t index = right && left ? compact.nodes()[at.index].first : at.index + 1;
+    if (index >= compact.nodes().size()) return {};
+    return {child, index};
 }
 
-// Sphere range of compact node i, and the index just past its subtree.
-struct SubtreeSpan {
-    uint32_t first, end_sphere;
-};
-SubtreeSpan span_of(const std::vector<CompactNode>& nodes, uint32_t i) {
-    const CompactNode& n = nodes[i];
-    if (n.is_active()) return {n.first, n.first + n.count};
-    const SubtreeSpan l = span_of(nodes, i + 1);
-    const SubtreeSpan r = span_of(nodes, n.first);
-    return {l.first, r.end_sphere};
+// Node `id` in the layout, or none.
+LayoutNode find_in_layout(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
+    LayoutNode at{tree.find(root_id()), 0};
+    if (id == 0 || !at.node || compact.nodes().empty() || !tree.find(id)) return {};
+    for (int level = node_depth(id) - 1; at.node && level >= 0; --level)
+        at = child_of(compact, tree, at, ((id >> level) & 1) != 0);
+    return at;
+}
+
+// The first (or last) active node of the subtree under `at`, in layout order.
+LayoutNode outermost_leaf(const CompactTree& compact, const SamplingTree& tree, LayoutNode at, bool last) {
+    while (at.node && !at.node->active) {
+        LayoutNode next = child_of(compact, tree, at, last);
+        if (!next.node) next = child_of(compact, tree, at, !last);
+        if (!next.node) return {};
+        at = next;
+    }
+    return at;
 }
 
 Color hsv(float h, float s, float v) {
@@ -174,25 +194,12 @@ std::vector<SphereInstance> sampling_spheres(const CompactTree& compact, const S
     return out;
 }
 
-namespace {
-
-// Index in compact.nodes() of node `id` of `tree`, or -1.
-int64_t compact_index(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
-    const int64_t index = node_index(tree.nodes(), id);
-    if (index < 0) return -1;
-    const auto& cn = compact.nodes();
-    for (uint32_t i = 0; i < cn.size(); ++i)
-        if (cn[i].tree_node == uint32_t(index)) return i;
-    return -1;
-}
-
-} // namespace
-
 SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
-    const int64_t i = compact_index(compact, tree, id);
-    if (i < 0) return {};
-    const SubtreeSpan s = span_of(compact.nodes(), uint32_t(i));
-    return {s.first, s.end_sphere - s.first};
+    const LayoutNode at = find_in_layout(compact, tree, id);
+    const LayoutNode first = outermost_leaf(compact, tree, at, false), last = outermost_leaf(compact, tree, at, true);
+    if (!first.node || !last.node) return {};
+    const CompactNode &a = compact.nodes()[first.index], &b = compact.nodes()[last.index];
+    return {a.first, b.first + b.count - a.first};
 }
 
 std::vector<SphereRange> shown_ranges(const CompactTree& compact, const SamplingTree& tree,
@@ -230,9 +237,9 @@ std::vector<SphereItem> clip_to_ranges(const std::vector<SphereItem>& items, con
 
 std::vector<WireSphere> bounding_sphere(const CompactTree& compact, const SamplingTree& tree, NodeId id,
                                         const Color& color) {
-    const int64_t i = compact_index(compact, tree, id);
-    if (i < 0) return {};
-    const CompactNode& n = compact.nodes()[size_t(i)];
+    const LayoutNode at = find_in_layout(compact, tree, id);
+    if (!at.node) return {};
+    const CompactNode& n = compact.nodes()[at.index];
     WireSphere w;
     w.sphere.center = (compact.origin() + Eigen::Vector3d(n.center[0], n.center[1], n.center[2])).cast<float>();
     w.sphere.radius = n.bv_radius;

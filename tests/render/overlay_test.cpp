@@ -107,6 +107,40 @@ TEST_F(TreeFixture, bounding_sphere_of_the_layout_is_the_trees_at_the_bind_pose_
     EXPECT_TRUE(bounding_sphere(compact, tree, NodeId(1) << 40, red).empty());
 }
 
+TEST(TreeOverlay, RangesAndBallsOfADeepOneSidedTreeAreEachNodesOwn) {
+    // Nodes are found in the layout by their path from the root (left child next, right child
+    // at `first`): a chain 30 deep, with some left parts split too, checks every turn.
+    SampleSet s;
+    for (uint32_t i = 0; i < 120; ++i) s.add({float(i % 7), float(i / 7), float(i % 3)}, {0, 0, 1}, i, 0.2f);
+    SamplingTree tree("deep", 120);
+    tree.assign_radii(s, {});
+    tree.compute_bounds(s, BoundsMethod::Tight);
+    NodeId rest = root_id();
+    for (uint32_t step = 0; step < 30; ++step) {
+        const TreeNode& n = *tree.find(rest);
+        ASSERT_TRUE(tree.split(rest, {n.samples[0], n.samples[1], n.samples[2]}, s));
+        if (step % 4 == 1) {
+            ASSERT_TRUE(tree.split(left_child(rest), {tree.find(left_child(rest))->samples[1]}, s));
+        }
+        rest = right_child(rest);
+    }
+    ASSERT_EQ(tree.validate(120), "");
+    const CompactTree compact(tree, s);
+    const Color red{1, 0, 0, 1};
+    for (const TreeNode* n : tree.nodes()) {
+        const SphereRange r = sphere_range(compact, tree, n->id);
+        std::set<uint32_t> in_range;
+        for (uint32_t k = r.first; k < r.first + r.count; ++k) in_range.insert(compact.sample_index()[k]);
+        EXPECT_EQ(in_range, samples_below(tree, n->id)) << "node " << n->id;
+        const auto ball = bounding_sphere(compact, tree, n->id, red);
+        ASSERT_EQ(ball.size(), 1u);
+        EXPECT_EQ(ball[0].sphere.radius, n->bv_radius) << "node " << n->id;
+        EXPECT_EQ(ball[0].sphere.center, n->center) << "node " << n->id;
+    }
+    EXPECT_EQ(sphere_range(compact, tree, right_child(rest)).count, 0u);
+    EXPECT_TRUE(bounding_sphere(compact, tree, left_child(rest), red).empty());
+}
+
 bool same_color(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a; }
 
 TEST_F(TreeFixture, contacts_colour_each_sphere_by_its_samples_count) {
