@@ -14,13 +14,17 @@ struct LayoutNode {
     uint32_t index = 0;
 };
 
-// The child of `at` on the left (or right) side, or none.
+// The child of `at` on the left (or right) side, or none; none too where the layout is not of
+// this tree (a node's sphere count differs), so a stale layout gives no range rather than a wrong one.
 LayoutNode child_of(const CompactTree& compact, const SamplingTree& tree, LayoutNode at, bool right) {
+    const auto& nodes = compact.nodes();
+    if (nodes[at.index].is_active()) return {};
     const TreeNode* left = tree.find(left_child(at.node->id));
     const TreeNode* child = right ? tree.find(right_child(at.node->id)) : left;
     if (!child) return {};
-    const uint32_t index = right && left ? compact.nodes()[at.index].first : at.index + 1;
-    if (index >= compact.nodes().size()) return {};
+    const uint32_t index = right && left ? nodes[at.index].first : at.index + 1;
+    if (index <= at.index || index >= nodes.size()) return {};
+    if (nodes[index].count != (child->active ? child->samples.size() : 0)) return {};
     return {child, index};
 }
 
@@ -28,6 +32,7 @@ LayoutNode child_of(const CompactTree& compact, const SamplingTree& tree, Layout
 LayoutNode find_in_layout(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
     LayoutNode at{tree.find(root_id()), 0};
     if (id == 0 || !at.node || compact.nodes().empty() || !tree.find(id)) return {};
+    if (compact.nodes()[0].count != (at.node->active ? at.node->samples.size() : 0)) return {};
     for (int level = node_depth(id) - 1; at.node && level >= 0; --level)
         at = child_of(compact, tree, at, ((id >> level) & 1) != 0);
     return at;
@@ -199,6 +204,7 @@ SphereRange sphere_range(const CompactTree& compact, const SamplingTree& tree, N
     const LayoutNode first = outermost_leaf(compact, tree, at, false), last = outermost_leaf(compact, tree, at, true);
     if (!first.node || !last.node) return {};
     const CompactNode &a = compact.nodes()[first.index], &b = compact.nodes()[last.index];
+    if (b.first + b.count < a.first) return {};
     return {a.first, b.first + b.count - a.first};
 }
 

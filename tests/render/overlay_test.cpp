@@ -139,6 +139,17 @@ TEST(TreeOverlay, RangesAndBallsOfADeepOneSidedTreeAreEachNodesOwn) {
     }
     EXPECT_EQ(sphere_range(compact, tree, right_child(rest)).count, 0u);
     EXPECT_TRUE(bounding_sphere(compact, tree, left_child(rest), red).empty());
+    // A layout of the tree as it was before another split: nothing for the nodes it lacks, and
+    // never a range past its own spheres.
+    SamplingTree edited = tree;
+    ASSERT_TRUE(edited.split(rest, {edited.find(rest)->samples[0]}, s));
+    for (const TreeNode* n : edited.nodes()) {
+        const SphereRange r = sphere_range(compact, edited, n->id);
+        EXPECT_LE(uint64_t(r.first) + r.count, compact.sphere_count()) << "node " << n->id;
+    }
+    EXPECT_EQ(sphere_range(compact, edited, left_child(rest)).count, 0u);
+    EXPECT_EQ(sphere_range(compact, edited, rest).count, 0u);
+    EXPECT_TRUE(bounding_sphere(compact, edited, right_child(rest), red).empty());
 }
 
 bool same_color(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a; }
