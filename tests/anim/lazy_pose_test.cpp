@@ -221,34 +221,32 @@ TEST(LazyPose, APatchsCornersHoldItsSamplesAndNoMoreThanTheirWeightsRange) {
         if (kind == 4) w.insert(w.end(), {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)});
         Eigen::Vector3d least = w[0], most = w[0];
         for (const Eigen::Vector3d& x : w) least = least.cwiseMin(x), most = most.cwiseMax(x);
-        {
-            std::vector<Eigen::Vector3d> corners{Eigen::Vector3d::Constant(7)}; // appended after what is there
-            uint8_t n = detail::patch_corners(least, most, corners);
-            corners.erase(corners.begin());
-            ASSERT_EQ(corners.size(), size_t(n));
-            ASSERT_LE(n, 12);
-            if (n == 0) { // the triangle of the least weights
-                corners = {{1 - least[1] - least[2], least[1], least[2]},
-                           {least[0], 1 - least[0] - least[2], least[2]},
-                           {least[0], least[1], 1 - least[0] - least[1]}};
-                n = 3;
+        std::vector<Eigen::Vector3d> corners{Eigen::Vector3d::Constant(7)}; // appended after what is there
+        uint8_t n = detail::patch_corners(least, most, corners);
+        corners.erase(corners.begin());
+        ASSERT_EQ(corners.size(), size_t(n));
+        ASSERT_LE(n, 12);
+        if (n == 0) { // the triangle of the least weights
+            corners = {{1 - least[1] - least[2], least[1], least[2]},
+                       {least[0], 1 - least[0] - least[2], least[2]},
+                       {least[0], least[1], 1 - least[0] - least[1]}};
+            n = 3;
+        }
+        // No larger than the weights' range (a billionth's slack).
+        const double slack = 3e-9;
+        for (const Eigen::Vector3d& c : corners) {
+            EXPECT_NEAR(c.sum(), 1.0, 1e-12);
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_GE(c[k], least[k] - slack) << "trial " << trial;
+                EXPECT_LE(c[k], most[k] + slack) << "trial " << trial;
             }
-            // No larger than the weights' range (a billionth's slack).
-            const double past = 3e-9;
-            for (const Eigen::Vector3d& c : corners) {
-                EXPECT_NEAR(c.sum(), 1.0, 1e-12);
-                for (int k = 0; k < 3; ++k) {
-                    EXPECT_GE(c[k], least[k] - 3e-9) << "trial " << trial;
-                    EXPECT_LE(c[k], most[k] + past) << "trial " << trial;
-                }
-            }
-            for (const Eigen::Vector3d& x : w) ASSERT_TRUE(in_patch(x, corners, 1e-13)) << "trial " << trial << " kind " << kind;
-            if (kind == 4) {
-                EXPECT_EQ(n, 3); // the whole face: its three corners
-            }
-            if (kind == 1 && least[trial % 3] == most[trial % 3]) {
-                EXPECT_LE(n, 6); // along an edge: a segment's two ends (each with its near twins)
-            }
+        }
+        for (const Eigen::Vector3d& x : w) ASSERT_TRUE(in_patch(x, corners, 1e-13)) << "trial " << trial << " kind " << kind;
+        if (kind == 4) {
+            EXPECT_EQ(n, 3); // the whole face: its three corners
+        }
+        if (kind == 1 && least[trial % 3] == most[trial % 3]) {
+            EXPECT_LE(n, 6); // along an edge: a segment's two ends (each with its near twins)
         }
     }
 }
