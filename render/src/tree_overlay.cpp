@@ -14,8 +14,11 @@ struct LayoutNode {
     uint32_t index = 0;
 };
 
-// The child of `at` on the left (or right) side, or none; none too where the layout is not of
-// this tree (a node's sphere count differs), so a stale layout gives no range rather than a wrong one.
+// True when layout node `c` can be tree node `n`: the same sphere count. A layout that is not of
+// the tree asked (stale) then gives no range rather than a wrong one.
+bool same_node(const CompactNode& c, const TreeNode& n) { return c.count == (n.active ? n.samples.size() : 0); }
+
+// The child of `at` on the left (or right) side, or none (none too where the layout disagrees).
 LayoutNode child_of(const CompactTree& compact, const SamplingTree& tree, LayoutNode at, bool right) {
     const auto& nodes = compact.nodes();
     if (nodes[at.index].is_active()) return {};
@@ -24,7 +27,7 @@ LayoutNode child_of(const CompactTree& compact, const SamplingTree& tree, Layout
     if (!child) return {};
     const uint32_t index = right && left ? nodes[at.index].first : at.index + 1;
     if (index <= at.index || index >= nodes.size()) return {};
-    if (nodes[index].count != (child->active ? child->samples.size() : 0)) return {};
+    if (!same_node(nodes[index], *child)) return {};
     return {child, index};
 }
 
@@ -32,7 +35,7 @@ LayoutNode child_of(const CompactTree& compact, const SamplingTree& tree, Layout
 LayoutNode find_in_layout(const CompactTree& compact, const SamplingTree& tree, NodeId id) {
     LayoutNode at{tree.find(root_id()), 0};
     if (id == 0 || !at.node || compact.nodes().empty() || !tree.find(id)) return {};
-    if (compact.nodes()[0].count != (at.node->active ? at.node->samples.size() : 0)) return {};
+    if (!same_node(compact.nodes()[0], *at.node)) return {};
     for (int level = node_depth(id) - 1; at.node && level >= 0; --level)
         at = child_of(compact, tree, at, ((id >> level) & 1) != 0);
     return at;
